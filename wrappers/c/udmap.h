@@ -1,0 +1,183 @@
+/*
+ * udmap: convergence-free mapping of underplatform damper-blade performance.
+ * C API over the Fortran kernel (kernel/src/api*.f90).
+ *
+ * Conventions (dftd4 style):
+ *  - opaque handles, created by udmap_new_* and released by udmap_delete_* (which accept NULL
+ *    and set the handle to NULL);
+ *  - the error handle comes first; every function returns a status (UDMAP_OK on success),
+ *    and on failure the error handle carries the status and a message naming the argument;
+ *  - arrays are passed as pointers with their length; complex numbers as (re, im) pairs;
+ *  - frequencies in Hz, everything else SI.
+ * No function keeps global state: handles are independent and may be used from several
+ * threads as long as one handle is not used by two threads at once.
+ */
+#ifndef UDMAP_H
+#define UDMAP_H
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+#define UDMAP_OK 0
+#define UDMAP_EINPUT 2   /* bad input: a parameter, file or argument is invalid */
+#define UDMAP_EPHYSICS 3 /* physics failure: jammed damper, no resonance in the band */
+#define UDMAP_ENUMERIC 4 /* numerical failure: a LAPACK/ARPACK routine failed */
+
+#define UDMAP_MAX_ROOTS 8
+
+typedef struct _udmap_error *udmap_error;
+typedef struct _udmap_blade *udmap_blade;
+typedef struct _udmap_damper *udmap_damper;
+typedef struct _udmap_model *udmap_model;
+
+/* ---------------------------------------------------------------- version, errors */
+
+/* Version as 10000 * major + 100 * minor + patch. */
+int udmap_get_version(void);
+
+udmap_error udmap_new_error(void);
+void udmap_delete_error(udmap_error *error);
+/* Status of the last failed call on this handle (UDMAP_OK if none). */
+int udmap_check_error(udmap_error error);
+/* Copies the message (NUL-terminated, truncated to buflen - 1 characters). */
+void udmap_get_error(udmap_error error, char *buffer, int buflen);
+
+/* ---------------------------------------------------------------- blade */
+
+/* Built-in beam blade (PHYSICS.md 1.1). */
+typedef struct {
+  double E, rho, zeta;
+  double neck_L, neck_h, neck_b;
+  double platform_L, platform_m, platform_J;
+  double airfoil_L, airfoil_h, airfoil_b;
+  int neck_elements, airfoil_elements;
+} udmap_beam_params;
+
+int udmap_new_blade_beam(udmap_error error, const udmap_beam_params *params, udmap_blade *blade);
+
+/* Imported blade (PHYSICS.md 1.2) from Matrix Market files; C_path, sK_path, sM_path may be
+ * NULL. gamma_dof and exc_dof are 1-based. Without C, damping is beta K from zeta. */
+int udmap_new_blade_matrices(udmap_error error, const char *M_path, const char *K_path,
+                             const char *C_path, int gamma_dof, int exc_dof,
+                             const char *sK_path, const char *sM_path, double zeta,
+                             udmap_blade *blade);
+
+void udmap_delete_blade(udmap_blade *blade);
+
+/* Number of DOFs and whether stress rows are present (1) or not (0). */
+int udmap_blade_get_size(udmap_error error, udmap_blade blade, int *ndof, int *has_stress);
+
+/* The first nmodes bare natural frequencies [Hz], ascending. */
+int udmap_blade_natural_frequencies(udmap_error error, udmap_blade blade, int nmodes,
+                                    double *f_hz);
+
+/* Bare receptances at n frequencies: out has 10*n doubles, per frequency the (re, im) pairs
+ * of H_gE, H_gg, H_EE, H_sE, H_sg (stress ones 0 without stress rows). */
+int udmap_blade_receptances(udmap_error error, udmap_blade blade, int n, const double *f_hz,
+                            double *out);
+
+/* Sherman-Morrison layer response to a unit force at E with damper stiffness k on gamma:
+ * out has 6*n doubles, per frequency the (re, im) pairs of g~ (rotation), s~ (stress), u~_E. */
+int udmap_blade_layer_response(udmap_error error, udmap_blade blade, int n, const double *f_hz,
+                               double k_re, double k_im, double *out);
+
+/* Writes M.mtx, K.mtx (and stress_K.mtx, stress_M.mtx with stress rows, C.mtx with explicit
+ * damping) into the existing directory dir (Matrix Market, full precision). */
+int udmap_blade_export(udmap_error error, udmap_blade blade, const char *dir);
+
+/* ---------------------------------------------------------------- damper */
+
+/* Asymmetric flat/curved rigid damper (PHYSICS.md 2.1). */
+typedef struct {
+  double CF, mu, pitch, y_P, beta_L_deg, beta_R_deg;
+  double flat1_x, flat1_y, flat2_x, flat2_y, curved_x, curved_y;
+  double kn_flat, kt_flat, kn_curved, kt_curved;
+} udmap_asymmetric_params;
+
+int udmap_new_damper_asymmetric(udmap_error error, const udmap_asymmetric_params *params,
+                                udmap_damper *damper);
+/* Rotational Jenkins element (PHYSICS.md 2.4): kt [N m/rad], M_slip [N m]. */
+int udmap_new_damper_jenkins(udmap_error error, double kt, double M_slip, udmap_damper *damper);
+/* Measured table (PHYSICS.md 2.4): n rows of gamma (ascending, > 0), k_re, k_im;
+ * has_delta_M = 1 enables extrapolation beyond the last row with delta_M. */
+int udmap_new_damper_table(udmap_error error, int n, const double *gamma, const double *k_re,
+                           const double *k_im, int has_delta_M, double delta_M,
+                           udmap_damper *damper);
+void udmap_delete_damper(udmap_damper *damper);
+
+typedef struct {
+  double gamma_b;  /* base-cycle amplitude [rad] */
+  double gamma_s;  /* largest amplitude without slip [rad] */
+  double M_max;    /* upward plateau moment [N m] */
+  double M_min;    /* downward plateau moment [N m] */
+  double k_stuck;  /* stuck stiffness k_Re at small amplitude [N m/rad] */
+  int lift_off;    /* 1 if a contact opens during the cycle */
+} udmap_damper_info;
+
+int udmap_damper_get_info(udmap_error error, udmap_damper damper, udmap_damper_info *info);
+
+/* k(gamma) = k_re + i k_im for n amplitudes [rad]. */
+int udmap_damper_stiffness(udmap_error error, udmap_damper damper, int n, const double *gamma,
+                           double *k_re, double *k_im);
+
+/* The steady loop M_r(tau) at amplitude gamma_a, gamma = gamma_a cos(tau), at n equally spaced
+ * tau in [0, 2 pi) (asymmetric and jenkins kinds). */
+int udmap_damper_loop(udmap_error error, udmap_damper damper, double gamma_a, int n,
+                      double *tau, double *M_r);
+
+/* New centrifugal load: rescales the table (PHYSICS.md 2.3) without tracing again. */
+int udmap_damper_set_CF(udmap_error error, udmap_damper damper, double CF);
+
+/* ---------------------------------------------------------------- mapping, backbone */
+
+/* Analysis settings; fill with udmap_analysis_defaults, then change what is needed. */
+typedef struct {
+  double f_min, f_max;  /* band [Hz] */
+  double sigma_all;     /* allowable alternating stress [Pa], default 80e6 */
+  double rtol;          /* relative tolerance of peak and root refinement, default 1e-12 */
+  int grid_per_decade;  /* backbone amplitude grid density for root bracketing, default 24 */
+} udmap_analysis;
+
+void udmap_analysis_defaults(udmap_analysis *analysis);
+
+/* A model couples a blade and a damper over a band. It borrows both handles (they must outlive
+ * it) and caches what it derived from them; changes of the damper (udmap_damper_set_CF) are
+ * noticed and only the affected caches are rebuilt. */
+int udmap_new_model(udmap_error error, udmap_blade blade, udmap_damper damper,
+                    const udmap_analysis *analysis, udmap_model *model);
+void udmap_delete_model(udmap_model *model);
+
+/* One point of the non-linear response (at resonance or at a given frequency). */
+typedef struct {
+  double F_E;      /* excitation force amplitude [N] */
+  double gamma_P;  /* platform rotation amplitude [rad] */
+  double f_res;    /* frequency of the peak (or the given frequency) [Hz] */
+  double sigma_a;  /* alternating stress amplitude [Pa] (0 without stress rows) */
+  double u_E;      /* displacement amplitude at E [m] */
+  double k_re, k_im; /* damper stiffness at gamma_P [N m/rad] */
+  int regime;      /* 0 stuck, 1 partial slip, 2 full slip, 3 at or above F_lim */
+  int hcf_ok;      /* F_E <= 0.5 F_lim and sigma_a <= sigma_all */
+  int unbounded;   /* zeta = 0 and F_E >= F_lim: no finite response; numbers are 0 */
+  int nroots;      /* number of gamma_P roots (all in roots[], ascending) */
+  double roots[UDMAP_MAX_ROOTS];
+} udmap_point;
+
+int udmap_model_limit_force(udmap_error error, udmap_model model, double *F_lim);
+
+/* Backbone F_bb(gamma) and the peak frequency for n amplitudes. */
+int udmap_model_backbone_curve(udmap_error error, udmap_model model, int n, const double *gamma,
+                               double *F_bb, double *f_res);
+
+/* Peaks of the non-linear response for n forces (PHYSICS.md 4). */
+int udmap_model_backbone(udmap_error error, udmap_model model, int n, const double *F_E,
+                         udmap_point *points);
+
+/* Response at the excitation frequency f_exc [Hz] for n forces (PHYSICS.md 4, last paragraph). */
+int udmap_model_response(udmap_error error, udmap_model model, double f_exc, int n,
+                         const double *F_E, udmap_point *points);
+
+#ifdef __cplusplus
+}
+#endif
+#endif /* UDMAP_H */
