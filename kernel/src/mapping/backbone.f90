@@ -1,0 +1,451 @@
+!> The backbone of the non-linear response curves (PHYSICS.md 4, paper section 4.2): the peak
+!> of the response to F_E lies where the layer's linear response peaks, so
+!>   F_bb(gamma) = gamma / max_omega |g~(omega; gamma)|
+!> at the frequency of that maximum, and the peaks for F_E are the roots of F_bb(gamma) = F_E.
+!>
+!> F_bb is tabulated per damper revision on the grid gamma_j = gamma_b 10^(j/grid_per_decade)
+!> from the last node at or below gamma_s (below it the damper is stuck, k is constant and F_bb
+!> is exactly linear) up to wherever the requested forces need it. Each node is one layer peak
+!> search started from the eigenvalue, which is tracked from node to node with the secular
+!> equation (udmap_eigen_start). The nodes only bracket roots and start searches, so their
+!> peaks are located to table_rtol; every result is refined to rtol.
+!>
+!> Roots of F_bb = F_E are bracketed on the grid, all of them, and refined by safeguarded
+!> Newton iterations on v(u) = ln F_bb(e^u) - ln F_E, u = ln gamma, started by inverse cubic
+!> Hermite interpolation between the nodes. The slope comes from the envelope theorem: at the
+!> peak d|g~|/d omega = 0, so only k moves it,
+!>   dv/du = 1 + Re( H_gg/(1 + k H_gg) dk/du ),
+!> with dk/du by a central difference of the damper's stiffness (no receptance evaluation).
+!> Two Newton steps usually reach rtol = 1e-12.
+module udmap_backbone
+  use udmap_kinds, only: wp, pi
+  use udmap_error, only: error_type, fatal_error, UDMAP_EINPUT, UDMAP_EPHYSICS, UDMAP_ENUMERIC
+  use udmap_layer, only: layer_peak_type, layer_peak, PEAK_OK, PEAK_BELOW_BAND
+  use udmap_eigen_start, only: secular_root, direct_eigen_start
+  use udmap_model_data, only: model_type, point_type, backbone_eval_type, limit_force, &
+    & fill_point, check_forces, EIGEN_AUTO, EIGEN_DIRECT, REGIME_LIMIT
+  implicit none
+  private
+  public :: backbone_curve, backbone, ensure_table, cover_table, eval_backbone, backbone_roots
+  public :: grid_gamma, max_decades
+
+  !> How far above gamma_b the grid may grow (decades) before a root is declared out of reach.
+  integer, parameter :: max_decades = 12
+  !> Peak tolerance of the grid nodes (which only bracket roots and start searches).
+  real(wp), parameter :: table_rtol = 1.0e-8_wp
+  !> Step in ln(gamma) of the central difference of the damper stiffness.
+  real(wp), parameter :: du_fd = 1.0e-6_wp
+
+contains
+
+  !> Grid amplitude of node j [rad].
+  pure real(wp) function grid_gamma(model, j) result(gamma)
+    type(model_type), intent(in) :: model
+    integer, intent(in) :: j
+    gamma = model%table%gamma_ref*10.0_wp**(real(j, wp)/model%analysis%grid_per_decade)
+  end function grid_gamma
+
+  !> The backbone point of the layer gamma: the stiffness, the eigenvalue (tracked from
+  !> start%lambda when a start is given) and the peak of |g~| to rtol, started at
+  !> start%peak%omega + (Re sqrt(lambda) - Re sqrt(start%lambda)), else at Re sqrt(lambda).
+  subroutine layer_backbone(model, gamma, rtol, e, error, start, lambda_start)
+    type(model_type), intent(inout) :: model
+    real(wp), intent(in) :: gamma, rtol
+    type(backbone_eval_type), intent(out) :: e
+    type(error_type), allocatable, intent(out) :: error
+    type(backbone_eval_type), intent(in), optional :: start
+    complex(wp), intent(in), optional :: lambda_start
+    real(wp) :: omega0, width
+    logical :: ok
+    e%gamma = gamma
+    e%k = model%damper%stiffness(gamma)
+    if (model%analysis%eigen_method == EIGEN_DIRECT) then
+      call direct_eigen_start(model%blade, e%k, model%analysis%dense_max, e%lambda, error)
+      if (allocated(error)) return
+    else
+      if (present(start)) then
+        call secular_root(model%secular, e%k, e%lambda, ok, start%lambda)
+      else if (present(lambda_start)) then
+        call secular_root(model%secular, e%k, e%lambda, ok, lambda_start)
+      else
+        call secular_root(model%secular, e%k, e%lambda, ok)
+      end if
+      if (.not.ok) then
+        call fatal_error(error, "backbone: the eigenvalue start (secular equation) did not "// &
+          & "converge", UDMAP_ENUMERIC)
+        return
+      end if
+    end if
+    if (present(start)) then
+      omega0 = start%peak%omega + real(sqrt(e%lambda), wp) - real(sqrt(start%lambda), wp)
+    else
+      omega0 = real(sqrt(e%lambda), wp)
+    end if
+    width = abs(aimag(e%lambda)) + model%c1*omega0
+    call layer_peak(model%bare, e%k, omega0, width, model%omega_lo, model%omega_hi, rtol, &
+      & e%peak, error)
+    if (allocated(error)) return
+    if (e%peak%status /= PEAK_OK) then
+      call band_error(model, gamma, e%peak, error)
+      return
+    end if
+    e%F_bb = gamma/e%peak%amplitude
+    e%slope = backbone_slope(model, e)
+  end subroutine layer_backbone
+
+  !> d ln F_bb / d ln gamma at a layer peak (envelope theorem, see the module doc).
+  real(wp) function backbone_slope(model, e) result(slope)
+    type(model_type), intent(in) :: model
+    type(backbone_eval_type), intent(in) :: e
+    complex(wp) :: dk
+    dk = (model%damper%stiffness(e%gamma*exp(du_fd)) - &
+      & model%damper%stiffness(e%gamma*exp(-du_fd)))/(2*du_fd)
+    slope = 1 + real(e%peak%r%gg*dk/(1 + e%k*e%peak%r%gg), wp)
+  end function backbone_slope
+
+  !> Error for a layer whose peak is not inside the band.
+  subroutine band_error(model, gamma, peak, error)
+    type(model_type), intent(in) :: model
+    real(wp), intent(in) :: gamma
+    type(layer_peak_type), intent(in) :: peak
+    type(error_type), allocatable, intent(out) :: error
+    character(len=32) :: bg, bl, bh
+    character(len=:), allocatable :: where
+    write(bg, '(es11.4)') gamma
+    write(bl, '(g0.6)') model%analysis%f_min
+    write(bh, '(g0.6)') model%analysis%f_max
+    if (peak%status == PEAK_BELOW_BAND) then
+      where = "f_min; the resonance lies below the band"
+    else
+      where = "f_max; the resonance lies above the band"
+    end if
+    call fatal_error(error, "no resonance in the band ["//trim(bl)//", "//trim(bh)// &
+      & "] Hz: at gamma_P = "//trim(adjustl(bg))//" rad the layer response still grows at "// &
+      & where, UDMAP_EPHYSICS)
+  end subroutine band_error
+
+  !> Builds the backbone table for the damper's current revision (nodes from the stuck
+  !> range up to 10 gamma_b), unless it is up to date.
+  subroutine ensure_table(model, error)
+    type(model_type), intent(inout) :: model
+    type(error_type), allocatable, intent(out) :: error
+    real(wp) :: gamma_lin
+    integer :: gpd, j_lo
+    if (model%table%revision == model%damper%revision .and. model%table%j_hi >= model%table%j_lo) &
+      & return
+    gpd = model%analysis%grid_per_decade
+    model%table%gamma_ref = model%damper%gamma_b
+    if (model%damper%gamma_s > 0 .and. model%damper%gamma_s <= model%damper%gamma_b) then
+      gamma_lin = model%damper%gamma_s
+    else
+      ! no stuck amplitude given: assume k constant six decades below gamma_b
+      gamma_lin = 1.0e-6_wp*model%damper%gamma_b
+    end if
+    j_lo = floor(gpd*log10(gamma_lin/model%table%gamma_ref))
+    if (grid_gamma(model, j_lo) > gamma_lin) j_lo = j_lo - 1
+    if (grid_gamma(model, j_lo + 1) <= gamma_lin) j_lo = j_lo + 1
+    model%table%j_lo = j_lo
+    model%table%j_hi = j_lo - 1
+    model%table%revision = model%damper%revision
+    call grow_table(model, gpd, error)
+    if (allocated(error)) model%table%revision = -huge(1)
+  end subroutine ensure_table
+
+  !> Computes the table nodes j_hi+1 .. j_new.
+  subroutine grow_table(model, j_new, error)
+    type(model_type), intent(inout) :: model
+    integer, intent(in) :: j_new
+    type(error_type), allocatable, intent(out) :: error
+    type(error_type), allocatable :: direct_error
+    type(backbone_eval_type), allocatable :: grown(:)
+    complex(wp) :: lambda_direct
+    integer :: j, j_old, lo
+    lo = model%table%j_lo
+    j_old = model%table%j_hi
+    if (j_new <= j_old) return
+    allocate(grown(lo:j_new))
+    if (j_old >= lo) grown(lo:j_old) = model%table%node(lo:j_old)
+    call move_alloc(grown, model%table%node)
+    associate(node => model%table%node)
+      do j = j_old + 1, j_new
+        if (j == lo) then
+          ! the first node is where stuck roots are read off: full tolerance
+          if (model%analysis%eigen_method == EIGEN_AUTO .and. .not.model%have_direct) then
+            ! once per model: the direct eigen-solve, the secular equation continues from it
+            model%have_direct = .true.
+            call direct_eigen_start(model%blade, model%damper%stiffness(grid_gamma(model, j)), &
+              & model%analysis%dense_max, lambda_direct, direct_error)
+            if (.not.allocated(direct_error)) then
+              model%lambda_direct = lambda_direct
+              call layer_backbone(model, grid_gamma(model, j), model%analysis%rtol, node(j), &
+                & error, lambda_start=lambda_direct)
+            else
+              call layer_backbone(model, grid_gamma(model, j), model%analysis%rtol, node(j), error)
+            end if
+          else
+            call layer_backbone(model, grid_gamma(model, j), model%analysis%rtol, node(j), error)
+          end if
+        else
+          call layer_backbone(model, grid_gamma(model, j), max(table_rtol, model%analysis%rtol), &
+            & node(j), error, start=node(j - 1))
+        end if
+        if (allocated(error)) return
+        model%table%j_hi = j
+      end do
+    end associate
+  end subroutine grow_table
+
+  !> Grows the table until it reaches gamma_top and, if F_max > 0, until F_bb exceeds F_max
+  !> on a rising stretch at least a decade above gamma_b (beyond which F_bb rises
+  !> monotonically: friction saturates and the response tends to the bare blade's).
+  subroutine cover_table(model, F_max, gamma_top, error)
+    type(model_type), intent(inout) :: model
+    real(wp), intent(in) :: F_max, gamma_top
+    type(error_type), allocatable, intent(out) :: error
+    integer :: gpd, j_cap, j_need
+    character(len=32) :: buf
+    gpd = model%analysis%grid_per_decade
+    j_cap = max_decades*gpd
+    if (gamma_top > 0) then
+      j_need = ceiling(gpd*log10(gamma_top/model%table%gamma_ref)) + 1
+      if (j_need > j_cap) then
+        write(buf, '(es11.4)') gamma_top
+        call fatal_error(error, "backbone: gamma = "//trim(adjustl(buf))//" rad is more than "// &
+          & "1e12 gamma_b, out of the model's reach", UDMAP_EINPUT)
+        return
+      end if
+      call grow_table(model, j_need, error)
+      if (allocated(error)) return
+    end if
+    if (F_max <= 0) return
+    associate(t => model%table)
+      do while (.not.(t%node(t%j_hi)%F_bb > F_max .and. t%j_hi >= gpd .and. &
+          & t%node(t%j_hi)%F_bb >= t%node(t%j_hi - 1)%F_bb))
+        if (t%j_hi >= j_cap) then
+          write(buf, '(es11.4)') F_max
+          call fatal_error(error, "backbone: F_E = "//trim(adjustl(buf))//" N is not reached "// &
+            & "below 1e12 gamma_b (F_E is too close to F_lim without structural damping)", &
+            & UDMAP_EPHYSICS)
+          return
+        end if
+        call grow_table(model, min(t%j_hi + gpd, j_cap), error)
+        if (allocated(error)) return
+      end do
+    end associate
+  end subroutine cover_table
+
+  !> F_bb at gamma [rad] with its layer peak to rtol: linear below the grid, else a peak
+  !> search warm-started from `start` or the nearest node (the table must cover gamma).
+  subroutine eval_backbone(model, gamma, e, error, start)
+    type(model_type), intent(inout) :: model
+    real(wp), intent(in) :: gamma
+    type(backbone_eval_type), intent(out) :: e
+    type(error_type), allocatable, intent(out) :: error
+    type(backbone_eval_type), intent(in), optional :: start
+    integer :: j
+    associate(t => model%table)
+      if (gamma <= t%node(t%j_lo)%gamma) then
+        e = t%node(t%j_lo)
+        e%gamma = gamma
+        e%F_bb = gamma*t%node(t%j_lo)%F_bb/t%node(t%j_lo)%gamma
+        e%slope = 1
+        return
+      end if
+      if (present(start)) then
+        call layer_backbone(model, gamma, model%analysis%rtol, e, error, start=start)
+      else
+        j = nint(model%analysis%grid_per_decade*log10(gamma/t%gamma_ref))
+        j = min(max(j, t%j_lo), t%j_hi)
+        call layer_backbone(model, gamma, model%analysis%rtol, e, error, start=t%node(j))
+      end if
+    end associate
+  end subroutine eval_backbone
+
+  !> The root of F_bb = F_E between nodes j and j+1 (which bracket it) to rtol in gamma,
+  !> with the layer peak there.
+  subroutine refine_root(model, F_E, j, e, error)
+    type(model_type), intent(inout) :: model
+    real(wp), intent(in) :: F_E
+    integer, intent(in) :: j
+    type(backbone_eval_type), intent(out) :: e
+    type(error_type), allocatable, intent(out) :: error
+    type(backbone_eval_type) :: prev
+    real(wp) :: ua, ub, fa, fb, sa, sb, du, t, p, dp, lo, hi, x, f, dx, tol
+    integer :: it
+    logical :: have_prev, rising
+    associate(na => model%table%node(j), nb => model%table%node(j + 1))
+      ua = log(na%gamma)
+      ub = log(nb%gamma)
+      fa = log(na%F_bb/F_E)
+      fb = log(nb%F_bb/F_E)
+      sa = na%slope
+      sb = nb%slope
+    end associate
+    if (fb == 0) then
+      call eval_backbone(model, model%table%node(j + 1)%gamma, e, error, &
+        & start=model%table%node(j + 1))
+      return
+    end if
+    du = ub - ua
+    rising = fb > fa
+    tol = model%analysis%rtol
+    ! start: root of the cubic Hermite interpolant of v on [ua, ub] (linear if that fails)
+    t = fa/(fa - fb)
+    do it = 1, 20
+      p = (2*t**3 - 3*t**2 + 1)*fa + (t**3 - 2*t**2 + t)*du*sa + (-2*t**3 + 3*t**2)*fb + &
+        & (t**3 - t**2)*du*sb
+      dp = (6*t**2 - 6*t)*fa + (3*t**2 - 4*t + 1)*du*sa + (-6*t**2 + 6*t)*fb + (3*t**2 - 2*t)*du*sb
+      if (dp == 0) exit
+      t = t - p/dp
+      if (.not.(t > 0 .and. t < 1)) exit
+      if (abs(p/dp) < 1e-14_wp) exit
+    end do
+    if (.not.(t > 0 .and. t < 1)) t = fa/(fa - fb)
+    lo = ua
+    hi = ub
+    x = ua + t*du
+    have_prev = .false.
+    do it = 1, 100
+      if (have_prev) then
+        call eval_backbone(model, exp(x), e, error, start=prev)
+      else if (t < 0.5_wp) then
+        call eval_backbone(model, exp(x), e, error, start=model%table%node(j))
+      else
+        call eval_backbone(model, exp(x), e, error, start=model%table%node(j + 1))
+      end if
+      if (allocated(error)) return
+      f = log(e%F_bb/F_E)
+      if (f == 0) return
+      if ((f > 0) .eqv. rising) then
+        hi = x
+      else
+        lo = x
+      end if
+      dx = -f/e%slope
+      if (abs(dx) <= tol .or. hi - lo <= tol) return
+      prev = e
+      have_prev = .true.
+      if (.not.(x + dx > lo .and. x + dx < hi)) then
+        x = 0.5_wp*(lo + hi)
+      else
+        x = x + dx
+      end if
+    end do
+    call fatal_error(error, "backbone: the root refinement did not converge", UDMAP_ENUMERIC)
+  end subroutine refine_root
+
+  !> Every root of F_bb(gamma) = F_E (ascending) and, at the largest, the backbone point.
+  !> The table must already cover F_E (cover_table).
+  subroutine backbone_roots(model, F_E, roots, e, error)
+    type(model_type), intent(inout) :: model
+    real(wp), intent(in) :: F_E
+    real(wp), allocatable, intent(out) :: roots(:)
+    type(backbone_eval_type), intent(out) :: e
+    type(error_type), allocatable, intent(out) :: error
+    real(wp) :: found(256)
+    integer :: j, n
+    n = 0
+    associate(t => model%table)
+      if (F_E <= t%node(t%j_lo)%F_bb) then
+        ! stuck: F_bb is linear through the origin below the first node
+        n = 1
+        found(1) = F_E*t%node(t%j_lo)%gamma/t%node(t%j_lo)%F_bb
+        call eval_backbone(model, found(1), e, error)
+        if (allocated(error)) return
+      end if
+      do j = t%j_lo, t%j_hi - 1
+        ! a root in (gamma_j, gamma_j+1]: a sign change, or a zero at gamma_j+1
+        if (.not.((t%node(j)%F_bb < F_E .and. t%node(j + 1)%F_bb >= F_E) .or. &
+            & (t%node(j)%F_bb > F_E .and. t%node(j + 1)%F_bb <= F_E))) cycle
+        if (n >= size(found)) exit
+        call refine_root(model, F_E, j, e, error)
+        if (allocated(error)) return
+        n = n + 1
+        found(n) = e%gamma
+      end do
+    end associate
+    if (n == 0) then
+      call fatal_error(error, "backbone: no amplitude found for the force (internal: the "// &
+        & "table does not cover it)", UDMAP_ENUMERIC)
+      return
+    end if
+    roots = found(1:n)
+  end subroutine backbone_roots
+
+  !> F_bb(gamma) [N] and the peak frequency f_res [Hz] for amplitudes gamma [rad].
+  subroutine backbone_curve(model, gamma, F_bb, f_res, error)
+    type(model_type), intent(inout) :: model
+    real(wp), intent(in) :: gamma(:)
+    real(wp), intent(out) :: F_bb(:), f_res(:)
+    type(error_type), allocatable, intent(out) :: error
+    type(backbone_eval_type) :: e
+    integer :: i
+    character(len=12) :: buf
+    F_bb = 0
+    f_res = 0
+    if (size(F_bb) < size(gamma) .or. size(f_res) < size(gamma)) then
+      call fatal_error(error, "backbone_curve: F_bb and f_res must be as long as gamma", UDMAP_EINPUT)
+      return
+    end if
+    do i = 1, size(gamma)
+      if (.not.(gamma(i) > 0 .and. gamma(i) < huge(1.0_wp))) then
+        write(buf, '(i0)') i
+        call fatal_error(error, "backbone_curve: gamma("//trim(buf)//") must be a positive "// &
+          & "number [rad]", UDMAP_EINPUT)
+        return
+      end if
+    end do
+    if (size(gamma) == 0) return
+    call ensure_table(model, error)
+    if (allocated(error)) return
+    call cover_table(model, 0.0_wp, maxval(gamma), error)
+    if (allocated(error)) return
+    do i = 1, size(gamma)
+      call eval_backbone(model, gamma(i), e, error)
+      if (allocated(error)) return
+      F_bb(i) = e%F_bb
+      f_res(i) = e%peak%omega/(2*pi)
+    end do
+  end subroutine backbone_curve
+
+  !> The peaks of the non-linear response for the forces F_E [N] (PHYSICS.md 4): every root
+  !> of F_bb(gamma) = F_E, the largest giving gamma_P and the outputs at its frequency. Without
+  !> structural damping a force at or above F_lim gives an unbounded point.
+  subroutine backbone(model, F_E, points, error)
+    type(model_type), intent(inout) :: model
+    real(wp), intent(in) :: F_E(:)
+    type(point_type), allocatable, intent(out) :: points(:)
+    type(error_type), allocatable, intent(out) :: error
+    type(backbone_eval_type) :: e
+    real(wp), allocatable :: roots(:)
+    real(wp) :: F_lim, F_max
+    integer :: i
+    allocate(points(size(F_E)))
+    call check_forces(F_E, "backbone", error)
+    if (allocated(error)) return
+    if (size(F_E) == 0) return
+    call ensure_table(model, error)
+    if (allocated(error)) return
+    call limit_force(model, F_lim, error)
+    if (allocated(error)) return
+    F_max = 0
+    do i = 1, size(F_E)
+      if (.not.(model%undamped .and. F_E(i) >= F_lim)) F_max = max(F_max, F_E(i))
+    end do
+    call cover_table(model, F_max, 0.0_wp, error)
+    if (allocated(error)) return
+    do i = 1, size(F_E)
+      if (model%undamped .and. F_E(i) >= F_lim) then
+        points(i)%F_E = F_E(i)
+        points(i)%regime = REGIME_LIMIT
+        points(i)%unbounded = .true.
+        points(i)%hcf_ok = .false.
+        allocate(points(i)%roots(0))
+        cycle
+      end if
+      call backbone_roots(model, F_E(i), roots, e, error)
+      if (allocated(error)) return
+      call fill_point(model, points(i), F_E(i), F_lim, e%peak%omega, e%peak%r, e%k, roots)
+    end do
+  end subroutine backbone
+end module udmap_backbone

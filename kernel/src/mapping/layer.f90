@@ -1,0 +1,244 @@
+!> One amplitude layer of the force mapping (PHYSICS.md 3): with the damper a complex spring k
+!> on the gamma DOF, the blade's response to a unit force at E is, by Sherman-Morrison,
+!> g~(omega) = H_gE/(1 + k H_gg); the force that puts the blade on layer gamma* at omega is
+!> F(omega) = gamma*/|g~(omega)|.
+!>
+!> This module holds what is done on one layer: the peak of |g~| over the band (the backbone
+!> point of the layer, PHYSICS.md 4) and the frequencies where |g~| equals a level (the
+!> crossings of a response curve with the layer).
+!>
+!> Peak search. |g~| is maximal where P = 1/|g~|^2 is minimal. For one mode with hysteretic
+!> or viscous damping P is a quadratic polynomial in s = omega^2, so psi = dP/ds is linear in
+!> s; with several modes it is nearly so. The peak is therefore found as the root of psi(s),
+!> psi = -(d ln|g~|/d omega)/(omega |g~|^2), by secant steps from the start until a sign change
+!> brackets it and Brent's method after that: from an eigenvalue start this takes 3 to 5
+!> receptance evaluations to rtol = 1e-12.
+module udmap_layer
+  use udmap_kinds, only: wp
+  use udmap_error, only: error_type, fatal_error, UDMAP_ENUMERIC
+  use udmap_blade, only: blade_type, receptances_type
+  use udmap_root_finding, only: brent_type, brent_start, brent_next, brent_update
+  implicit none
+  private
+  public :: bare_type, layer_peak_type, bare_receptances, log_slope, layer_peak, &
+    & layer_crossing, layer_amplitude, abs2
+  public :: PEAK_OK, PEAK_BELOW_BAND, PEAK_ABOVE_BAND
+
+  !> Peak found inside the band.
+  integer, parameter :: PEAK_OK = 0
+  !> |g~| still grows at the lower band edge: the resonance lies below the band.
+  integer, parameter :: PEAK_BELOW_BAND = 1
+  !> |g~| still grows at the upper band edge: the resonance lies above the band.
+  integer, parameter :: PEAK_ABOVE_BAND = 2
+
+  !> The bare blade as seen by the mapping: the blade it borrows and a count of receptance
+  !> evaluations (the unit of cost of everything here).
+  type :: bare_type
+    type(blade_type), pointer :: blade => null()
+    integer :: evaluations = 0
+  end type bare_type
+
+  !> The peak of one layer's unit-force response |g~(omega)|.
+  type :: layer_peak_type
+    !> Circular frequency of the peak [rad/s] and |g~| there [rad/N].
+    real(wp) :: omega = 0, amplitude = 0
+    !> Bare receptances at the peak.
+    type(receptances_type) :: r
+    !> PEAK_OK, or PEAK_BELOW_BAND / PEAK_ABOVE_BAND when the maximum is at a band edge.
+    integer :: status = PEAK_OK
+  end type layer_peak_type
+
+contains
+
+  !> Bare receptances at omega [rad/s] (with d/d omega when derivatives), counted.
+  subroutine bare_receptances(bare, omega, r, error, derivatives)
+    type(bare_type), intent(inout) :: bare
+    real(wp), intent(in) :: omega
+    type(receptances_type), intent(out) :: r
+    type(error_type), allocatable, intent(out) :: error
+    logical, intent(in) :: derivatives
+    bare%evaluations = bare%evaluations + 1
+    call bare%blade%receptances(omega, r, error, derivatives=derivatives)
+  end subroutine bare_receptances
+
+  !> |z|^2 without the overflow guard of abs (hypot): the values here are far from overflow.
+  elemental real(wp) function abs2(z)
+    complex(wp), intent(in) :: z
+    abs2 = real(z, wp)**2 + aimag(z)**2
+  end function abs2
+
+  !> |g~| of the layer with stiffness k, from the bare receptances.
+  pure real(wp) function layer_amplitude(r, k) result(amp)
+    type(receptances_type), intent(in) :: r
+    complex(wp), intent(in) :: k
+    amp = sqrt(abs2(r%gE)/abs2(1 + k*r%gg))
+  end function layer_amplitude
+
+  !> d ln|g~| / d omega of the layer with stiffness k (needs the receptance derivatives).
+  pure real(wp) function log_slope(r, k) result(slope)
+    type(receptances_type), intent(in) :: r
+    complex(wp), intent(in) :: k
+    complex(wp) :: den
+    den = 1 + k*r%gg
+    slope = real(r%dgE*conjg(r%gE), wp)/abs2(r%gE) - real(k*r%dgg*conjg(den), wp)/abs2(den)
+  end function log_slope
+
+  !> psi = dP/ds with P = 1/|g~|^2 and s = omega^2: the function whose root is the peak.
+  pure real(wp) function peak_function(r, k, omega) result(psi)
+    type(receptances_type), intent(in) :: r
+    complex(wp), intent(in) :: k
+    real(wp), intent(in) :: omega
+    psi = -log_slope(r, k)/(omega*layer_amplitude(r, k)**2)
+  end function peak_function
+
+  !> Maximum of |g~(omega)| for the layer stiffness k over [omega_lo, omega_hi] [rad/s],
+  !> started at omega0; width estimates the half-power half-width of the peak in s = omega^2
+  !> (e.g. |Im lambda| of the eigenvalue start; any positive value works, a good one saves
+  !> evaluations). The peak is located to rtol in omega. A maximum at a band edge is
+  !> reported in peak%status, not as an error.
+  subroutine layer_peak(bare, k, omega0, width, omega_lo, omega_hi, rtol, peak, error)
+    type(bare_type), intent(inout) :: bare
+    complex(wp), intent(in) :: k
+    real(wp), intent(in) :: omega0, width, omega_lo, omega_hi, rtol
+    type(layer_peak_type), intent(out) :: peak
+    type(error_type), allocatable, intent(out) :: error
+    integer, parameter :: max_secant = 40, ncache = 4
+    type(receptances_type) :: r, rc(ncache)
+    real(wp) :: xc(ncache), s_lo, s_hi, s0, s1, p0, p1, step, d, q, amp, tol, x, w
+    type(brent_type) :: brent
+    logical :: more
+    integer :: it, nc, i
+
+    s_lo = omega_lo**2
+    s_hi = omega_hi**2
+    s0 = min(max(omega0, omega_lo), omega_hi)**2
+    tol = 2*rtol*s0
+    nc = 0
+    call evaluate(s0, p0, r)
+    if (allocated(error)) return
+    if (p0 == 0) then
+      call finish(s0, r)
+      return
+    end if
+    ! First step from the single-mode model P = ((s - s*)^2 + W^2)/A^2: with |g~| and psi at s0
+    ! and W = width, s0 - s* solves q d^2 - 2 d + q W^2 = 0 with q = psi |g~|^2.
+    amp = layer_amplitude(r, k)
+    w = max(width, 1.0e-9_wp*s0)
+    q = p0*amp**2
+    if (abs(q*w) < 1) then
+      d = (1 - sqrt(1 - (q*w)**2))/q
+    else
+      d = sign(w, q)
+    end if
+    step = -d
+    if (abs(step) < tol) step = sign(tol, step)
+    do it = 1, max_secant
+      s1 = min(max(s0 + step, s_lo), s_hi)
+      if (s1 == s0) then
+        ! pushed against the band edge with P still decreasing outwards
+        call finish(s0, r)
+        if (s0 <= s_lo) peak%status = PEAK_BELOW_BAND
+        if (s0 >= s_hi) peak%status = PEAK_ABOVE_BAND
+        return
+      end if
+      call evaluate(s1, p1, r)
+      if (allocated(error)) return
+      if (p1 == 0 .or. abs(s1 - s0) <= tol) then
+        call finish(s1, r)
+        return
+      end if
+      if ((p0 > 0) .neqv. (p1 > 0)) exit
+      ! same side: secant step (backwards too, if |psi| grew), at most four times the last
+      if (p1 /= p0) then
+        step = -p1*(s1 - s0)/(p1 - p0)
+      else
+        step = 4*(s1 - s0)
+      end if
+      if (abs(step) <= tol) then
+        call finish(s1, r)
+        return
+      end if
+      if (abs(step) > 4*abs(s1 - s0)) step = sign(4*abs(s1 - s0), step)
+      s0 = s1
+      p0 = p1
+    end do
+    if (it > max_secant) then
+      call fatal_error(error, "layer_peak: no peak of the layer response found from the "// &
+        & "start frequency (secant steps exhausted)", UDMAP_ENUMERIC)
+      return
+    end if
+    call brent_start(brent, s0, p0, s1, p1, tol)
+    do
+      call brent_next(brent, x, more)
+      if (.not.more) exit
+      call evaluate(x, p1, r)
+      if (allocated(error)) return
+      call brent_update(brent, p1)
+    end do
+    ! the best estimate is one of the recently evaluated abscissae
+    do i = 1, min(nc, ncache)
+      if (xc(i) == brent%b) then
+        call finish(brent%b, rc(i))
+        return
+      end if
+    end do
+    call evaluate(brent%b, p1, r)
+    if (allocated(error)) return
+    call finish(brent%b, r)
+
+  contains
+
+    subroutine evaluate(s, psi, rs)
+      real(wp), intent(in) :: s
+      real(wp), intent(out) :: psi
+      type(receptances_type), intent(out) :: rs
+      call bare_receptances(bare, sqrt(s), rs, error, .true.)
+      if (allocated(error)) return
+      psi = peak_function(rs, k, sqrt(s))
+      nc = nc + 1
+      xc(mod(nc - 1, ncache) + 1) = s
+      rc(mod(nc - 1, ncache) + 1) = rs
+    end subroutine evaluate
+
+    subroutine finish(s, rs)
+      real(wp), intent(in) :: s
+      type(receptances_type), intent(in) :: rs
+      peak%omega = sqrt(s)
+      peak%r = rs
+      peak%amplitude = layer_amplitude(rs, k)
+      peak%status = PEAK_OK
+    end subroutine finish
+  end subroutine layer_peak
+
+  !> The frequency omega in the bracket [omega_a, omega_b] where |g~(omega)| = level, given
+  !> that (|g~| - level) changes sign over the bracket; located to rtol in omega. Returns
+  !> the receptances there.
+  subroutine layer_crossing(bare, k, level, omega_a, omega_b, rtol, omega, r, error)
+    type(bare_type), intent(inout) :: bare
+    complex(wp), intent(in) :: k
+    real(wp), intent(in) :: level, omega_a, omega_b, rtol
+    real(wp), intent(out) :: omega
+    type(receptances_type), intent(out) :: r
+    type(error_type), allocatable, intent(out) :: error
+    type(brent_type) :: brent
+    real(wp) :: fa, fb, x, fx
+    logical :: more
+    call bare_receptances(bare, omega_a, r, error, .false.)
+    if (allocated(error)) return
+    fa = (level/layer_amplitude(r, k))**2 - 1
+    call bare_receptances(bare, omega_b, r, error, .false.)
+    if (allocated(error)) return
+    fb = (level/layer_amplitude(r, k))**2 - 1
+    call brent_start(brent, omega_a, fa, omega_b, fb, rtol*max(abs(omega_a), abs(omega_b)))
+    do
+      call brent_next(brent, x, more)
+      if (.not.more) exit
+      call bare_receptances(bare, x, r, error, .false.)
+      if (allocated(error)) return
+      fx = (level/layer_amplitude(r, k))**2 - 1
+      call brent_update(brent, fx)
+    end do
+    omega = brent%b
+    call bare_receptances(bare, omega, r, error, .false.)
+  end subroutine layer_crossing
+end module udmap_layer
