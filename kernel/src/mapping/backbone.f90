@@ -17,13 +17,17 @@
 !>   dv/du = 1 + Re( H_gg/(1 + k H_gg) dk/du ),
 !> with dk/du by a central difference of the damper's stiffness (no receptance evaluation).
 !> Two Newton steps usually reach rtol = 1e-12.
+!>
+!> The peak frequency matters beyond rtol: the response curve is tangent to F_E there, and a
+!> frequency error delta tilts it by delta/zeta^2 in d ln F/d ln omega. The layer peak search
+!> returns its last (superlinear) secant estimate, which is good to far better than rtol.
 module udmap_backbone
   use udmap_kinds, only: wp, pi
   use udmap_error, only: error_type, fatal_error, UDMAP_EINPUT, UDMAP_EPHYSICS, UDMAP_ENUMERIC
   use udmap_layer, only: layer_peak_type, layer_peak, PEAK_OK, PEAK_BELOW_BAND
   use udmap_eigen_start, only: secular_root, direct_eigen_start
   use udmap_model_data, only: model_type, point_type, backbone_eval_type, limit_force, &
-    & fill_point, check_forces, EIGEN_AUTO, EIGEN_DIRECT, REGIME_LIMIT
+    & fill_point, check_forces, damper_fingerprint, EIGEN_AUTO, EIGEN_DIRECT, REGIME_LIMIT
   implicit none
   private
   public :: backbone_curve, backbone, ensure_table, cover_table, eval_backbone, backbone_roots
@@ -38,6 +42,12 @@ module udmap_backbone
 
 contains
 
+  !> Tolerance to which the peak frequency of a result is located.
+  pure real(wp) function peak_rtol(model)
+    type(model_type), intent(in) :: model
+    peak_rtol = max(model%analysis%rtol, 4*epsilon(1.0_wp))
+  end function peak_rtol
+
   !> Grid amplitude of node j [rad].
   pure real(wp) function grid_gamma(model, j) result(gamma)
     type(model_type), intent(in) :: model
@@ -48,14 +58,17 @@ contains
   !> The backbone point of the layer gamma: the stiffness, the eigenvalue (tracked from
   !> start%lambda when a start is given) and the peak of |g~| to rtol, started at
   !> start%peak%omega + (Re sqrt(lambda) - Re sqrt(start%lambda)), else at Re sqrt(lambda).
-  subroutine layer_backbone(model, gamma, rtol, e, error, start, lambda_start)
+  subroutine layer_backbone(model, gamma, rtol, e, error, start, lambda_start, loose)
     type(model_type), intent(inout) :: model
     real(wp), intent(in) :: gamma, rtol
     type(backbone_eval_type), intent(out) :: e
     type(error_type), allocatable, intent(out) :: error
     type(backbone_eval_type), intent(in), optional :: start
     complex(wp), intent(in), optional :: lambda_start
-    real(wp) :: omega0, width
+    !> Only F_bb is needed (to rtol): the peak may be located to sqrt(rtol) of its
+    !> relative width, since |g~| is stationary there.
+    logical, intent(in), optional :: loose
+    real(wp) :: omega0, width, tol
     logical :: ok
     e%gamma = gamma
     e%k = model%damper%stiffness(gamma)
@@ -82,7 +95,11 @@ contains
       omega0 = real(sqrt(e%lambda), wp)
     end if
     width = abs(aimag(e%lambda)) + model%c1*omega0
-    call layer_peak(model%bare, e%k, omega0, width, model%omega_lo, model%omega_hi, rtol, &
+    tol = rtol
+    if (present(loose)) then
+      if (loose) tol = max(rtol, 0.1_wp*sqrt(model%analysis%rtol)*width/omega0**2)
+    end if
+    call layer_peak(model%bare, e%k, omega0, width, model%omega_lo, model%omega_hi, tol, &
       & e%peak, error)
     if (allocated(error)) return
     if (e%peak%status /= PEAK_OK) then
@@ -131,8 +148,8 @@ contains
     type(error_type), allocatable, intent(out) :: error
     real(wp) :: gamma_lin
     integer :: gpd, j_lo
-    if (model%table%revision == model%damper%revision .and. model%table%j_hi >= model%table%j_lo) &
-      & return
+    if (model%table%revision == model%damper%revision .and. model%table%j_hi >= model%table%j_lo &
+      & .and. all(model%table%fingerprint == damper_fingerprint(model%damper))) return
     gpd = model%analysis%grid_per_decade
     model%table%gamma_ref = model%damper%gamma_b
     if (model%damper%gamma_s > 0 .and. model%damper%gamma_s <= model%damper%gamma_b) then
@@ -147,6 +164,7 @@ contains
     model%table%j_lo = j_lo
     model%table%j_hi = j_lo - 1
     model%table%revision = model%damper%revision
+    model%table%fingerprint = damper_fingerprint(model%damper)
     call grow_table(model, gpd, error)
     if (allocated(error)) model%table%revision = -huge(1)
   end subroutine ensure_table
@@ -177,13 +195,13 @@ contains
               & model%analysis%dense_max, lambda_direct, direct_error)
             if (.not.allocated(direct_error)) then
               model%lambda_direct = lambda_direct
-              call layer_backbone(model, grid_gamma(model, j), model%analysis%rtol, node(j), &
+              call layer_backbone(model, grid_gamma(model, j), peak_rtol(model), node(j), &
                 & error, lambda_start=lambda_direct)
             else
-              call layer_backbone(model, grid_gamma(model, j), model%analysis%rtol, node(j), error)
+              call layer_backbone(model, grid_gamma(model, j), peak_rtol(model), node(j), error)
             end if
           else
-            call layer_backbone(model, grid_gamma(model, j), model%analysis%rtol, node(j), error)
+            call layer_backbone(model, grid_gamma(model, j), peak_rtol(model), node(j), error)
           end if
         else
           call layer_backbone(model, grid_gamma(model, j), max(table_rtol, model%analysis%rtol), &
@@ -234,14 +252,16 @@ contains
     end associate
   end subroutine cover_table
 
-  !> F_bb at gamma [rad] with its layer peak to rtol: linear below the grid, else a peak
+  !> F_bb at gamma [rad] with its layer peak to peak_rtol: linear below the grid, else a peak
   !> search warm-started from `start` or the nearest node (the table must cover gamma).
-  subroutine eval_backbone(model, gamma, e, error, start)
+  subroutine eval_backbone(model, gamma, e, error, start, loose)
     type(model_type), intent(inout) :: model
     real(wp), intent(in) :: gamma
     type(backbone_eval_type), intent(out) :: e
     type(error_type), allocatable, intent(out) :: error
     type(backbone_eval_type), intent(in), optional :: start
+    !> Only F_bb is needed (see layer_backbone).
+    logical, intent(in), optional :: loose
     integer :: j
     associate(t => model%table)
       if (gamma <= t%node(t%j_lo)%gamma) then
@@ -252,11 +272,12 @@ contains
         return
       end if
       if (present(start)) then
-        call layer_backbone(model, gamma, model%analysis%rtol, e, error, start=start)
+        call layer_backbone(model, gamma, peak_rtol(model), e, error, start=start, loose=loose)
       else
         j = nint(model%analysis%grid_per_decade*log10(gamma/t%gamma_ref))
         j = min(max(j, t%j_lo), t%j_hi)
-        call layer_backbone(model, gamma, model%analysis%rtol, e, error, start=t%node(j))
+        call layer_backbone(model, gamma, peak_rtol(model), e, error, start=t%node(j), &
+          & loose=loose)
       end if
     end associate
   end subroutine eval_backbone
@@ -272,7 +293,7 @@ contains
     type(backbone_eval_type) :: prev
     real(wp) :: ua, ub, fa, fb, sa, sb, du, t, p, dp, lo, hi, x, f, dx, tol
     integer :: it
-    logical :: have_prev, rising
+    logical :: have_prev, rising, full
     associate(na => model%table%node(j), nb => model%table%node(j + 1))
       ua = log(na%gamma)
       ub = log(nb%gamma)
@@ -305,30 +326,41 @@ contains
     hi = ub
     x = ua + t*du
     have_prev = .false.
+    ! Newton with F_bb from loosely located peaks; once the step is small the next iterate is
+    ! the answer to rtol (quadratic convergence) and gets the fully located peak
+    full = .false.
     do it = 1, 100
       if (have_prev) then
-        call eval_backbone(model, exp(x), e, error, start=prev)
+        call eval_backbone(model, exp(x), e, error, start=prev, loose=.not.full)
       else if (t < 0.5_wp) then
-        call eval_backbone(model, exp(x), e, error, start=model%table%node(j))
+        call eval_backbone(model, exp(x), e, error, start=model%table%node(j), loose=.not.full)
       else
-        call eval_backbone(model, exp(x), e, error, start=model%table%node(j + 1))
+        call eval_backbone(model, exp(x), e, error, start=model%table%node(j + 1), &
+          & loose=.not.full)
       end if
       if (allocated(error)) return
       f = log(e%F_bb/F_E)
-      if (f == 0) return
       if ((f > 0) .eqv. rising) then
         hi = x
       else
         lo = x
       end if
       dx = -f/e%slope
-      if (abs(dx) <= tol .or. hi - lo <= tol) return
+      if (f == 0 .or. abs(dx) <= tol .or. hi - lo <= tol) then
+        if (full) return
+        ! the root is x: locate its peak fully
+        full = .true.
+        prev = e
+        have_prev = .true.
+        cycle
+      end if
       prev = e
       have_prev = .true.
       if (.not.(x + dx > lo .and. x + dx < hi)) then
         x = 0.5_wp*(lo + hi)
       else
         x = x + dx
+        full = abs(dx) <= 1e-4_wp
       end if
     end do
     call fatal_error(error, "backbone: the root refinement did not converge", UDMAP_ENUMERIC)

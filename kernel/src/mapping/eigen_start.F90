@@ -12,12 +12,13 @@
 !>   in two threads at once; the FMU is built without it;
 !> - modal (secular equation): since the damper is a rank-one change, lambda solves
 !>   1/k + h(lambda) = 0 with h(lambda) = e_g^T (K - lambda M)^-1 e_g
-!>              = sum_r phi_g,r^2/(omega_r^2 - lambda) + R0 + lambda R1 + O(lambda^2)
-!>   summed over the lowest secular_modes bare modes, R0 and R1 standing for the modes above:
+!>              = sum_r phi_g,r^2/(omega_r^2 - lambda) + R0 + lambda R1 + lambda^2 R2 + ...
+!>   summed over the lowest secular_modes bare modes, R0..R2 standing for the modes above:
 !>   R0 = (K^-1)_gg - sum_kept phi_g,r^2/omega_r^2 (all modes, from the static receptance),
-!>   R1 = sum phi_g,r^2/omega_r^4 over the computed modes above the kept ones. The error is
-!>   O((omega/omega_(secular_modes+1))^4) of the dropped modes' share, far below what a start
-!>   needs. It costs some 50 flops per Newton step, so the backbone tracks the eigenvalue
+!>   R1, R2 = sums of phi_g,r^2/omega_r^4, ^6 over the computed modes above the kept ones
+!>   (exact for models whose modes are all computed). The error is then
+!>   O((omega/omega_(secular_modes+1))^6) of the dropped modes' share (1e-11 for blade A),
+!>   far below what a start needs. It costs some 50 flops per Newton step, so the backbone tracks the eigenvalue
 !>   with it from layer to layer.
 module udmap_eigen_start
   use udmap_kinds, only: wp
@@ -37,8 +38,9 @@ module udmap_eigen_start
     real(wp), allocatable :: s(:), w(:)
     !> Static residual of the modes left out: (K^-1)_gg - sum_r phi_g,r^2/omega_r^2.
     real(wp) :: R0 = 0
-    !> First-order residual: sum of phi_g,r^2/omega_r^4 over the computed modes left out.
-    real(wp) :: R1 = 0
+    !> Higher residuals: sums of phi_g,r^2/omega_r^4 and phi_g,r^2/omega_r^6 over the
+    !> computed modes left out.
+    real(wp) :: R1 = 0, R2 = 0
   end type secular_type
 
   interface
@@ -78,7 +80,8 @@ module udmap_eigen_start
       character(len=1), intent(in) :: bmat
       character(len=2), intent(in) :: which
       integer, intent(in) :: n, nev, ncv, ldv, lworkl
-      real(wp), intent(in) :: tol
+      ! ARPACK replaces tol <= 0 by the machine precision
+      real(wp), intent(inout) :: tol
       complex(wp), intent(inout) :: resid(*), v(ldv, *), workd(*), workl(*)
       integer, intent(inout) :: iparam(11), ipntr(14)
       real(wp), intent(inout) :: rwork(*)
@@ -93,7 +96,7 @@ module udmap_eigen_start
       integer, intent(in) :: ldz, n, nev, ncv, ldv, lworkl
       complex(wp), intent(out) :: d(*), z(ldz, *), workev(*)
       complex(wp), intent(in) :: sigma
-      real(wp), intent(in) :: tol
+      real(wp), intent(inout) :: tol
       complex(wp), intent(inout) :: resid(*), v(ldv, *), workd(*), workl(*)
       integer, intent(inout) :: iparam(11), ipntr(14), info
       real(wp), intent(inout) :: rwork(*)
@@ -122,7 +125,10 @@ contains
     nk = min(nm, secular_modes)
     sec%s = blade%omega(1:nk)**2
     sec%w = blade%phi(blade%gamma_dof, 1:nk)**2
-    if (nm > nk) sec%R1 = sum(blade%phi(blade%gamma_dof, nk+1:nm)**2/blade%omega(nk+1:nm)**4)
+    if (nm > nk) then
+      sec%R1 = sum(blade%phi(blade%gamma_dof, nk+1:nm)**2/blade%omega(nk+1:nm)**4)
+      sec%R2 = sum(blade%phi(blade%gamma_dof, nk+1:nm)**2/blade%omega(nk+1:nm)**6)
+    end if
     ! (K^-1)_gg from the receptance at a frequency far below the first mode (the real part
     ! is even in omega, so the error is O((omega/omega_1)^2) = 1e-12)
     call blade%receptances(1.0e-6_wp*blade%omega(1), r, error, derivatives=.false.)
@@ -141,10 +147,11 @@ contains
     integer :: r
     a = real(lambda, wp)
     b = aimag(lambda)
-    hr = sec%R0 + a*sec%R1
-    hi = b*sec%R1
-    dr = sec%R1
-    di = 0
+    ! R0 + lambda R1 + lambda^2 R2
+    hr = sec%R0 + a*sec%R1 + (a*a - b*b)*sec%R2
+    hi = b*sec%R1 + 2*a*b*sec%R2
+    dr = sec%R1 + 2*a*sec%R2
+    di = 2*b*sec%R2
     do r = 1, size(sec%s)
       ! 1/(s - lambda) = (s - a + i b)/((s - a)^2 + b^2)
       t = 1/((sec%s(r) - a)**2 + b*b)
@@ -352,7 +359,7 @@ contains
     integer, allocatable :: ipiv(:)
     integer :: n, kd, ldab, ncv, lworkl, ido, info, iparam(11), ipntr(14), i, j, g, nconv, it
     complex(wp) :: sigma
-    real(wp) :: best
+    real(wp) :: best, tol
     character(len=12) :: buf
     n = blade%ndof
     kd = blade%kd
@@ -386,8 +393,9 @@ contains
     iparam(7) = 3
     ido = 0
     info = 0
+    tol = 0
     do it = 1, 100000
-      call znaupd(ido, 'G', n, 'LM', nev, 0.0_wp, resid, ncv, v, n, iparam, ipntr, workd, &
+      call znaupd(ido, 'G', n, 'LM', nev, tol, resid, ncv, v, n, iparam, ipntr, workd, &
         & workl, lworkl, rwork, info)
       select case (ido)
       case (-1)
@@ -411,7 +419,7 @@ contains
         & UDMAP_ENUMERIC)
       return
     end if
-    call zneupd(.false., 'A', select, d, z, n, sigma, workev, 'G', n, 'LM', nev, 0.0_wp, &
+    call zneupd(.false., 'A', select, d, z, n, sigma, workev, 'G', n, 'LM', nev, tol, &
       & resid, ncv, v, n, iparam, ipntr, workd, workl, lworkl, rwork, info)
     if (info /= 0) then
       write(buf, '(i0)') info

@@ -94,8 +94,11 @@ contains
   !> Maximum of |g~(omega)| for the layer stiffness k over [omega_lo, omega_hi] [rad/s],
   !> started at omega0; width estimates the half-power half-width of the peak in s = omega^2
   !> (e.g. |Im lambda| of the eigenvalue start; any positive value works, a good one saves
-  !> evaluations). The peak is located to rtol in omega. A maximum at a band edge is
-  !> reported in peak%status, not as an error.
+  !> evaluations). The peak is located to rtol in omega and then moved by the last secant
+  !> step, which is not evaluated: the receptances are carried over it to first order with
+  !> their derivatives, so the returned frequency is accurate well beyond rtol (the secant
+  !> converges superlinearly) at no extra cost. A maximum at a band edge is reported in
+  !> peak%status, not as an error.
   subroutine layer_peak(bare, k, omega0, width, omega_lo, omega_hi, rtol, peak, error)
     type(bare_type), intent(inout) :: bare
     complex(wp), intent(in) :: k
@@ -143,7 +146,7 @@ contains
       end if
       call evaluate(s1, p1, r)
       if (allocated(error)) return
-      if (p1 == 0 .or. abs(s1 - s0) <= tol) then
+      if (p1 == 0) then
         call finish(s1, r)
         return
       end if
@@ -155,7 +158,8 @@ contains
         step = 4*(s1 - s0)
       end if
       if (abs(step) <= tol) then
-        call finish(s1, r)
+        ! converged: the root is the secant estimate, one step (<= tol) away
+        call finish(s1, r, s1 + step)
         return
       end if
       if (abs(step) > 4*abs(s1 - s0)) step = sign(4*abs(s1 - s0), step)
@@ -175,16 +179,20 @@ contains
       if (allocated(error)) return
       call brent_update(brent, p1)
     end do
-    ! the best estimate is one of the recently evaluated abscissae
+    ! the root is the secant estimate within the final bracket [b, c]; b is one of the
+    ! recently evaluated abscissae
+    x = brent%b
+    if (brent%fc /= brent%fb) x = brent%b - brent%fb*(brent%c - brent%b)/(brent%fc - brent%fb)
+    if (.not.(x >= min(brent%b, brent%c) .and. x <= max(brent%b, brent%c))) x = brent%b
     do i = 1, min(nc, ncache)
       if (xc(i) == brent%b) then
-        call finish(brent%b, rc(i))
+        call finish(brent%b, rc(i), x)
         return
       end if
     end do
     call evaluate(brent%b, p1, r)
     if (allocated(error)) return
-    call finish(brent%b, r)
+    call finish(brent%b, r, x)
 
   contains
 
@@ -200,12 +208,25 @@ contains
       rc(mod(nc - 1, ncache) + 1) = rs
     end subroutine evaluate
 
-    subroutine finish(s, rs)
+    !> The peak at s_star (default s), the receptances carried there from s to first order
+    !> (|s_star - s| <= tol, so the error is O(tol^2)).
+    subroutine finish(s, rs, s_star)
       real(wp), intent(in) :: s
       type(receptances_type), intent(in) :: rs
+      real(wp), intent(in), optional :: s_star
+      real(wp) :: dw
       peak%omega = sqrt(s)
       peak%r = rs
-      peak%amplitude = layer_amplitude(rs, k)
+      if (present(s_star)) then
+        peak%omega = sqrt(s_star)
+        dw = peak%omega - sqrt(s)
+        peak%r%gE = rs%gE + rs%dgE*dw
+        peak%r%gg = rs%gg + rs%dgg*dw
+        peak%r%EE = rs%EE + rs%dEE*dw
+        peak%r%sE = rs%sE + rs%dsE*dw
+        peak%r%sg = rs%sg + rs%dsg*dw
+      end if
+      peak%amplitude = layer_amplitude(peak%r, k)
       peak%status = PEAK_OK
     end subroutine finish
   end subroutine layer_peak

@@ -12,7 +12,7 @@ module udmap_model_data
   private
   public :: analysis_type, point_type, curve_type, model_type, backbone_table_type, &
     & backbone_eval_type
-  public :: new_model, limit_force, regime_of, fill_point, check_forces
+  public :: new_model, limit_force, regime_of, fill_point, check_forces, damper_fingerprint
   public :: EIGEN_AUTO, EIGEN_DIRECT, EIGEN_MODAL
   public :: REGIME_STUCK, REGIME_PARTIAL_SLIP, REGIME_FULL_SLIP, REGIME_LIMIT
   public :: BRANCH_LOWER, BRANCH_UPPER, BRANCH_TURNING
@@ -112,8 +112,11 @@ module udmap_model_data
   !> F_bb on the grid gamma_j = gamma_ref 10^(j/grid_per_decade), j = j_lo..j_hi, for one
   !> damper revision.
   type :: backbone_table_type
-    !> Damper revision the table belongs to (none yet: -huge).
+    !> Damper revision the table belongs to (none yet: -huge), and the damper's summary
+    !> numbers then (gamma_b, gamma_s, M_max, M_min, k_stuck), which also invalidate the table
+    !> if they change (a damper rebuilt in place restarts its revision count).
     integer :: revision = -huge(1)
+    real(wp) :: fingerprint(5) = 0
     !> Grid anchor (the damper's gamma_b) [rad].
     real(wp) :: gamma_ref = 0
     !> Nodes present; below node(j_lo)%gamma the damper is stuck (k constant), F_bb linear.
@@ -221,12 +224,24 @@ contains
     if (blade%explicit_C .and. allocated(blade%C)) then
       model%c1 = dot_product(blade%phi(:, 1), matmul(blade%C, blade%phi(:, 1)))
       model%undamped = all(blade%C == 0)
+    else if (blade%explicit_C) then
+      ! band storage only: the width estimate does without the viscous part
+      model%c1 = 0
+      model%undamped = .false.
+      if (allocated(blade%Cb)) model%undamped = all(blade%Cb == 0)
     else
       model%c1 = blade%beta*blade%omega1**2
       model%undamped = .not.blade%explicit_C .and. blade%zeta == 0
     end if
     call new_secular(model%secular, blade, error)
   end subroutine new_model
+
+  !> The damper's summary numbers that the backbone table depends on besides k(gamma).
+  pure function damper_fingerprint(damper) result(fp)
+    type(damper_type), intent(in) :: damper
+    real(wp) :: fp(5)
+    fp = [damper%gamma_b, damper%gamma_s, damper%M_max, damper%M_min, damper%k_stuck]
+  end function damper_fingerprint
 
   !> The limit excitation force F_lim = 2 Delta_M / (pi |phi_E/phi_g|) (PHYSICS.md 5) [N].
   subroutine limit_force(model, F_lim, error)
