@@ -25,6 +25,7 @@ module udmap_eigen_start
   use udmap_error, only: error_type, fatal_error, UDMAP_EINPUT, UDMAP_ENUMERIC
   use udmap_blade, only: blade_type, receptances_type
   use udmap_root_finding, only: brent_type, brent_start, brent_next, brent_update
+  use udmap_lapack, only: zggev, zgbtrf, zgbtrs
   implicit none
   private
   public :: secular_type, new_secular, secular_root, direct_eigen_start, secular_modes
@@ -42,34 +43,6 @@ module udmap_eigen_start
     !> computed modes left out.
     real(wp) :: R1 = 0, R2 = 0
   end type secular_type
-
-  interface
-    subroutine zggev(jobvl, jobvr, n, a, lda, b, ldb, alpha, beta, vl, ldvl, vr, ldvr, &
-        & work, lwork, rwork, info)
-      import :: wp
-      character(len=1), intent(in) :: jobvl, jobvr
-      integer, intent(in) :: n, lda, ldb, ldvl, ldvr, lwork
-      complex(wp), intent(inout) :: a(lda, *), b(ldb, *)
-      complex(wp), intent(out) :: alpha(*), beta(*), vl(ldvl, *), vr(ldvr, *), work(*)
-      real(wp), intent(out) :: rwork(*)
-      integer, intent(out) :: info
-    end subroutine zggev
-    subroutine zgbtrf(m, n, kl, ku, ab, ldab, ipiv, info)
-      import :: wp
-      integer, intent(in) :: m, n, kl, ku, ldab
-      complex(wp), intent(inout) :: ab(ldab, *)
-      integer, intent(out) :: ipiv(*), info
-    end subroutine zgbtrf
-    subroutine zgbtrs(trans, n, kl, ku, nrhs, ab, ldab, ipiv, b, ldb, info)
-      import :: wp
-      character(len=1), intent(in) :: trans
-      integer, intent(in) :: n, kl, ku, nrhs, ldab, ldb
-      complex(wp), intent(in) :: ab(ldab, *)
-      integer, intent(in) :: ipiv(*)
-      complex(wp), intent(inout) :: b(ldb, *)
-      integer, intent(out) :: info
-    end subroutine zgbtrs
-  end interface
 
 #ifdef UDMAP_WITH_ARPACK
   interface
