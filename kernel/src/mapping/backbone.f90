@@ -36,7 +36,7 @@ module udmap_backbone
   !> How far above gamma_b the grid may grow (decades) before a root is declared out of reach.
   integer, parameter :: max_decades = 12
   !> Peak tolerance of the grid nodes (which only bracket roots and start searches).
-  real(wp), parameter :: table_rtol = 1.0e-8_wp
+  real(wp), parameter :: table_rtol = 1.0e-7_wp
   !> Step in ln(gamma) of the central difference of the damper stiffness.
   real(wp), parameter :: du_fd = 1.0e-6_wp
 
@@ -55,10 +55,16 @@ contains
     gamma = model%table%gamma_ref*10.0_wp**(real(j, wp)/model%analysis%grid_per_decade)
   end function grid_gamma
 
-  !> The backbone point of the layer gamma: the stiffness, the eigenvalue (tracked from
-  !> start%lambda when a start is given) and the peak of |g~| to rtol, started at
-  !> start%peak%omega + (Re sqrt(lambda) - Re sqrt(start%lambda)), else at Re sqrt(lambda).
-  subroutine layer_backbone(model, gamma, rtol, e, error, start, lambda_start, loose)
+  !> The backbone point of the layer gamma: the damper stiffness, the eigenvalue start, and
+  !> the peak of |g~| located to rtol. The eigenvalue is tracked by the secular equation from
+  !> start%lambda when a start is given (else lambda_start, else bracketed from the bare modes;
+  !> the direct solver with eigen_method = EIGEN_DIRECT). The peak search starts at
+  !> Re sqrt(lambda) + offset_guess when given (the offset omega_peak - Re sqrt(lambda) is smooth
+  !> along the grid even where k(gamma) is not, and is interpolated there), else at
+  !> start%peak%omega + Re sqrt(lambda) - Re sqrt(start%lambda), else at Re sqrt(lambda). With a
+  !> start, its psi slope is the hint of the first Newton step and its peak gives the width.
+  subroutine layer_backbone(model, gamma, rtol, e, error, start, lambda_start, loose, predict, &
+      & offset_guess)
     type(model_type), intent(inout) :: model
     real(wp), intent(in) :: gamma, rtol
     type(backbone_eval_type), intent(out) :: e
@@ -68,7 +74,11 @@ contains
     !> Only F_bb is needed (to rtol): the peak may be located to sqrt(rtol) of its
     !> relative width, since |g~| is stationary there.
     logical, intent(in), optional :: loose
-    real(wp) :: omega0, width, tol
+    !> Accept a single-evaluation Newton step with the start's psi slope (grid nodes).
+    logical, intent(in), optional :: predict
+    !> Predicted omega_peak - Re sqrt(lambda) [rad/s].
+    real(wp), intent(in), optional :: offset_guess
+    real(wp) :: omega0, width, tol, dpsi
     logical :: ok
     e%gamma = gamma
     e%k = model%damper%stiffness(gamma)
@@ -89,18 +99,30 @@ contains
         return
       end if
     end if
-    if (present(start)) then
-      omega0 = start%peak%omega + real(sqrt(e%lambda), wp) - real(sqrt(start%lambda), wp)
+    if (present(offset_guess)) then
+      omega0 = re_sqrt(e%lambda) + offset_guess
+    else if (present(start)) then
+      omega0 = start%peak%omega + re_sqrt(e%lambda) - re_sqrt(start%lambda)
     else
-      omega0 = real(sqrt(e%lambda), wp)
+      omega0 = re_sqrt(e%lambda)
     end if
     width = abs(aimag(e%lambda)) + model%c1*omega0
+    if (present(start)) then
+      if (peak_width(start%peak) > 0) width = peak_width(start%peak)
+    end if
     tol = rtol
     if (present(loose)) then
       if (loose) tol = max(rtol, 0.1_wp*sqrt(model%analysis%rtol)*width/omega0**2)
     end if
-    call layer_peak(model%bare, e%k, omega0, width, model%omega_lo, model%omega_hi, tol, &
-      & e%peak, error)
+    dpsi = 0
+    if (present(start)) dpsi = start%peak%dpsi
+    if (dpsi > 0) then
+      call layer_peak(model%bare, e%k, omega0, width, model%omega_lo, model%omega_hi, tol, &
+        & e%peak, error, dpsi=dpsi, predict=predict)
+    else
+      call layer_peak(model%bare, e%k, omega0, width, model%omega_lo, model%omega_hi, tol, &
+        & e%peak, error)
+    end if
     if (allocated(error)) return
     if (e%peak%status /= PEAK_OK) then
       call band_error(model, gamma, e%peak, error)
@@ -109,6 +131,54 @@ contains
     e%F_bb = gamma/e%peak%amplitude
     e%slope = backbone_slope(model, e)
   end subroutine layer_backbone
+
+  !> Re sqrt(lambda) in real arithmetic.
+  elemental real(wp) function re_sqrt(lambda)
+    complex(wp), intent(in) :: lambda
+    re_sqrt = sqrt(0.5_wp*(sqrt(real(lambda, wp)**2 + aimag(lambda)**2) + real(lambda, wp)))
+  end function re_sqrt
+
+  !> Half-width W (in omega^2) of a peak from its data: for one mode P = ((s - s*)^2 + W^2)/A^2,
+  !> so W^2 = 2 P*/P'' = 2/(|g~|^2 dpsi). 0 when the slope is unknown.
+  elemental real(wp) function peak_width(peak)
+    type(layer_peak_type), intent(in) :: peak
+    peak_width = 0
+    if (peak%dpsi > 0) peak_width = sqrt(2/(peak%amplitude**2*peak%dpsi))
+  end function peak_width
+
+  !> omega_peak - Re sqrt(lambda) of a backbone point.
+  elemental real(wp) function offset(e)
+    type(backbone_eval_type), intent(in) :: e
+    offset = e%peak%omega - re_sqrt(e%lambda)
+  end function offset
+
+  !> The offset omega_peak - Re sqrt(lambda) at gamma [rad/s] interpolated along the grid nodes
+  !> (cubic Lagrange in ln gamma through the four nearest nodes).
+  real(wp) function interp_offset(model, gamma) result(omega)
+    type(model_type), intent(in) :: model
+    real(wp), intent(in) :: gamma
+    real(wp) :: x, xs(4), ys(4), l
+    integer :: j0, a, b
+    associate(t => model%table)
+      x = model%analysis%grid_per_decade*log10(gamma/t%gamma_ref)
+      if (t%j_hi - t%j_lo < 3) then
+        j0 = min(max(nint(x), t%j_lo), t%j_hi)
+        omega = offset(t%node(j0))
+        return
+      end if
+      j0 = min(max(floor(x) - 1, t%j_lo), t%j_hi - 3)
+      xs = [(real(j0 + a, wp), a = 0, 3)]
+      ys = offset(t%node(j0:j0 + 3))
+    end associate
+    omega = 0
+    do a = 1, 4
+      l = 1
+      do b = 1, 4
+        if (b /= a) l = l*(x - xs(b))/(xs(a) - xs(b))
+      end do
+      omega = omega + l*ys(a)
+    end do
+  end function interp_offset
 
   !> d ln F_bb / d ln gamma at a layer peak (envelope theorem, see the module doc).
   real(wp) function backbone_slope(model, e) result(slope)
@@ -203,9 +273,14 @@ contains
           else
             call layer_backbone(model, grid_gamma(model, j), peak_rtol(model), node(j), error)
           end if
+        else if (j >= lo + 3) then
+          ! start at the peak offset from the eigenvalue extrapolated along the grid
+          call layer_backbone(model, grid_gamma(model, j), max(table_rtol, model%analysis%rtol), &
+            & node(j), error, start=node(j - 1), predict=.true., &
+            & offset_guess=3*offset(node(j - 1)) - 3*offset(node(j - 2)) + offset(node(j - 3)))
         else
           call layer_backbone(model, grid_gamma(model, j), max(table_rtol, model%analysis%rtol), &
-            & node(j), error, start=node(j - 1))
+            & node(j), error, start=node(j - 1), predict=.true.)
         end if
         if (allocated(error)) return
         model%table%j_hi = j
@@ -271,13 +346,16 @@ contains
         e%slope = 1
         return
       end if
+      ! the eigenvalue tracked from the given start (the previous iterate) or the nearest node,
+      ! the peak offset interpolated along the grid
       if (present(start)) then
-        call layer_backbone(model, gamma, peak_rtol(model), e, error, start=start, loose=loose)
+        call layer_backbone(model, gamma, peak_rtol(model), e, error, start=start, loose=loose, &
+          & offset_guess=interp_offset(model, gamma))
       else
         j = nint(model%analysis%grid_per_decade*log10(gamma/t%gamma_ref))
         j = min(max(j, t%j_lo), t%j_hi)
         call layer_backbone(model, gamma, peak_rtol(model), e, error, start=t%node(j), &
-          & loose=loose)
+          & loose=loose, offset_guess=interp_offset(model, gamma))
       end if
     end associate
   end subroutine eval_backbone

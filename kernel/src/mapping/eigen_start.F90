@@ -31,7 +31,7 @@ module udmap_eigen_start
   public :: secular_type, new_secular, secular_root, direct_eigen_start, secular_modes
 
   !> Bare modes summed term by term in the secular equation (the rest enter R0, R1).
-  integer, parameter :: secular_modes = 8
+  integer, parameter :: secular_modes = 4
 
   !> The rank-one secular equation of the gamma DOF over the bare modes.
   type :: secular_type
@@ -140,13 +140,14 @@ contains
   end subroutine secular_h
 
   !> Newton on 1/k + h(lambda) = 0 from lambda, with step halving while |residual| grows,
-  !> to a relative step of secular_tol (the eigenvalue is only a start).
+  !> until a relative step of secular_tol (Newton converges quadratically, so lambda is then
+  !> good to about secular_tol^2 = 1e-14).
   pure subroutine secular_newton(sec, k, lambda, ok)
     type(secular_type), intent(in) :: sec
     complex(wp), intent(in) :: k
     complex(wp), intent(inout) :: lambda
     logical, intent(out) :: ok
-    real(wp), parameter :: secular_tol = 1.0e-11_wp
+    real(wp), parameter :: secular_tol = 1.0e-7_wp
     complex(wp) :: h, dh, f, step, trial, ft, kinv
     integer :: it, half
     ok = .false.

@@ -18,6 +18,7 @@ module udmap_layer
   use udmap_error, only: error_type, fatal_error, UDMAP_ENUMERIC
   use udmap_blade, only: blade_type, receptances_type
   use udmap_root_finding, only: brent_type, brent_start, brent_next, brent_update
+  use udmap_band_receptances, only: band_receptances_type, band_eval
   implicit none
   private
   public :: bare_type, layer_peak_type, bare_receptances, log_slope, layer_peak, &
@@ -31,10 +32,12 @@ module udmap_layer
   !> |g~| still grows at the upper band edge: the resonance lies above the band.
   integer, parameter :: PEAK_ABOVE_BAND = 2
 
-  !> The bare blade as seen by the mapping: the blade it borrows and a count of receptance
+  !> The bare blade as seen by the mapping: the blade it borrows, the fast interpolant of its
+  !> receptances over the band (udmap_band_receptances, when active) and a count of receptance
   !> evaluations (the unit of cost of everything here).
   type :: bare_type
     type(blade_type), pointer :: blade => null()
+    type(band_receptances_type) :: band
     integer :: evaluations = 0
   end type bare_type
 
@@ -46,6 +49,9 @@ module udmap_layer
     type(receptances_type) :: r
     !> PEAK_OK, or PEAK_BELOW_BAND / PEAK_ABOVE_BAND when the maximum is at a band edge.
     integer :: status = PEAK_OK
+    !> d psi / ds at the peak as last measured (psi = dP/ds, P = 1/|g~|^2, s = omega^2), the
+    !> slope hint for a neighbouring layer (0 if unknown).
+    real(wp) :: dpsi = 0
   end type layer_peak_type
 
 contains
@@ -58,7 +64,11 @@ contains
     type(error_type), allocatable, intent(out) :: error
     logical, intent(in) :: derivatives
     bare%evaluations = bare%evaluations + 1
-    call bare%blade%receptances(omega, r, error, derivatives=derivatives)
+    if (bare%band%active .and. omega >= bare%band%omega_lo .and. omega <= bare%band%omega_hi) then
+      call band_eval(bare%band, omega, derivatives, r)
+    else
+      call bare%blade%receptances(omega, r, error, derivatives=derivatives)
+    end if
   end subroutine bare_receptances
 
   !> |z|^2 without the overflow guard of abs (hypot): the values here are far from overflow.
@@ -94,28 +104,43 @@ contains
   !> Maximum of |g~(omega)| for the layer stiffness k over [omega_lo, omega_hi] [rad/s],
   !> started at omega0; width estimates the half-power half-width of the peak in s = omega^2
   !> (e.g. |Im lambda| of the eigenvalue start; any positive value works, a good one saves
-  !> evaluations). The peak is located to rtol in omega and then moved by the last secant
-  !> step, which is not evaluated: the receptances are carried over it to first order with
-  !> their derivatives, so the returned frequency is accurate well beyond rtol (the secant
-  !> converges superlinearly) at no extra cost. A maximum at a band edge is reported in
-  !> peak%status, not as an error.
-  subroutine layer_peak(bare, k, omega0, width, omega_lo, omega_hi, rtol, peak, error)
+  !> evaluations). dpsi, when given, is the slope d psi/ds expected at the peak (that of a
+  !> neighbouring layer): the first step is then a Newton step with it.
+  !>
+  !> Termination: after each evaluation the secant estimate s* of the root of psi is formed
+  !> from the last two points; its error is about |s* - s1| |s* - s0| |psi''/(2 psi')|, and
+  !> |psi''/psi'| <= 1/width for a resonance, so s* is accepted when that bound (or the step
+  !> itself) is below the tolerance. The estimate is not evaluated: the receptances are carried
+  !> there to first order with their derivatives (error O(step^2)), and the amplitude follows
+  !> from the quadratic model of P, so the returned frequency is accurate well beyond rtol at
+  !> no extra cost. With `predict`, a single evaluation suffices when the Newton step with the
+  !> given slope is small enough that its error (taken as 5 % of the step) is below the
+  !> tolerance (used for the grid nodes, which only bracket roots). A maximum at a band edge is
+  !> reported in peak%status, not as an error.
+  subroutine layer_peak(bare, k, omega0, width, omega_lo, omega_hi, rtol, peak, error, dpsi, &
+      & predict)
     type(bare_type), intent(inout) :: bare
     complex(wp), intent(in) :: k
     real(wp), intent(in) :: omega0, width, omega_lo, omega_hi, rtol
     type(layer_peak_type), intent(out) :: peak
     type(error_type), allocatable, intent(out) :: error
+    real(wp), intent(in), optional :: dpsi
+    logical, intent(in), optional :: predict
     integer, parameter :: max_secant = 40, ncache = 4
     type(receptances_type) :: r, rc(ncache)
-    real(wp) :: xc(ncache), s_lo, s_hi, s0, s1, p0, p1, step, d, q, amp, tol, x, w
+    real(wp) :: xc(ncache), s_lo, s_hi, s0, s1, p0, p1, step, d, q, amp, tol, x, w, est, slope
     type(brent_type) :: brent
-    logical :: more
+    logical :: more, may_predict
     integer :: it, nc, i
 
     s_lo = omega_lo**2
     s_hi = omega_hi**2
     s0 = min(max(omega0, omega_lo), omega_hi)**2
     tol = 2*rtol*s0
+    ! |psi''/psi'| is at most about 1/width (and 1/(0.1 s) where modes are far apart)
+    w = min(max(width, 1.0e-9_wp*s0), 0.1_wp*s0)
+    may_predict = .false.
+    if (present(predict)) may_predict = predict .and. present(dpsi)
     nc = 0
     call evaluate(s0, p0, r)
     if (allocated(error)) return
@@ -123,17 +148,33 @@ contains
       call finish(s0, r)
       return
     end if
-    ! First step from the single-mode model P = ((s - s*)^2 + W^2)/A^2: with |g~| and psi at s0
-    ! and W = width, s0 - s* solves q d^2 - 2 d + q W^2 = 0 with q = psi |g~|^2.
     amp = layer_amplitude(r, k)
-    w = max(width, 1.0e-9_wp*s0)
-    q = p0*amp**2
-    if (abs(q*w) < 1) then
-      d = (1 - sqrt(1 - (q*w)**2))/q
+    if (present(dpsi)) then
+      slope = dpsi
     else
-      d = sign(w, q)
+      slope = 0
     end if
-    step = -d
+    if (slope > 0) then
+      ! Newton step with the slope of a neighbouring layer
+      step = -p0/slope
+      if (may_predict .and. abs(step) <= 0.01_wp*w .and. 0.05_wp*abs(step) <= tol) then
+        call finish(s0, r, s0 + step, p0)
+        peak%dpsi = slope
+        return
+      end if
+    else
+      ! First step from the single-mode model P = ((s - s*)^2 + W^2)/A^2: with |g~| and psi at
+      ! s0 and W = width, s0 - s* solves q d^2 - 2 d + q W^2 = 0 with q = psi |g~|^2.
+      q = p0*amp**2
+      if (abs(q*w) < 1) then
+        d = (1 - sqrt(1 - (q*w)**2))/q
+      else
+        d = sign(w, q)
+      end if
+      step = -d
+      slope = 2/(amp**2*w**2)
+    end if
+    if (abs(step) > 4*w) step = sign(4*w, step)
     if (abs(step) < tol) step = sign(tol, step)
     do it = 1, max_secant
       s1 = min(max(s0 + step, s_lo), s_hi)
@@ -150,19 +191,26 @@ contains
         call finish(s1, r)
         return
       end if
+      ! secant estimate from the last two points, and its error bound
+      if (p1 /= p0) then
+        slope = (p1 - p0)/(s1 - s0)
+        est = s1 - p1/slope
+        if (slope > 0 .and. (abs(est - s1) <= tol .or. &
+            & abs(est - s1)*abs(est - s0) <= tol*w)) then
+          call finish(s1, r, est, p1)
+          peak%dpsi = slope
+          return
+        end if
+      end if
       if ((p0 > 0) .neqv. (p1 > 0)) exit
       ! same side: secant step (backwards too, if |psi| grew), at most four times the last
       if (p1 /= p0) then
-        step = -p1*(s1 - s0)/(p1 - p0)
+        step = est - s1
       else
         step = 4*(s1 - s0)
       end if
-      if (abs(step) <= tol) then
-        ! converged: the root is the secant estimate, one step (<= tol) away
-        call finish(s1, r, s1 + step)
-        return
-      end if
       if (abs(step) > 4*abs(s1 - s0)) step = sign(4*abs(s1 - s0), step)
+      if (abs(step) < tol) step = sign(tol, step)
       s0 = s1
       p0 = p1
     end do
@@ -182,17 +230,23 @@ contains
     ! the root is the secant estimate within the final bracket [b, c]; b is one of the
     ! recently evaluated abscissae
     x = brent%b
-    if (brent%fc /= brent%fb) x = brent%b - brent%fb*(brent%c - brent%b)/(brent%fc - brent%fb)
+    slope = 0
+    if (brent%fc /= brent%fb) then
+      slope = (brent%fc - brent%fb)/(brent%c - brent%b)
+      x = brent%b - brent%fb/slope
+    end if
     if (.not.(x >= min(brent%b, brent%c) .and. x <= max(brent%b, brent%c))) x = brent%b
     do i = 1, min(nc, ncache)
       if (xc(i) == brent%b) then
-        call finish(brent%b, rc(i), x)
+        call finish(brent%b, rc(i), x, brent%fb)
+        peak%dpsi = slope
         return
       end if
     end do
     call evaluate(brent%b, p1, r)
     if (allocated(error)) return
-    call finish(brent%b, r, x)
+    call finish(brent%b, r, x, p1)
+    peak%dpsi = slope
 
   contains
 
@@ -208,15 +262,17 @@ contains
       rc(mod(nc - 1, ncache) + 1) = rs
     end subroutine evaluate
 
-    !> The peak at s_star (default s), the receptances carried there from s to first order
-    !> (|s_star - s| <= tol, so the error is O(tol^2)).
-    subroutine finish(s, rs, s_star)
+    !> The peak at s_star (default s): the receptances carried there from s to first order,
+    !> the amplitude from the quadratic model of P = 1/|g~|^2 (P* = P(s) + psi (s* - s)/2,
+    !> exact to O((s* - s)^3)).
+    subroutine finish(s, rs, s_star, psi)
       real(wp), intent(in) :: s
       type(receptances_type), intent(in) :: rs
-      real(wp), intent(in), optional :: s_star
+      real(wp), intent(in), optional :: s_star, psi
       real(wp) :: dw
       peak%omega = sqrt(s)
       peak%r = rs
+      peak%amplitude = layer_amplitude(rs, k)
       if (present(s_star)) then
         peak%omega = sqrt(s_star)
         dw = peak%omega - sqrt(s)
@@ -225,8 +281,8 @@ contains
         peak%r%EE = rs%EE + rs%dEE*dw
         peak%r%sE = rs%sE + rs%dsE*dw
         peak%r%sg = rs%sg + rs%dsg*dw
+        peak%amplitude = 1/sqrt(1/peak%amplitude**2 + 0.5_wp*psi*(s_star - s))
       end if
-      peak%amplitude = layer_amplitude(peak%r, k)
       peak%status = PEAK_OK
     end subroutine finish
   end subroutine layer_peak

@@ -8,6 +8,7 @@ module udmap_model_data
   use udmap_damper, only: damper_type
   use udmap_layer, only: bare_type, layer_peak_type
   use udmap_eigen_start, only: secular_type, new_secular
+  use udmap_band_receptances, only: new_band_receptances
   implicit none
   private
   public :: analysis_type, point_type, curve_type, model_type, backbone_table_type, &
@@ -59,6 +60,9 @@ module udmap_model_data
     !> Bare-blade frequency samples over the band for the response curves (root
     !> bracketing only: every crossing is then refined with exact receptances).
     integer :: sweep_points = 400
+    !> Evaluate the bare receptances in the band through the checked interpolant of
+    !> udmap_band_receptances (off: the blade's own evaluation every time).
+    logical :: band_interpolation = .true.
   end type analysis_type
 
   !> One point of the non-linear response: at resonance (backbone) or at a given frequency.
@@ -234,6 +238,9 @@ contains
       model%undamped = .not.blade%explicit_C .and. blade%zeta == 0
     end if
     call new_secular(model%secular, blade, error)
+    if (allocated(error)) return
+    if (analysis%band_interpolation) &
+      & call new_band_receptances(model%bare%band, blade, model%omega_lo, model%omega_hi)
   end subroutine new_model
 
   !> The damper's summary numbers that the backbone table depends on besides k(gamma).
