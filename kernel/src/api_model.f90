@@ -10,7 +10,7 @@ module udmap_api_model
   use udmap_blade, only: blade_type
   use udmap_damper, only: damper_type
   use udmap_model, only: model_type, analysis_type, point_type, curve_type, new_model, &
-    & limit_force, backbone_curve, backbone, response, response_curves
+    & set_damper, limit_force, backbone_curve, backbone, response, response_curves
   implicit none
   private
   public :: c_analysis_type, c_point_type, c_model_type
@@ -102,6 +102,27 @@ contains
       modelh = c_null_ptr
     end if
   end subroutine udmap_delete_model
+
+  function udmap_model_set_damper(errh, modelh, damperh) result(stat) &
+      & bind(C, name="udmap_model_set_damper")
+    type(c_ptr), value :: errh, modelh, damperh
+    integer(c_int) :: stat
+    type(error_type), allocatable :: error
+    type(c_model_type), pointer :: m
+    type(damper_type), pointer :: damper
+    call clear_error(errh)
+    if (.not.c_associated(modelh)) then
+      error = error_from_handle("model")
+    else if (.not.c_associated(damperh)) then
+      error = error_from_handle("damper")
+    else
+      call c_f_pointer(modelh, m)
+      call c_f_pointer(damperh, damper)
+      call set_damper(m%model, damper, error)
+      if (allocated(m%curves)) deallocate(m%curves)
+    end if
+    stat = set_error(errh, error)
+  end function udmap_model_set_damper
 
   function udmap_model_limit_force(errh, modelh, F_lim) result(stat) &
       & bind(C, name="udmap_model_limit_force")

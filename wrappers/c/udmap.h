@@ -153,6 +153,11 @@ int udmap_new_model(udmap_error error, udmap_blade blade, udmap_damper damper,
                     const udmap_analysis *analysis, udmap_model *model);
 void udmap_delete_model(udmap_model *model);
 
+/* Couples another damper to the model (borrowed like the first; the old one may then be
+ * deleted). The bare-blade data are kept and the backbone table is rebuilt on next use: the
+ * cheap path after a change of damper parameters. */
+int udmap_model_set_damper(udmap_error error, udmap_model model, udmap_damper damper);
+
 /* One point of the non-linear response (at resonance or at a given frequency). */
 typedef struct {
   double F_E;      /* excitation force amplitude [N] */

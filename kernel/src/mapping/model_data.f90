@@ -13,7 +13,8 @@ module udmap_model_data
   private
   public :: analysis_type, point_type, curve_type, model_type, backbone_table_type, &
     & backbone_eval_type
-  public :: new_model, limit_force, regime_of, fill_point, check_forces, damper_fingerprint
+  public :: new_model, set_damper, limit_force, regime_of, fill_point, check_forces, &
+    & damper_fingerprint
   public :: EIGEN_AUTO, EIGEN_DIRECT, EIGEN_MODAL
   public :: REGIME_STUCK, REGIME_PARTIAL_SLIP, REGIME_FULL_SLIP, REGIME_LIMIT
   public :: BRANCH_LOWER, BRANCH_UPPER, BRANCH_TURNING
@@ -242,6 +243,26 @@ contains
     if (analysis%band_interpolation) &
       & call new_band_receptances(model%bare%band, blade, model%omega_lo, model%omega_hi)
   end subroutine new_model
+
+  !> Couples another damper to the model (borrowed like the first): the bare-blade data stay,
+  !> the backbone table is rebuilt on next use. This is the cheap path after a change of the
+  !> damper's parameters (build the new damper, then set it).
+  subroutine set_damper(model, damper, error)
+    type(model_type), intent(inout) :: model
+    type(damper_type), target, intent(in) :: damper
+    type(error_type), allocatable, intent(out) :: error
+    if (.not.associated(model%blade)) then
+      call fatal_error(error, "set_damper: the model is not built", UDMAP_EINPUT)
+      return
+    end if
+    if (.not.(damper%gamma_b > 0)) then
+      call fatal_error(error, "model: the damper has no positive base-cycle amplitude gamma_b", &
+        & UDMAP_EINPUT)
+      return
+    end if
+    model%damper => damper
+    model%table%revision = -huge(1)
+  end subroutine set_damper
 
   !> The damper's summary numbers that the backbone table depends on besides k(gamma).
   pure function damper_fingerprint(damper) result(fp)

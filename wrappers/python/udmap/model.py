@@ -14,7 +14,7 @@ import math
 
 import numpy as np
 
-from ._lib import ErrorHandle, as_doubles, c_double_p, c_int_p, declare, lib
+from ._lib import ErrorHandle, as_doubles, c_double_p, c_int_p, declare
 
 REGIME_NAMES = {0: "stuck", 1: "partial slip", 2: "full slip", 3: "at or above F_lim"}
 BRANCH_LOWER, BRANCH_UPPER, BRANCH_TURNING = 0, 1, 2
@@ -43,6 +43,7 @@ _analysis_defaults = declare("udmap_analysis_defaults", [ctypes.POINTER(_Analysi
 _new_model = declare("udmap_new_model", [_vp, _vp, _vp, ctypes.POINTER(_Analysis),
                                          ctypes.POINTER(_vp)])
 _delete_model = declare("udmap_delete_model", [ctypes.POINTER(_vp)], None)
+_set_damper = declare("udmap_model_set_damper", [_vp, _vp, _vp])
 _limit_force = declare("udmap_model_limit_force", [_vp, _vp, c_double_p])
 _backbone_curve = declare("udmap_model_backbone_curve",
                           [_vp, _vp, ctypes.c_int, c_double_p, c_double_p, c_double_p])
@@ -55,6 +56,15 @@ _curve_size = declare("udmap_model_curve_size", [_vp, _vp, ctypes.c_int, c_int_p
 _curve_get = declare("udmap_model_curve_get", [_vp, _vp, ctypes.c_int, ctypes.c_int, c_double_p,
                                                c_double_p, c_double_p, c_int_p, c_int_p])
 _blade_get_size = declare("udmap_blade_get_size", [_vp, _vp, c_int_p, c_int_p])
+
+
+def _handle(obj):
+    """The kernel handle of a Blade or Damper object."""
+    for name in ("_handle", "_ptr"):
+        h = getattr(obj, name, None)
+        if h is not None:
+            return h
+    raise TypeError(f"{type(obj).__name__} has no kernel handle")
 
 
 def _forces(F_E) -> tuple[np.ndarray, ctypes.Array]:
@@ -88,16 +98,23 @@ class Model:
         a.grid_per_decade, a.eigen_method = int(grid_per_decade), int(eigen_method)
         a.dense_max, a.sweep_points = int(dense_max), int(sweep_points)
         self.f_min, self.f_max, self.sigma_all = float(f_min), float(f_max), float(sigma_all)
-        self._err.check(_new_model(self._err.ptr, blade._ptr, damper._ptr, ctypes.byref(a),
-                                   ctypes.byref(self._ptr)))
+        self._err.check(_new_model(self._err.ptr, _handle(blade), _handle(damper),
+                                   ctypes.byref(a), ctypes.byref(self._ptr)))
         ndof, has_stress = ctypes.c_int(), ctypes.c_int()
-        self._err.check(_blade_get_size(self._err.ptr, blade._ptr, ctypes.byref(ndof),
+        self._err.check(_blade_get_size(self._err.ptr, _handle(blade), ctypes.byref(ndof),
                                         ctypes.byref(has_stress)))
         self.has_stress = bool(has_stress.value)
 
     def __del__(self):
-        if getattr(self, "_ptr", None) is not None and lib is not None:
-            _delete_model(ctypes.byref(self._ptr))
+        ptr = getattr(self, "_ptr", None)
+        if ptr is not None and ptr.value and _delete_model is not None:
+            _delete_model(ctypes.byref(ptr))
+
+    def set_damper(self, damper) -> None:
+        """Couples another damper (e.g. after a change of its parameters): the bare-blade data
+        are kept, the backbone table is rebuilt on next use."""
+        self._err.check(_set_damper(self._err.ptr, self._ptr, _handle(damper)))
+        self.damper = damper
 
     def limit_force(self) -> float:
         """F_lim = 2 Delta_M / (pi |phi_E/phi_g|) [N] (PHYSICS.md 5)."""
