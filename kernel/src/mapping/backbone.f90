@@ -26,12 +26,12 @@ module udmap_backbone
   use udmap_error, only: error_type, fatal_error, UDMAP_EINPUT, UDMAP_EPHYSICS, UDMAP_ENUMERIC
   use udmap_layer, only: layer_peak_type, layer_peak, PEAK_OK, PEAK_BELOW_BAND
   use udmap_eigen_start, only: secular_root, direct_eigen_start
-  use udmap_model_data, only: model_type, point_type, backbone_eval_type, limit_force, &
+  use udmap_model_data, only: model_type, point_type, backbone_eval_type, limit_force_or_huge, &
     & fill_point, check_forces, damper_fingerprint, EIGEN_AUTO, EIGEN_DIRECT, REGIME_LIMIT
   implicit none
   private
   public :: backbone_curve, backbone, ensure_table, cover_table, eval_backbone, backbone_roots
-  public :: grid_gamma, max_decades
+  public :: grid_gamma, max_decades, j_limit
 
   !> How far above gamma_b the grid may grow (decades) before a root is declared out of reach.
   integer, parameter :: max_decades = 12
@@ -235,7 +235,13 @@ contains
     model%table%j_hi = j_lo - 1
     model%table%revision = model%damper%revision
     model%table%fingerprint = damper_fingerprint(model%damper)
-    call grow_table(model, gpd, error)
+    if (j_limit(model) <= j_lo) then
+      call fatal_error(error, "backbone: the damper's stiffness is defined only up to its stuck "// &
+        & "amplitude (a measured table without slip rows and delta_M)", UDMAP_EINPUT)
+      model%table%revision = -huge(1)
+      return
+    end if
+    call grow_table(model, min(gpd, j_limit(model)), error)
     if (allocated(error)) model%table%revision = -huge(1)
   end subroutine ensure_table
 
@@ -288,23 +294,49 @@ contains
     end associate
   end subroutine grow_table
 
+  !> The last grid node the damper's stiffness is defined at: 1e12 gamma_b, or the damper's
+  !> gamma_max (a measured table without delta_M ends at its last row).
+  integer function j_limit(model)
+    type(model_type), intent(in) :: model
+    integer :: gpd
+    gpd = model%analysis%grid_per_decade
+    j_limit = max_decades*gpd
+    if (model%damper%gamma_max < huge(1.0_wp)) then
+      j_limit = min(j_limit, floor(gpd*log10(model%damper%gamma_max/model%table%gamma_ref)) + 1)
+      do while (grid_gamma(model, j_limit) > model%damper%gamma_max*(1 + 1e-12_wp))
+        j_limit = j_limit - 1
+      end do
+    end if
+  end function j_limit
+
   !> Grows the table until it reaches gamma_top and, if F_max > 0, until F_bb exceeds F_max
   !> on a rising stretch at least a decade above gamma_b (beyond which F_bb rises
-  !> monotonically: friction saturates and the response tends to the bare blade's).
+  !> monotonically: friction saturates and the response tends to the bare blade's). A damper
+  !> whose k(gamma) ends at gamma_max (measured table without delta_M) caps the grid there:
+  !> F_bb must then exceed F_max at the last node, and roots are sought below it only.
   subroutine cover_table(model, F_max, gamma_top, error)
     type(model_type), intent(inout) :: model
     real(wp), intent(in) :: F_max, gamma_top
     type(error_type), allocatable, intent(out) :: error
     integer :: gpd, j_cap, j_need
+    logical :: capped
     character(len=32) :: buf
     gpd = model%analysis%grid_per_decade
-    j_cap = max_decades*gpd
+    j_cap = j_limit(model)
+    capped = j_cap < max_decades*gpd
     if (gamma_top > 0) then
       j_need = ceiling(gpd*log10(gamma_top/model%table%gamma_ref)) + 1
+      if (capped .and. gamma_top <= model%damper%gamma_max) j_need = min(j_need, j_cap)
       if (j_need > j_cap) then
         write(buf, '(es11.4)') gamma_top
-        call fatal_error(error, "backbone: gamma = "//trim(adjustl(buf))//" rad is more than "// &
-          & "1e12 gamma_b, out of the model's reach", UDMAP_EINPUT)
+        if (capped) then
+          call fatal_error(error, "backbone: gamma = "//trim(adjustl(buf))//" rad is beyond "// &
+            & "the damper's stiffness range (a measured table without delta_M ends at its "// &
+            & "last row)", UDMAP_EINPUT)
+        else
+          call fatal_error(error, "backbone: gamma = "//trim(adjustl(buf))//" rad is more "// &
+            & "than 1e12 gamma_b, out of the model's reach", UDMAP_EINPUT)
+        end if
         return
       end if
       call grow_table(model, j_need, error)
@@ -312,13 +344,19 @@ contains
     end if
     if (F_max <= 0) return
     associate(t => model%table)
-      do while (.not.(t%node(t%j_hi)%F_bb > F_max .and. t%j_hi >= gpd .and. &
-          & t%node(t%j_hi)%F_bb >= t%node(t%j_hi - 1)%F_bb))
+      do while (.not.(t%node(t%j_hi)%F_bb > F_max .and. (capped .or. (t%j_hi >= gpd .and. &
+          & t%node(t%j_hi)%F_bb >= t%node(t%j_hi - 1)%F_bb))))
         if (t%j_hi >= j_cap) then
           write(buf, '(es11.4)') F_max
-          call fatal_error(error, "backbone: F_E = "//trim(adjustl(buf))//" N is not reached "// &
-            & "below 1e12 gamma_b (F_E is too close to F_lim without structural damping)", &
-            & UDMAP_EPHYSICS)
+          if (capped) then
+            call fatal_error(error, "backbone: the response to F_E = "//trim(adjustl(buf))// &
+              & " N goes beyond the damper's stiffness range (a measured table without "// &
+              & "delta_M ends at its last row)", UDMAP_EINPUT)
+          else
+            call fatal_error(error, "backbone: F_E = "//trim(adjustl(buf))//" N is not "// &
+              & "reached below 1e12 gamma_b (F_E is too close to F_lim without structural "// &
+              & "damping)", UDMAP_EPHYSICS)
+          end if
           return
         end if
         call grow_table(model, min(t%j_hi + gpd, j_cap), error)
@@ -536,8 +574,7 @@ contains
     if (size(F_E) == 0) return
     call ensure_table(model, error)
     if (allocated(error)) return
-    call limit_force(model, F_lim, error)
-    if (allocated(error)) return
+    F_lim = limit_force_or_huge(model)
     F_max = 0
     do i = 1, size(F_E)
       if (.not.(model%undamped .and. F_E(i) >= F_lim)) F_max = max(F_max, F_E(i))

@@ -13,7 +13,8 @@ module udmap_model_data
   private
   public :: analysis_type, point_type, curve_type, model_type, backbone_table_type, &
     & backbone_eval_type
-  public :: new_model, set_damper, limit_force, regime_of, fill_point, check_forces, &
+  public :: new_model, set_damper, limit_force, limit_force_or_huge, regime_of, fill_point, &
+    & check_forces, &
     & damper_fingerprint
   public :: EIGEN_AUTO, EIGEN_DIRECT, EIGEN_MODAL
   public :: REGIME_STUCK, REGIME_PARTIAL_SLIP, REGIME_FULL_SLIP, REGIME_LIMIT
@@ -272,6 +273,7 @@ contains
   end function damper_fingerprint
 
   !> The limit excitation force F_lim = 2 Delta_M / (pi |phi_E/phi_g|) (PHYSICS.md 5) [N].
+  !> An error when the damper has no slip moment range (a measured table without delta_M).
   subroutine limit_force(model, F_lim, error)
     type(model_type), intent(in) :: model
     real(wp), intent(out) :: F_lim
@@ -281,8 +283,22 @@ contains
       call fatal_error(error, "limit_force: the model is not built", UDMAP_EINPUT)
       return
     end if
+    if (.not.(model%damper%M_max - model%damper%M_min > 0)) then
+      call fatal_error(error, "limit_force: the damper has no slip moment range "// &
+        & "(M_max - M_min = 0; a measured table needs delta_M)", UDMAP_EINPUT)
+      return
+    end if
     F_lim = 2*(model%damper%M_max - model%damper%M_min)/(pi*model%phi_ratio)
   end subroutine limit_force
+
+  !> F_lim for the classification of results: huge when the damper has no slip moment range
+  !> (no limit known: no point is then at or above F_lim, unbounded, or HCF-admissible).
+  pure real(wp) function limit_force_or_huge(model) result(F_lim)
+    type(model_type), intent(in) :: model
+    F_lim = huge(1.0_wp)
+    if (model%damper%M_max - model%damper%M_min > 0) &
+      & F_lim = 2*(model%damper%M_max - model%damper%M_min)/(pi*model%phi_ratio)
+  end function limit_force_or_huge
 
   !> Regime of a response point: REGIME_LIMIT when F_E >= F_lim, else by gamma_P against
   !> the damper's gamma_s and gamma_b.
@@ -319,7 +335,9 @@ contains
     if (model%blade%has_stress) point%sigma_a = F_E*abs(s)
     point%u_E = F_E*abs(uE)
     point%regime = regime_of(model%damper, F_E, F_lim, point%gamma_P)
-    point%hcf_ok = F_E <= 0.5_wp*F_lim .and. point%sigma_a <= model%analysis%sigma_all
+    ! criterion (8a) cannot be checked without F_lim: not admissible then
+    point%hcf_ok = F_E <= 0.5_wp*F_lim .and. point%sigma_a <= model%analysis%sigma_all .and. &
+      & F_lim < huge(1.0_wp)
     point%unbounded = .false.
   end subroutine fill_point
 

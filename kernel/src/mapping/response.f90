@@ -10,8 +10,9 @@ module udmap_response
   use udmap_blade, only: receptances_type
   use udmap_layer, only: bare_receptances
   use udmap_root_finding, only: brent_type, brent_start, brent_next, brent_update
-  use udmap_model_data, only: model_type, point_type, limit_force, fill_point, check_forces
-  use udmap_backbone, only: ensure_table, grid_gamma, max_decades
+  use udmap_model_data, only: model_type, point_type, limit_force_or_huge, fill_point, &
+    & check_forces
+  use udmap_backbone, only: ensure_table, grid_gamma, max_decades, j_limit
   implicit none
   private
   public :: response, response_roots
@@ -47,8 +48,7 @@ contains
     if (size(F_E) == 0) return
     call ensure_table(model, error)
     if (allocated(error)) return
-    call limit_force(model, F_lim, error)
-    if (allocated(error)) return
+    F_lim = limit_force_or_huge(model)
     omega = 2*pi*f_exc
     call bare_receptances(model%bare, omega, r, error, .false.)
     if (allocated(error)) return
@@ -72,9 +72,11 @@ contains
     real(wp) :: target, found(256), a0, q0, a1, q1, u, fu, q_lo, a_lo
     logical :: more
     integer :: j, n, gpd, j_cap
+    logical :: capped
     target = F_E*abs(r%gE)
     gpd = model%analysis%grid_per_decade
-    j_cap = max_decades*gpd
+    j_cap = j_limit(model)
+    capped = j_cap < max_decades*gpd
     n = 0
     j = model%table%j_lo
     a_lo = grid_gamma(model, j)
@@ -109,10 +111,16 @@ contains
           found(n) = exp(brent%b)
         end if
       end if
-      ! above gamma_b by a decade, rising and past the target: no more roots
-      if (q1 > target .and. q1 >= q0 .and. j >= gpd) exit
+      ! above gamma_b by a decade, rising and past the target: no more roots (at the end of a
+      ! measured table without delta_M: past the target)
+      if (q1 > target .and. (capped .or. (q1 >= q0 .and. j >= gpd))) exit
       if (j >= j_cap) then
-        call fatal_error(error, "response: the amplitude exceeds 1e12 gamma_b", UDMAP_EPHYSICS)
+        if (capped) then
+          call fatal_error(error, "response: the amplitude goes beyond the damper's stiffness "// &
+            & "range (a measured table without delta_M ends at its last row)", UDMAP_EINPUT)
+        else
+          call fatal_error(error, "response: the amplitude exceeds 1e12 gamma_b", UDMAP_EPHYSICS)
+        end if
         return
       end if
       a0 = a1
