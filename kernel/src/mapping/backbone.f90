@@ -15,7 +15,7 @@
 !> Hermite interpolation between the nodes. The slope comes from the envelope theorem: at the
 !> peak d|g~|/d omega = 0, so only k moves it,
 !>   dv/du = 1 + Re( H_gg/(1 + k H_gg) dk/du ),
-!> with dk/du by a central difference of the damper's stiffness (no receptance evaluation).
+!> with dk/du from the damper's stiffness derivative (no receptance evaluation).
 !> Two Newton steps usually reach rtol = 1e-12.
 !>
 !> The peak frequency matters beyond rtol: the response curve is tangent to F_E there, and a
@@ -31,14 +31,12 @@ module udmap_backbone
   implicit none
   private
   public :: backbone_curve, backbone, ensure_table, cover_table, eval_backbone, backbone_roots
-  public :: grid_gamma, max_decades, j_limit
+  public :: grid_gamma, max_decades, j_limit, j_rising
 
   !> How far above gamma_b the grid may grow (decades) before a root is declared out of reach.
   integer, parameter :: max_decades = 12
   !> Peak tolerance of the grid nodes (which only bracket roots and start searches).
   real(wp), parameter :: table_rtol = 1.0e-7_wp
-  !> Step in ln(gamma) of the central difference of the damper stiffness.
-  real(wp), parameter :: du_fd = 1.0e-6_wp
 
 contains
 
@@ -180,13 +178,13 @@ contains
     end do
   end function interp_offset
 
-  !> d ln F_bb / d ln gamma at a layer peak (envelope theorem, see the module doc).
+  !> d ln F_bb / d ln gamma at a layer peak (envelope theorem, see the module doc), with
+  !> dk/d ln gamma = gamma dk/dgamma from the damper.
   real(wp) function backbone_slope(model, e) result(slope)
     type(model_type), intent(in) :: model
     type(backbone_eval_type), intent(in) :: e
     complex(wp) :: dk
-    dk = (model%damper%stiffness(e%gamma*exp(du_fd)) - &
-      & model%damper%stiffness(e%gamma*exp(-du_fd)))/(2*du_fd)
+    dk = e%gamma*model%damper%stiffness_derivative(e%gamma)
     slope = 1 + real(e%peak%r%gg*dk/(1 + e%k*e%peak%r%gg), wp)
   end function backbone_slope
 
@@ -212,7 +210,7 @@ contains
   end subroutine band_error
 
   !> Builds the backbone table for the damper's current revision (nodes from the stuck
-  !> range up to 10 gamma_b), unless it is up to date.
+  !> range up to the rising range above gamma_b), unless it is up to date.
   subroutine ensure_table(model, error)
     type(model_type), intent(inout) :: model
     type(error_type), allocatable, intent(out) :: error
@@ -241,7 +239,7 @@ contains
       model%table%revision = -huge(1)
       return
     end if
-    call grow_table(model, min(gpd, j_limit(model)), error)
+    call grow_table(model, min(j_rising(model), j_limit(model)), error)
     if (allocated(error)) model%table%revision = -huge(1)
   end subroutine ensure_table
 
@@ -309,11 +307,20 @@ contains
     end if
   end function j_limit
 
+  !> First grid node of the range where F_bb rises monotonically: a quarter decade above
+  !> gamma_b. Above gamma_b the loop is the base cycle with lengthened plateaus,
+  !> E = E_b + 2 Delta_M (gamma - gamma_b) with E_b <= 2 Delta_M gamma_b (the base cycle fits
+  !> in its 2 gamma_b x Delta_M box), so gamma k_Im = E/(pi gamma) rises with gamma; for the
+  !> resonant mode F_bb ~ gamma (omega_1^2 omega beta + phi_g^2 k_Im)/|phi_g phi_E| rises too.
+  pure integer function j_rising(model)
+    type(model_type), intent(in) :: model
+    j_rising = (model%analysis%grid_per_decade + 3)/4
+  end function j_rising
+
   !> Grows the table until it reaches gamma_top and, if F_max > 0, until F_bb exceeds F_max
-  !> on a rising stretch at least a decade above gamma_b (beyond which F_bb rises
-  !> monotonically: friction saturates and the response tends to the bare blade's). A damper
-  !> whose k(gamma) ends at gamma_max (measured table without delta_M) caps the grid there:
-  !> F_bb must then exceed F_max at the last node, and roots are sought below it only.
+  !> at a node of the rising range above gamma_b (j_rising) where it rises: no root lies above.
+  !> A damper whose k(gamma) ends at gamma_max (measured table without delta_M) caps the grid
+  !> there: F_bb must then exceed F_max at the last node, and roots are sought below it only.
   subroutine cover_table(model, F_max, gamma_top, error)
     type(model_type), intent(inout) :: model
     real(wp), intent(in) :: F_max, gamma_top
@@ -344,8 +351,8 @@ contains
     end if
     if (F_max <= 0) return
     associate(t => model%table)
-      do while (.not.(t%node(t%j_hi)%F_bb > F_max .and. (capped .or. (t%j_hi >= gpd .and. &
-          & t%node(t%j_hi)%F_bb >= t%node(t%j_hi - 1)%F_bb))))
+      do while (.not.(t%node(t%j_hi)%F_bb > F_max .and. (capped .or. (t%j_hi >= j_rising(model) &
+          & .and. t%node(t%j_hi)%F_bb >= t%node(t%j_hi - 1)%F_bb))))
         if (t%j_hi >= j_cap) then
           write(buf, '(es11.4)') F_max
           if (capped) then
@@ -359,7 +366,7 @@ contains
           end if
           return
         end if
-        call grow_table(model, min(t%j_hi + gpd, j_cap), error)
+        call grow_table(model, min(t%j_hi + j_rising(model), j_cap), error)
         if (allocated(error)) return
       end do
     end associate

@@ -12,7 +12,7 @@ module udmap_response
   use udmap_root_finding, only: brent_type, brent_start, brent_next, brent_update
   use udmap_model_data, only: model_type, point_type, limit_force_or_huge, fill_point, &
     & check_forces
-  use udmap_backbone, only: ensure_table, grid_gamma, max_decades, j_limit
+  use udmap_backbone, only: ensure_table, grid_gamma, max_decades, j_limit, j_rising
   implicit none
   private
   public :: response, response_roots
@@ -111,9 +111,10 @@ contains
           found(n) = exp(brent%b)
         end if
       end if
-      ! above gamma_b by a decade, rising and past the target: no more roots (at the end of a
-      ! measured table without delta_M: past the target)
-      if (q1 > target .and. (capped .or. (q1 >= q0 .and. j >= gpd))) exit
+      ! in the rising range above gamma_b (a |1 + k H_gg| tends to a with k -> 0), rising and
+      ! past the target: no more roots (at the end of a measured table without delta_M: past
+      ! the target)
+      if (q1 > target .and. (capped .or. (q1 >= q0 .and. j >= j_rising(model)))) exit
       if (j >= j_cap) then
         if (capped) then
           call fatal_error(error, "response: the amplitude goes beyond the damper's stiffness "// &
