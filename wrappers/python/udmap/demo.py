@@ -104,10 +104,13 @@ def run_demo(case=None, outdir="out/demo", forces=DEMO_FORCES, quiet: bool = Fal
         # the backbone line and the stiffness table
         finite = [p["gamma_P"] for p in points if not p["unbounded"]]
         g_top = 2 * max(finite) if finite else 10 * damper.gamma_b
-        g_line = np.geomspace(min(damper.gamma_s if damper.gamma_s > 0 else damper.gamma_b,
-                                  damper.gamma_b) * 1e-2, g_top, 240)
+        g_low = damper.gamma_s if damper.gamma_s > 0 else 1e-2 * damper.gamma_b
+        g_line = np.geomspace(min(g_low, 0.3 * min(finite)) if finite else g_low, g_top, 240)
         F_bb, f_bb = model.backbone_curve(g_line)
-        stuck_F, stuck_f = model.backbone_curve([g_line[0]])
+        stuck_F, stuck_f = model.backbone_curve([1e-3 * g_low])
+        # G1: the base cycle reached at the peak (gamma_P = gamma_b); G2: F_E = 0.5 F_lim
+        F_G1 = float(model.backbone_curve([damper.gamma_b])[0][0])
+        G1_point, G2_point = model.backbone([F_G1, 0.5 * F_lim])
         g_k = np.geomspace(1e-2 * damper.gamma_b, 1e2 * damper.gamma_b, 240)
         k = np.asarray(damper.stiffness(g_k), dtype=complex)
         bar.update()
@@ -161,7 +164,9 @@ def run_demo(case=None, outdir="out/demo", forces=DEMO_FORCES, quiet: bool = Fal
                          F_E_undamped=[p["F_E"] for p in sel0] if sel0 else None,
                          sigma_a_undamped=[p["sigma_a"] for p in sel0] if sel0 else None,
                          F_marked=[p["F_E"] for p in points if not p["unbounded"]],
-                         sigma_marked=[p["sigma_a"] for p in points if not p["unbounded"]])
+                         sigma_marked=[p["sigma_a"] for p in points if not p["unbounded"]],
+                         G1=(G1_point["F_E"], G1_point["sigma_a"]),
+                         G2=(G2_point["F_E"], G2_point["sigma_a"]))
         plots.gamma_vs_force(F_ok, [p["gamma_P"] for p, o in zip(grid_pts, ok) if o], F_lim,
                              damper.gamma_s, damper.gamma_b, out / "gamma_P_vs_F_E.png",
                              regime=[p["regime"] for p, o in zip(grid_pts, ok) if o],
@@ -180,6 +185,10 @@ def run_demo(case=None, outdir="out/demo", forces=DEMO_FORCES, quiet: bool = Fal
                "gamma_s": damper.gamma_s, "M_max": damper.M_max, "M_min": damper.M_min,
                "f1_bare": f1, "f_stuck": float(stuck_f[0]), "lift_off": bool(damper.lift_off),
                "sigma_all": a["sigma_all"],
+               "G1": {"F_E": G1_point["F_E"], "gamma_P": G1_point["gamma_P"],
+                      "sigma_a": G1_point["sigma_a"], "f_res": G1_point["f_res"]},
+               "G2": {"F_E": G2_point["F_E"], "gamma_P": G2_point["gamma_P"],
+                      "sigma_a": G2_point["sigma_a"], "f_res": G2_point["f_res"]},
                "points": [{k: p[k] for k in ("F_E", "gamma_P", "f_res", "sigma_a", "u_E", "k_re",
                                              "k_im", "regime", "regime_name", "hcf_ok",
                                              "unbounded")} for p in points]}
@@ -196,6 +205,11 @@ def print_summary(summary: dict, out: Path) -> None:
     print(f"  gamma_b  = {summary['gamma_b']:.4e} rad   gamma_s = {summary['gamma_s']:.4e} rad")
     print(f"  f bare   = {summary['f1_bare']:.3f} Hz   f stuck = {summary['f_stuck']:.3f} Hz"
           f"   lift-off: {'yes' if summary['lift_off'] else 'no'}")
+    for name in ("G1", "G2"):
+        g = summary[name]
+        s = "-" if g["sigma_a"] is None else f"{g['sigma_a'] / 1e6:.2f} MPa"
+        print(f"  {name}       : F_E = {g['F_E']:.4g} N, gamma_P = {g['gamma_P']:.4e} rad, "
+              f"sigma_a = {s}, f_res = {g['f_res']:.3f} Hz")
     print(f"  {'F_E [N]':>8} {'gamma_P [rad]':>14} {'f_res [Hz]':>11} {'sigma_a [MPa]':>13} "
           f"{'u_E [mm]':>9}  {'regime':<16} HCF")
     for p in summary["points"]:

@@ -35,7 +35,7 @@ def _force_limits(ax, F_lim: float) -> None:
     ax.axvline(0.5 * F_lim, color="k", lw=1.0, ls="--")
     ymax = ax.get_ylim()[1]
     ax.text(F_lim, ymax, r" $F_{lim}$", va="top", ha="left", fontsize=9)
-    ax.text(0.5 * F_lim, ymax, r" $0.5\,F_{lim}$ ($G_2$)", va="top", ha="left", fontsize=9)
+    ax.text(0.5 * F_lim, ymax, r"$0.5\,F_{lim}$ ", va="top", ha="right", fontsize=9)
 
 
 def _regime_dots(ax, x, y, regime) -> None:
@@ -49,9 +49,11 @@ def _regime_dots(ax, x, y, regime) -> None:
 
 def gg_diagram(F_E, sigma_a, F_lim: float, sigma_all: float, path, *, regime=None,
                F_E_undamped=None, sigma_a_undamped=None, zeta: float | None = None,
-               F_marked=None, sigma_marked=None) -> Path:
+               F_marked=None, sigma_marked=None, G1=None, G2=None) -> Path:
     """The GG design diagram (paper Fig. 12b): peak alternating stress at the witness section
-    against the proof excitation force, with F_lim, 0.5 F_lim and sigma_all marked."""
+    against the proof excitation force, with F_lim, 0.5 F_lim and sigma_all marked, and the
+    points G1 (the base cycle reached, gamma_P = gamma_b) and G2 (F_E = 0.5 F_lim) as
+    (F_E, sigma_a) pairs when given."""
     fig, ax = plt.subplots(figsize=(7.2, 5.0))
     F_E = np.asarray(F_E, float)
     s = np.asarray(sigma_a, float) / 1e6
@@ -62,13 +64,18 @@ def gg_diagram(F_E, sigma_a, F_lim: float, sigma_all: float, path, *, regime=Non
                 lw=1.3, label=r"$\zeta$ = 0")
     if F_marked is not None:
         ax.plot(F_marked, np.asarray(sigma_marked, float) / 1e6, "o", color="tab:blue", ms=4)
+    for point, name in ((G1, "$G_1$"), (G2, "$G_2$")):
+        if point is not None:
+            ax.plot(point[0], point[1] / 1e6, "s", color="k", ms=6, zorder=4)
+            ax.annotate(name, (point[0], point[1] / 1e6), textcoords="offset points",
+                        xytext=(-4, 8), ha="right", fontsize=10)
     ax.set_xlim(0, 1.2 * F_lim)
     finite = s[np.isfinite(s) & (F_E <= 1.2 * F_lim)]
     ytop = max(1.3 * sigma_all / 1e6, 1.05 * finite.max() if finite.size else 0)
     ax.set_ylim(0, ytop)
     ax.axhline(sigma_all / 1e6, color="tab:red", lw=1.2)
-    ax.text(0.01 * F_lim, sigma_all / 1e6, r"$\sigma_{a,all}$ = " + f"{sigma_all / 1e6:g} MPa",
-            color="tab:red", va="bottom", fontsize=9)
+    ax.text(1.19 * F_lim, sigma_all / 1e6, r"$\sigma_{a,all}$ = " + f"{sigma_all / 1e6:g} MPa",
+            color="tab:red", va="bottom", ha="right", fontsize=9)
     ax.axvspan(0, 0.5 * F_lim, ymax=min(sigma_all / 1e6 / ytop, 1), color="tab:green",
                alpha=0.07, lw=0)
     _force_limits(ax, F_lim)
@@ -83,21 +90,21 @@ def gamma_vs_force(F_E, gamma_P, F_lim: float, gamma_s: float, gamma_b: float, p
     """Peak platform rotation against the proof force (paper Fig. 11b), log-log: the stuck
     range is a straight line of slope 1."""
     fig, ax = plt.subplots(figsize=(7.2, 5.0))
-    ax.loglog(F_E, gamma_P, "-", color="tab:blue", lw=1.6, label=r"$\zeta$ of the case")
+    ax.loglog(F_E, gamma_P, "-", color="0.15", lw=0.8, label=r"$\zeta$ of the case")
     if F_E_undamped is not None:
         ax.loglog(F_E_undamped, gamma_undamped, "--", color="0.35", lw=1.3, label=r"$\zeta$ = 0")
     if regime is not None:
         _regime_dots(ax, F_E, gamma_P, regime)
-    for value, name, ls in ((gamma_b, r"$\gamma_b$ (base cycle)", "-."),
-                            (gamma_s, r"$\gamma_s$ (end of stick)", ":")):
+    for value, name, ls, va in ((gamma_b, r"$\gamma_b$ (base cycle)", "-.", "bottom"),
+                                (gamma_s, r"$\gamma_s$ (end of stick)", ":", "top")):
         if value and value > 0:
             ax.axhline(value, color="tab:purple", lw=1.0, ls=ls)
-            ax.text(ax.get_xlim()[0], value, " " + name, color="tab:purple", va="bottom",
+            ax.text(ax.get_xlim()[1], value, name + " ", color="tab:purple", va=va, ha="right",
                     fontsize=9)
     _force_limits(ax, F_lim)
     ax.set_xlabel(r"proof excitation force $F_E$ [N]")
     ax.set_ylabel(r"peak platform rotation $\gamma_P$ [rad]")
-    ax.legend(loc="lower right", fontsize=8)
+    ax.legend(loc="upper left", fontsize=8)
     return _finish(fig, ax, path, r"Damper performance curve: $\gamma_P$ at resonance")
 
 
@@ -109,15 +116,15 @@ def fres_vs_force(F_E, f_res, F_lim: float, path, *, f_stuck=None, f_bare=None,
     ax.semilogx(F_E, f_res, "-", color="tab:blue", lw=1.6, label=r"$\zeta$ of the case")
     if F_E_undamped is not None:
         ax.semilogx(F_E_undamped, f_undamped, "--", color="0.35", lw=1.3, label=r"$\zeta$ = 0")
-    for value, name in ((f_stuck, "stuck damper"), (f_bare, "bare blade")):
+    for value, name, va in ((f_stuck, "stuck damper", "bottom"), (f_bare, "bare blade", "top")):
         if value:
             ax.axhline(value, color="tab:purple", lw=0.9, ls=":")
             ax.text(ax.get_xlim()[0], value, " " + name + f" {value:.2f} Hz", color="tab:purple",
-                    va="bottom", fontsize=9)
+                    va=va, fontsize=9)
     _force_limits(ax, F_lim)
     ax.set_xlabel(r"proof excitation force $F_E$ [N]")
     ax.set_ylabel(r"resonance frequency $f_{res}$ [Hz]")
-    ax.legend(loc="lower left", fontsize=8)
+    ax.legend(loc="center left", fontsize=8)
     return _finish(fig, ax, path, "Resonance frequency of the damped blade")
 
 
@@ -146,7 +153,7 @@ def response_curves(curves, backbone_points, f_min: float, f_max: float, path, *
     ax.set_xlim(f_min, f_max)
     ax.set_xlabel("excitation frequency $f$ [Hz]")
     ax.set_ylabel(r"platform rotation amplitude $\gamma_P$ [rad]")
-    ax.legend(loc="upper right", fontsize=8, ncol=2)
+    ax.legend(loc="upper left", fontsize=8, ncol=2)
     return _finish(fig, ax, path, "Non-linear response curves (amplitude layered force mapping)")
 
 
