@@ -139,6 +139,12 @@ program test_mapping_backbone
   call check_band(200.0_wp, 260.0_wp, "below the band")
   call check_band(120.0_wp, 180.0_wp, "above the band")
 
+  ! ---- a band holding a second bare mode is refused (the backbone follows mode 1)
+  fine = analysis
+  fine%f_max = 1200
+  call new_model(model_fine, blade, damper, fine, error)
+  call check_error(suite, "second mode in band", error, UDMAP_EINPUT, "bare mode")
+
   ! ---- zeta = 0: F_bb tends to F_lim, unbounded at and above F_lim
   params%zeta = 0
   call new_beam_blade(blade0, params, error)

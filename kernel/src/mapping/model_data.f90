@@ -168,6 +168,8 @@ contains
     type(analysis_type), intent(in) :: analysis
     type(error_type), allocatable, intent(out) :: error
     real(wp) :: phi_g, phi_E
+    integer :: r
+    character(len=32) :: buf
     associate(a => analysis)
       if (.not.(a%f_min > 0 .and. a%f_min < huge(1.0_wp))) then
         call fatal_error(error, "analysis: f_min must be a positive number [Hz]", UDMAP_EINPUT)
@@ -227,6 +229,17 @@ contains
       return
     end if
     model%phi_ratio = abs(phi_E/phi_g)
+    ! the backbone follows the resonance of mode 1: a second bare mode inside the band would
+    ! make "the maximum over the band" jump between resonances
+    do r = 2, size(blade%omega)
+      if (blade%omega(r) >= model%omega_lo .and. blade%omega(r) <= model%omega_hi) then
+        write(buf, '(g0.6)') blade%omega(r)/(2*pi)
+        call fatal_error(error, "analysis: the band [f_min, f_max] contains the bare mode "// &
+          & "at "//trim(buf)//" Hz besides mode 1; the mapping follows the first-mode "// &
+          & "resonance: narrow the band", UDMAP_EINPUT)
+        return
+      end if
+    end do
     if (blade%explicit_C .and. allocated(blade%C)) then
       model%c1 = dot_product(blade%phi(:, 1), matmul(blade%C, blade%phi(:, 1)))
       model%undamped = all(blade%C == 0)
