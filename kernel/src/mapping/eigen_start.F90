@@ -430,9 +430,11 @@ contains
       end do
     end subroutine band_mass
 #else
+    character(len=12) :: buf
     lambda = k
+    write(buf, '(i0)') blade%ndof
     call fatal_error(error, "eigenvalue start: this build has no ARPACK for banded models "// &
-      & "(use the modal start)", UDMAP_EINPUT)
+      & "(ndof = "//trim(buf)//"; use the modal start)", UDMAP_EINPUT)
 #endif
   end subroutine band_eigen
 end module udmap_eigen_start
