@@ -54,6 +54,8 @@ contains
     analysis%sweep_points = a%sweep_points
   end subroutine udmap_analysis_defaults
 
+  !> int udmap_new_model(error, blade, damper, const udmap_analysis *, udmap_model *): couples the
+  !> blade and damper handles (borrowed) over the band.
   function udmap_new_model(errh, bladeh, damperh, analysis, modelh) result(stat) &
       & bind(C, name="udmap_new_model")
     type(c_ptr), value :: errh, bladeh, damperh
@@ -93,6 +95,7 @@ contains
     stat = set_error(errh, error)
   end function udmap_new_model
 
+  !> void udmap_delete_model(udmap_model *): frees the model (not the blade or damper).
   subroutine udmap_delete_model(modelh) bind(C, name="udmap_delete_model")
     type(c_ptr), intent(inout) :: modelh
     type(c_model_type), pointer :: m
@@ -103,6 +106,7 @@ contains
     end if
   end subroutine udmap_delete_model
 
+  !> int udmap_model_set_damper(error, model, damper): couples another damper.
   function udmap_model_set_damper(errh, modelh, damperh) result(stat) &
       & bind(C, name="udmap_model_set_damper")
     type(c_ptr), value :: errh, modelh, damperh
@@ -124,6 +128,7 @@ contains
     stat = set_error(errh, error)
   end function udmap_model_set_damper
 
+  !> int udmap_model_limit_force(error, model, double *F_lim) [N].
   function udmap_model_limit_force(errh, modelh, F_lim) result(stat) &
       & bind(C, name="udmap_model_limit_force")
     type(c_ptr), value :: errh, modelh
@@ -144,6 +149,8 @@ contains
     stat = set_error(errh, error)
   end function udmap_model_limit_force
 
+  !> int udmap_model_backbone_curve(error, model, n, gamma, F_bb, f_res): F_bb [N] and the
+  !> peak frequency [Hz] at n amplitudes [rad].
   function udmap_model_backbone_curve(errh, modelh, n, gamma, F_bb, f_res) result(stat) &
       & bind(C, name="udmap_model_backbone_curve")
     type(c_ptr), value :: errh, modelh
@@ -193,6 +200,7 @@ contains
     if (nr > 0) c%roots(1:nr) = p%roots(size(p%roots) - nr + 1:)
   end subroutine to_c_point
 
+  !> int udmap_model_backbone(error, model, n, F_E, udmap_point *): the n resonance peaks.
   function udmap_model_backbone(errh, modelh, n, F_E, points) result(stat) &
       & bind(C, name="udmap_model_backbone")
     type(c_ptr), value :: errh, modelh
@@ -221,6 +229,8 @@ contains
     stat = set_error(errh, error)
   end function udmap_model_backbone
 
+  !> int udmap_model_response(error, model, f_exc, n, F_E, udmap_point *): the response at
+  !> f_exc [Hz].
   function udmap_model_response(errh, modelh, f_exc, n, F_E, points) result(stat) &
       & bind(C, name="udmap_model_response")
     type(c_ptr), value :: errh, modelh
@@ -250,6 +260,8 @@ contains
     stat = set_error(errh, error)
   end function udmap_model_response
 
+  !> int udmap_model_curves(error, model, n, F_E, layers): computes and keeps the response
+  !> curves of n forces.
   function udmap_model_curves(errh, modelh, n, F_E, layers) result(stat) &
       & bind(C, name="udmap_model_curves")
     type(c_ptr), value :: errh, modelh
@@ -292,6 +304,7 @@ contains
     end if
   end subroutine get_curve
 
+  !> int udmap_model_curve_size(error, model, i, int *npoints): points of kept curve i (0-based).
   function udmap_model_curve_size(errh, modelh, i, npoints) result(stat) &
       & bind(C, name="udmap_model_curve_size")
     type(c_ptr), value :: errh, modelh
@@ -306,6 +319,8 @@ contains
     stat = set_error(errh, error)
   end function udmap_model_curve_size
 
+  !> int udmap_model_curve_get(error, model, i, npoints, f_hz, gamma_P, sigma_a, branch, part):
+  !> copies kept curve i (0-based).
   function udmap_model_curve_get(errh, modelh, i, npoints, f_hz, gamma_P, sigma_a, branch, &
       & part) result(stat) bind(C, name="udmap_model_curve_get")
     type(c_ptr), value :: errh, modelh

@@ -105,6 +105,7 @@ contains
       n = 2*n - 1
     end do
   contains
+    !> Sample j's frequency (the last one exactly omega_hi).
     pure real(wp) function sample(j)
       integer, intent(in) :: j
       sample = omega_lo + (j - 1)*band%h
@@ -112,6 +113,7 @@ contains
     end function sample
   end subroutine new_band_receptances
 
+  !> The five receptances and their derivatives as arrays.
   pure subroutine unpack(r, v, dv)
     type(receptances_type), intent(in) :: r
     complex(wp), intent(out) :: v(5), dv(5)

@@ -262,6 +262,7 @@ contains
     end do
     end associate
   contains
+    !> A crossing of the level between (xa, aa) and (xb, ab), refined and pushed.
     subroutine try(xa, aa, xb, ab, kind)
       real(wp), intent(in) :: xa, aa, xb, ab
       integer, intent(in) :: kind
@@ -398,6 +399,7 @@ contains
     end do
     call move()
   contains
+    !> Appends the points `which` of the list to the curve, tagged with their part.
     subroutine take(which, part)
       integer, intent(in) :: which(:), part
       f = [f, L%omega(which)/(2*pi)]
@@ -406,6 +408,7 @@ contains
       br = [br, L%kind(which)]
       pt = [pt, spread(part, 1, size(which))]
     end subroutine take
+    !> Moves the assembled arrays into the curve.
     subroutine move()
       call move_alloc(f, curve%f)
       call move_alloc(g, curve%gamma_P)

@@ -46,6 +46,7 @@ module udmap_eigen_start
 
 #ifdef UDMAP_WITH_ARPACK
   interface
+    !> ARPACK reverse-communication Arnoldi (complex).
     subroutine znaupd(ido, bmat, n, which, nev, tol, resid, ncv, v, ldv, iparam, ipntr, &
         & workd, workl, lworkl, rwork, info)
       import :: wp
@@ -59,6 +60,7 @@ module udmap_eigen_start
       integer, intent(inout) :: iparam(11), ipntr(14)
       real(wp), intent(inout) :: rwork(*)
     end subroutine znaupd
+    !> ARPACK eigenvalues (and vectors) after znaupd.
     subroutine zneupd(rvec, howmny, select, d, z, ldz, sigma, workev, bmat, n, which, nev, &
         & tol, resid, ncv, v, ldv, iparam, ipntr, workd, workl, lworkl, rwork, info)
       import :: wp
@@ -279,6 +281,7 @@ contains
     end if
   end subroutine direct_eigen_start
 
+  !> zggev on the dense pencil (K + k e_g e_g^T, M); the finite eigenvalue nearest omega_1^2.
   subroutine dense_eigen(blade, k, lambda, error)
     type(blade_type), intent(in) :: blade
     complex(wp), intent(in) :: k
@@ -319,6 +322,8 @@ contains
     end if
   end subroutine dense_eigen
 
+  !> ARPACK shift-invert about omega_1^2 on the band matrices, complex band LU (zgbtrf) of
+  !> K + k e_g e_g^T - sigma M; the converged eigenvalue nearest the shift.
   subroutine band_eigen(blade, k, lambda, error)
     type(blade_type), intent(in) :: blade
     complex(wp), intent(in) :: k

@@ -250,6 +250,7 @@ contains
 
   contains
 
+    !> psi and the receptances at s = omega^2 (kept in a small cache of recent points).
     subroutine evaluate(s, psi, rs)
       real(wp), intent(in) :: s
       real(wp), intent(out) :: psi

@@ -133,6 +133,7 @@ contains
     end if
     roots = found(1:n)
   contains
+    !> q(a) = a |1 + k(a) H_gg|.
     real(wp) function q(a)
       real(wp), intent(in) :: a
       q = a*abs(1 + model%damper%stiffness(a)*r%gg)
