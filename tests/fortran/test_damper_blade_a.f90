@@ -149,6 +149,20 @@ program test_damper_blade_a
     end if
   end do
   call check_true(suite, "k(1 rad) small", abs(d%stiffness(1.0_wp)) < 1e-2_wp*d%k_stuck)
+  ! Elemental over arrays; no NaN for degenerate amplitudes.
+  block
+    real(wp) :: ga(4)
+    complex(wp) :: ka(4)
+    ga = [0.5_wp, 0.8_wp, 0.95_wp, 4.0_wp]*gb
+    ka = d%stiffness(ga)
+    do i = 1, 4
+      call check_true(suite, "elemental stiffness", ka(i) == d%stiffness(ga(i)))
+    end do
+    k = d%stiffness(-1.0_wp)
+    call check_true(suite, "gamma <= 0 gives the small-amplitude limit", k == d%stiffness(1e-12_wp))
+    k = d%stiffness(huge(1.0_wp))
+    call check_true(suite, "huge gamma gives finite k", abs(k) < 1 .and. real(k) == real(k))
+  end block
   ! k continuous at gamma_s and gamma_b.
   call check_complex(suite, "continuous at gamma_s", d%stiffness(d%gamma_s*(1 - 1e-12_wp)), &
     & d%stiffness(d%gamma_s*(1 + 1e-12_wp)), 1e-9_wp)

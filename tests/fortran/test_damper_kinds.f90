@@ -88,6 +88,12 @@ program test_damper_kinds
   k2 = t%stiffness(3.3_wp*(1 + 1e-7_wp))
   call check_close(suite, "table dk_Re", real(t%stiffness_derivative(3.3_wp), wp), &
     & real(k2 - k1, wp)/(2e-7_wp*3.3_wp), 1e-6_wp)
+  k1 = t%stiffness(30.0_wp*(1 - 1e-7_wp))
+  k2 = t%stiffness(30.0_wp*(1 + 1e-7_wp))
+  call check_close(suite, "table extrapolated dk_Re", real(t%stiffness_derivative(30.0_wp), wp), &
+    & real(k2 - k1, wp)/(2e-7_wp*30), 1e-6_wp)
+  call check_close(suite, "table extrapolated dk_Im", aimag(t%stiffness_derivative(30.0_wp)), &
+    & aimag(k2 - k1)/(2e-7_wp*30), 1e-6_wp)
   call new_table_damper(t, g, kre, kim, error)
   call check_true(suite, "table without delta_M ends at its last row", t%gamma_max == g(40))
   call check_close(suite, "table without delta_M: gamma_s", t%gamma_s, g(count(g <= 1.5_wp)), 1e-15_wp)

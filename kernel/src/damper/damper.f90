@@ -149,7 +149,11 @@ contains
     complex(wp) :: k
     select case (self%kind)
     case (DAMPER_ASYMMETRIC)
-      k = table_stiffness(self%table, gamma/self%CF_scale)
+      if (gamma > 0) then
+        k = table_stiffness(self%table, gamma/self%CF_scale)
+      else
+        k = self%table%k_small
+      end if
     case (DAMPER_JENKINS)
       k = jenkins_stiffness(self%kt, self%M_slip, gamma)
     case (DAMPER_TABLE)
@@ -167,7 +171,8 @@ contains
     complex(wp) :: dk
     select case (self%kind)
     case (DAMPER_ASYMMETRIC)
-      dk = table_stiffness_derivative(self%table, gamma/self%CF_scale)/self%CF_scale
+      dk = 0
+      if (gamma > 0) dk = table_stiffness_derivative(self%table, gamma/self%CF_scale)/self%CF_scale
     case (DAMPER_JENKINS)
       dk = jenkins_stiffness_derivative(self%kt, self%M_slip, gamma)
     case (DAMPER_TABLE)
@@ -286,7 +291,9 @@ contains
     class(damper_type), intent(in) :: self
     real(wp), intent(in) :: gamma
     complex(wp) :: k
-    if (self%kind == DAMPER_ASYMMETRIC) then
+    if (self%kind == DAMPER_ASYMMETRIC .and. .not. (gamma > 0)) then
+      k = self%table%k_small
+    else if (self%kind == DAMPER_ASYMMETRIC) then
       k = table_stiffness_exact(self%table, gamma/self%CF_scale)
     else
       k = self%stiffness(gamma)

@@ -286,10 +286,11 @@ contains
         k_re = k_re + base%c_v(v)*h_value(x, 1 - x)
       end do
     end if
+    ! E(p)/(pi p^2) written so that no intermediate overflows at huge p.
     dM2 = 2*(base%M_max - base%M_min)
-    E = base%E0 + dM2*p
-    k = cmplx(k_re, E/(pi*p**2), wp)
-    if (present(dk)) dk = cmplx(dk_re, dM2/(pi*p**2) - 2*E/(pi*p**3), wp)
+    E = base%E0/p + dM2
+    k = cmplx(k_re, E/(pi*p), wp)
+    if (present(dk)) dk = cmplx(dk_re, -((dM2 + 2*base%E0/p)/(pi*p))/p, wp)
   end subroutine elongated_stiffness
 
   !> k(p) and dk/dp of `loop` at amplitude p, its vertices moved affinely from loop%p0 (exact

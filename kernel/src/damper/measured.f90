@@ -102,7 +102,7 @@ contains
         g = tab%gamma(n)
         E_last = pi*g**2*tab%k_im(n)
         k = cmplx(tab%k_re(n)*(g/gamma)**1.5_wp, &
-          & (E_last + 2*tab%delta_M*(gamma - g))/(pi*gamma**2), wp)
+          & (E_last/gamma + 2*tab%delta_M*(1 - g/gamma))/(pi*gamma), wp)
       else
         k = cmplx(tab%k_re(n), tab%k_im(n), wp)
       end if
@@ -127,8 +127,8 @@ contains
       if (tab%has_delta_M) then
         g = tab%gamma(n)
         E_last = pi*g**2*tab%k_im(n)
-        dk = cmplx(-1.5_wp*tab%k_re(n)*g**1.5_wp/gamma**2.5_wp, &
-          & 2*tab%delta_M/(pi*gamma**2) - 2*(E_last + 2*tab%delta_M*(gamma - g))/(pi*gamma**3), wp)
+        dk = cmplx(-1.5_wp*tab%k_re(n)*(g/gamma)**1.5_wp/gamma, &
+          & -((2*tab%delta_M*(1 - 2*g/gamma) + 2*E_last/gamma)/(pi*gamma))/gamma, wp)
       else
         dk = 0
       end if
