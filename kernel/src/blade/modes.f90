@@ -26,8 +26,11 @@ module udmap_modes
 contains
 
   !> All modes of the dense pencil (K, M): lambda = omega^2 ascending, phi mass-normalised.
-  subroutine all_modes(k, m, lambda, phi, error)
+  !> The lowest `npolish` are polished (see polish); the others keep the accuracy of the
+  !> inverted pencil, absolute eps mu_1 in mu = 1/lambda.
+  subroutine all_modes(k, m, npolish, lambda, phi, error)
     real(wp), intent(in) :: k(:, :), m(:, :)
+    integer, intent(in) :: npolish
     real(wp), allocatable, intent(out) :: lambda(:), phi(:, :)
     type(error_type), allocatable, intent(out) :: error
     real(wp), allocatable :: a(:, :), b(:, :), mu(:), work(:), x(:, :)
@@ -56,16 +59,23 @@ contains
       return
     end if
     ! z^T K z = 1 and z^T M z = mu: phi = z/sqrt(mu), lambda = 1/mu; largest mu first.
-    allocate(x(n, n))
+    allocate(x(n, n), lambda(n))
     do r = 1, n
       x(:, r) = a(:, n+1-r)/sqrt(mu(n+1-r))
+      lambda(r) = 1.0_wp/mu(n+1-r)
     end do
+    deallocate(a)
     block
-      real(wp), allocatable :: none(:, :), kk(:, :), mm(:, :)
+      real(wp), allocatable :: none(:, :), kk(:, :), mm(:, :), lp(:), pp(:, :)
+      integer :: np
+      np = max(1, min(n, npolish))
       allocate(kk, source=k)
       allocate(mm, source=m)
-      call polish(kk, none, mm, none, 0, x, n, lambda, phi)
+      call polish(kk, none, mm, none, 0, x, lambda, np, lp, pp)
+      lambda(1:np) = lp
+      x(:, 1:np) = pp
     end block
+    call move_alloc(x, phi)
   end subroutine all_modes
 
   !> The lowest p modes by subspace iteration on A = K^-1 M (M-self-adjoint, eigenvalues
@@ -150,7 +160,7 @@ contains
         & UDMAP_ENUMERIC)
       return
     end if
-    call polish(k, kb, m, mb, kd, x, p, lambda, phi)
+    call polish(k, kb, m, mb, kd, x, 1.0_wp/mu, p, lambda, phi)
 
   contains
 
@@ -194,36 +204,41 @@ contains
     end subroutine orthonormalize
   end subroutine lowest_modes
 
-  !> Polishes approximate eigenvectors x (n, q), M-orthonormal, through their exact coupling by
-  !> K: with K_r = X^T K X (K X accumulated in extended precision, where it cancels digits),
-  !> phi_j = x_j + sum_(i /= j) x_i K_r,ij/(K_r,jj - K_r,ii) for j <= p, lambda_j = K_r,jj (the
-  !> Rayleigh quotient, second-order accurate), then mass-normalised. Eigenvectors from the
-  !> inverted pencil carry errors ~ eps mu_1/gap, large for the higher modes; this removes them
-  !> to second order. Pairs too close for a first-order step are left alone.
-  subroutine polish(k, kb, m, mb, kd, x, p, lambda, phi)
+  !> Polishes the first p of the approximate eigenvectors x (n, q), M-orthonormal, with
+  !> eigenvalue estimates lam(q), through their exact coupling by K: with K_r = X^T K x_j (K x_j
+  !> accumulated in extended precision, where it cancels digits),
+  !> phi_j = x_j + sum_(i /= j) x_i K_r,ij/(K_r,jj - d_i), d_i = K_r,ii for i <= p else lam(i),
+  !> lambda_j = K_r,jj (the Rayleigh quotient, second-order accurate), then mass-normalised.
+  !> Eigenvectors of the inverted pencil carry errors ~ eps mu_1/gap, large for the higher
+  !> modes; this removes them to second order. Pairs too close for a first-order step are left.
+  subroutine polish(k, kb, m, mb, kd, x, lam, p, lambda, phi)
     real(wp), allocatable, intent(in) :: k(:, :), kb(:, :), m(:, :), mb(:, :)
     integer, intent(in) :: kd, p
-    real(wp), intent(in) :: x(:, :)
+    real(wp), intent(in) :: x(:, :), lam(:)
     real(wp), allocatable, intent(out) :: lambda(:), phi(:, :)
     real(xp), allocatable :: xq(:), yq(:)
-    real(wp), allocatable :: kx(:, :), kr(:, :), mphi(:)
+    real(wp), allocatable :: kx(:, :), kr(:, :), mphi(:), d(:)
     integer :: i, j, n, nq
     n = size(x, 1)
     nq = size(x, 2)
-    allocate(xq(n), yq(n), kx(n, nq), mphi(n), lambda(p))
-    do j = 1, nq
+    allocate(xq(n), yq(n), kx(n, p), mphi(n), lambda(p), d(nq))
+    do j = 1, p
       xq = real(x(:, j), xp)
       call sym_matvec_xp(k, kb, kd, xq, yq)
       kx(:, j) = real(yq, wp)
     end do
     kr = matmul(transpose(x), kx)
+    d = lam
+    do j = 1, p
+      d(j) = kr(j, j)
+    end do
     allocate(phi, source=x(:, 1:p))
     do j = 1, p
       lambda(j) = kr(j, j)
       do i = 1, nq
         if (i == j) cycle
-        if (abs(kr(i, j)) < 0.1_wp*abs(kr(j, j) - kr(i, i))) &
-          & phi(:, j) = phi(:, j) + x(:, i)*(kr(i, j)/(kr(j, j) - kr(i, i)))
+        if (abs(kr(i, j)) < 0.1_wp*abs(d(j) - d(i))) &
+          & phi(:, j) = phi(:, j) + x(:, i)*(kr(i, j)/(d(j) - d(i)))
       end do
       call sym_matvec(m, mb, kd, phi(:, j), mphi)
       phi(:, j) = phi(:, j)/sqrt(dot_product(phi(:, j), mphi))
