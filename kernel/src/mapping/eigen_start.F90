@@ -379,11 +379,11 @@ contains
       select case (ido)
       case (-1)
         call band_mass(workd(ipntr(1):ipntr(1) + n - 1), x)
-        call zgbtrs('N', n, kd, kd, 1, ab, ldab, ipiv, x, n, info)
+        call refined_solve(x)
         workd(ipntr(2):ipntr(2) + n - 1) = x
       case (1)
         x = workd(ipntr(3):ipntr(3) + n - 1)
-        call zgbtrs('N', n, kd, kd, 1, ab, ldab, ipiv, x, n, info)
+        call refined_solve(x)
         workd(ipntr(2):ipntr(2) + n - 1) = x
       case (2)
         call band_mass(workd(ipntr(1):ipntr(1) + n - 1), x)
@@ -420,6 +420,36 @@ contains
       end if
     end do
   contains
+    !> x <- (A - sigma M)^-1 x by the band LU and two steps of iterative refinement with the
+    !> residual in quadruple precision: the shifted stiffness of a fine mesh has a condition
+    !> number near 1/eps (omega_max^2/omega_1^2), so a plain double solve loses the low mode.
+    subroutine refined_solve(xb)
+      complex(wp), intent(inout) :: xb(:)
+      integer, parameter :: qp = selected_real_kind(30)
+      complex(wp) :: y(n), dy(n)
+      complex(qp) :: res(n), aij, sq, kq
+      integer :: ii, jj, step, inf
+      y = xb
+      call zgbtrs('N', n, kd, kd, 1, ab, ldab, ipiv, y, n, inf)
+      sq = cmplx(sigma, kind=qp)
+      kq = cmplx(k, kind=qp)
+      do step = 1, 2
+        res = cmplx(xb, kind=qp)
+        do jj = 1, n
+          do ii = max(1, jj - kd), jj
+            aij = real(blade%Kb(kd + 1 + ii - jj, jj), qp) - sq*real(blade%Mb(kd + 1 + ii - jj, jj), qp)
+            res(ii) = res(ii) - aij*cmplx(y(jj), kind=qp)
+            if (ii /= jj) res(jj) = res(jj) - aij*cmplx(y(ii), kind=qp)
+          end do
+        end do
+        res(g) = res(g) - kq*cmplx(y(g), kind=qp)
+        dy = cmplx(res, kind=wp)
+        call zgbtrs('N', n, kd, kd, 1, ab, ldab, ipiv, dy, n, inf)
+        y = y + dy
+      end do
+      xb = y
+    end subroutine refined_solve
+
     !> y = M x with M in symmetric upper band storage.
     subroutine band_mass(xin, y)
       complex(wp), intent(in) :: xin(:)
