@@ -8,10 +8,10 @@ program test_mapping_blade_a
   use udmap_blade, only: blade_type, receptances_type, new_beam_blade
   use udmap_beam, only: beam_params_type
   use udmap_damper, only: damper_type, new_asymmetric_damper
-  use udmap_damper_params, only: blade_a_damper_params
+  use udmap_damper_params, only: blade_a_damper_params, asymmetric_params_type
   use udmap_eigen_start, only: direct_eigen_start
   use udmap_model, only: model_type, analysis_type, point_type, new_model, set_damper, &
-    & limit_force, backbone, backbone_curve, REGIME_STUCK, REGIME_PARTIAL_SLIP
+    & limit_force, backbone, backbone_curve, response, REGIME_STUCK, REGIME_PARTIAL_SLIP
   use testing, only: test_suite, check_close, check_true, check_no_error, finish
   implicit none
   type(test_suite) :: suite
@@ -22,6 +22,7 @@ program test_mapping_blade_a
   type(error_type), allocatable :: error
   type(point_type), allocatable :: points(:), again(:), points_fine(:)
   type(beam_params_type) :: params
+  type(asymmetric_params_type) :: dparams
   real(wp), allocatable :: gam(:), F_bb(:), f_res(:)
   real(wp) :: F_lim, F, dF, w, worst, F_bb1(1), f_res1(1), stuck_Fbb(2), stuck_freq(2)
   complex(wp) :: k, lambda
@@ -120,6 +121,29 @@ program test_mapping_blade_a
   call check_no_error(suite, "undamped backbone curve", error)
   call check_true(suite, "F_bb(1e3 gamma_b) within 0.5% of F_lim", abs(F_bb1(1)/F_lim - 1) <= 5e-3_wp)
   call check_true(suite, "F_bb(1e3 gamma_b) below F_lim", F_bb1(1) < F_lim)
+
+  ! a damper with lift-off (mu = 0.6) dissipates less than 2 Delta_M per unit rotation at large
+  ! amplitude, so without damping F_bb saturates below F_lim: forces above its asymptote are
+  ! unbounded too, forces below it are not
+  dparams = blade_a_damper_params()
+  dparams%mu = 0.6_wp
+  call new_asymmetric_damper(damper2, dparams, error)
+  call check_true(suite, "lift-off damper", damper2%lift_off)
+  call set_damper(model0, damper2, error)
+  call limit_force(model0, F_lim, error)
+  call backbone_curve(model0, [1e6_wp*damper2%gamma_b], F_bb1, f_res1, error)
+  call backbone(model0, [0.3_wp*F_lim, 0.95_wp*F_bb1(1), 1.05_wp*F_bb1(1), 0.9_wp*F_lim], &
+    & again, error)
+  call check_no_error(suite, "lift-off backbone", error)
+  call check_true(suite, "bounded below the asymptote", .not.any(again(1:2)%unbounded))
+  call check_true(suite, "unbounded above the asymptote", all(again(3:4)%unbounded))
+  ! the response at the peak frequency has the three roots of the overhang, the peak among them
+  call set_damper(model, damper2, error)
+  call backbone(model, [0.5_wp*F_lim], points, error)
+  call response(model, points(1)%f_res, [0.5_wp*F_lim], again, error)
+  call check_no_error(suite, "lift-off response", error)
+  call check_true(suite, "three roots at the peak frequency", size(again(1)%roots) == 3)
+  call check_close(suite, "the peak is the largest", again(1)%gamma_P, points(1)%gamma_P, 1e-9_wp)
   call finish(suite)
 
 contains

@@ -174,7 +174,8 @@ typedef struct {
   double k_re, k_im; /* damper stiffness at gamma_P [N m/rad] */
   int regime;      /* 0 stuck, 1 partial slip, 2 full slip, 3 at or above F_lim */
   int hcf_ok;      /* F_E <= 0.5 F_lim and sigma_a <= sigma_all */
-  int unbounded;   /* zeta = 0 and F_E >= F_lim: no finite response; numbers are 0 */
+  int unbounded;   /* zeta = 0 and F_E >= F_lim (or above the backbone's asymptote, if that is
+                      lower, e.g. with lift-off): no finite response; numbers are 0, regime 3 */
   int nroots;      /* number of gamma_P roots (all in roots[], ascending; beyond
                       UDMAP_MAX_ROOTS the largest ones) */
   double roots[UDMAP_MAX_ROOTS];

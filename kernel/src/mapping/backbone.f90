@@ -321,10 +321,13 @@ contains
   !> at a node of the rising range above gamma_b (j_rising) where it rises: no root lies above.
   !> A damper whose k(gamma) ends at gamma_max (measured table without delta_M) caps the grid
   !> there: F_bb must then exceed F_max at the last node, and roots are sought below it only.
-  subroutine cover_table(model, F_max, gamma_top, error)
+  subroutine cover_table(model, F_max, gamma_top, error, reached)
     type(model_type), intent(inout) :: model
     real(wp), intent(in) :: F_max, gamma_top
     type(error_type), allocatable, intent(out) :: error
+    !> When present, F_max not reached below 1e12 gamma_b is reported here (.false.) instead
+    !> of as an error (the table then ends at the cap).
+    logical, intent(out), optional :: reached
     integer :: gpd, j_cap, j_need
     logical :: capped
     character(len=32) :: buf
@@ -349,6 +352,7 @@ contains
       call grow_table(model, j_need, error)
       if (allocated(error)) return
     end if
+    if (present(reached)) reached = .true.
     if (F_max <= 0) return
     associate(t => model%table)
       do while (.not.(t%node(t%j_hi)%F_bb > F_max .and. (capped .or. (t%j_hi >= j_rising(model) &
@@ -359,10 +363,11 @@ contains
             call fatal_error(error, "backbone: the response to F_E = "//trim(adjustl(buf))// &
               & " N goes beyond the damper's stiffness range (a measured table without "// &
               & "delta_M ends at its last row)", UDMAP_EINPUT)
+          else if (present(reached)) then
+            reached = .false.
           else
             call fatal_error(error, "backbone: F_E = "//trim(adjustl(buf))//" N is not "// &
-              & "reached below 1e12 gamma_b (F_E is too close to F_lim without structural "// &
-              & "damping)", UDMAP_EPHYSICS)
+              & "reached below 1e12 gamma_b", UDMAP_EPHYSICS)
           end if
           return
         end if
@@ -565,7 +570,8 @@ contains
 
   !> The peaks of the non-linear response for the forces F_E [N] (PHYSICS.md 4): every root
   !> of F_bb(gamma) = F_E, the largest giving gamma_P and the outputs at its frequency. Without
-  !> structural damping a force at or above F_lim gives an unbounded point.
+  !> structural damping a force at or above F_lim, or one that F_bb does not reach below
+  !> 1e12 gamma_b, gives an unbounded point (regime REGIME_LIMIT, numbers 0, no roots).
   subroutine backbone(model, F_E, points, error)
     type(model_type), intent(inout) :: model
     real(wp), intent(in) :: F_E(:)
@@ -573,7 +579,8 @@ contains
     type(error_type), allocatable, intent(out) :: error
     type(backbone_eval_type) :: e
     real(wp), allocatable :: roots(:)
-    real(wp) :: F_lim, F_max
+    real(wp) :: F_lim, F_max, F_reach
+    logical :: reached
     integer :: i
     allocate(points(size(F_E)))
     call check_forces(F_E, "backbone", error)
@@ -582,14 +589,24 @@ contains
     call ensure_table(model, error)
     if (allocated(error)) return
     F_lim = limit_force_or_huge(model)
+    ! without structural damping friction bounds the response only below the asymptote of
+    ! F_bb: F_lim in theory, lower when the damper dissipates less than 2 Delta_M per unit
+    ! rotation at large amplitude (e.g. with lift-off); forces F_bb never reaches are unbounded
     F_max = 0
     do i = 1, size(F_E)
       if (.not.(model%undamped .and. F_E(i) >= F_lim)) F_max = max(F_max, F_E(i))
     end do
-    call cover_table(model, F_max, 0.0_wp, error)
-    if (allocated(error)) return
+    F_reach = huge(1.0_wp)
+    if (model%undamped) then
+      call cover_table(model, F_max, 0.0_wp, error, reached)
+      if (allocated(error)) return
+      if (.not.reached) F_reach = model%table%node(model%table%j_hi)%F_bb
+    else
+      call cover_table(model, F_max, 0.0_wp, error)
+      if (allocated(error)) return
+    end if
     do i = 1, size(F_E)
-      if (model%undamped .and. F_E(i) >= F_lim) then
+      if (model%undamped .and. (F_E(i) >= F_lim .or. F_E(i) >= F_reach)) then
         points(i)%F_E = F_E(i)
         points(i)%regime = REGIME_LIMIT
         points(i)%unbounded = .true.

@@ -3,7 +3,9 @@
 !>   q(a) = a |1 + k(a) H_gg| = F_E |H_gE|,
 !> a scalar equation in a alone. Its roots are bracketed on the same amplitude grid as the
 !> backbone (linear below the stuck amplitude, where k is constant), all of them, and refined
-!> by Brent's method in ln(a) to rtol. Only damper stiffness evaluations are needed.
+!> by Brent's method in ln(a) to rtol. The scan stops where the lower bound
+!> a (1 - |k(a)| |H_gg|) of q exceeds the target with |k| falling. Only damper stiffness
+!> evaluations are needed.
 module udmap_response
   use udmap_kinds, only: wp, pi
   use udmap_error, only: error_type, fatal_error, UDMAP_EINPUT, UDMAP_EPHYSICS
@@ -69,7 +71,7 @@ contains
     real(wp), allocatable, intent(out) :: roots(:)
     type(error_type), allocatable, intent(out) :: error
     type(brent_type) :: brent
-    real(wp) :: target, found(256), a0, q0, a1, q1, u, fu, q_lo, a_lo
+    real(wp) :: target, found(256), a0, q0, a1, q1, u, fu, q_lo, a_lo, k0, k1
     logical :: more
     integer :: j, n, gpd, j_cap
     logical :: capped
@@ -88,6 +90,7 @@ contains
     end if
     a0 = a_lo
     q0 = q_lo
+    k0 = abs(model%damper%stiffness(a_lo))
     do
       j = j + 1
       a1 = grid_gamma(model, j)
@@ -111,10 +114,17 @@ contains
           found(n) = exp(brent%b)
         end if
       end if
-      ! in the rising range above gamma_b (a |1 + k H_gg| tends to a with k -> 0), rising and
-      ! past the target: no more roots (at the end of a measured table without delta_M: past
-      ! the target)
-      if (q1 > target .and. (capped .or. (q1 >= q0 .and. j >= j_rising(model)))) exit
+      ! No more roots above a1 once q(a) >= a (1 - |k(a)| |H_gg|) exceeds the target there
+      ! and |k| no longer grows: the bound then rises with a (above gamma_b |k| falls as the
+      ! friction saturates). q itself need not rise: it dips where the layer's resonance passes
+      ! this frequency. At the end of a measured table without delta_M: past the target.
+      k1 = abs(model%damper%stiffness(a1))
+      if (capped) then
+        if (q1 > target) exit
+      else if (j >= j_rising(model) .and. k1 <= k0 .and. a1*(1 - k1*abs(r%gg)) > target) then
+        exit
+      end if
+      k0 = k1
       if (j >= j_cap) then
         if (capped) then
           call fatal_error(error, "response: the amplitude goes beyond the damper's stiffness "// &

@@ -19,8 +19,9 @@ from ._lib import ErrorHandle, as_doubles, c_double_p, c_int_p, declare
 REGIME_NAMES = {0: "stuck", 1: "partial slip", 2: "full slip", 3: "at or above F_lim"}
 BRANCH_LOWER, BRANCH_UPPER, BRANCH_TURNING = 0, 1, 2
 MAX_ROOTS = 8
-UNBOUNDED_MESSAGE = ("F_E >= F_lim without structural damping (zeta = 0): friction cannot "
-                     "bound the response, the amplitude is unbounded")
+UNBOUNDED_MESSAGE = ("without structural damping (zeta = 0) friction cannot bound the response "
+                     "to this force (F_E >= F_lim, or above the asymptote of the backbone): the "
+                     "amplitude is unbounded")
 
 
 class _Analysis(ctypes.Structure):
