@@ -320,7 +320,8 @@ contains
   !> Grows the table until it reaches gamma_top and, if F_max > 0, until F_bb exceeds F_max
   !> at a node of the rising range above gamma_b (j_rising) where it rises: no root lies above.
   !> A damper whose k(gamma) ends at gamma_max (measured table without delta_M) caps the grid
-  !> there: F_bb must then exceed F_max at the last node, and roots are sought below it only.
+  !> there: the grid then runs to the last node, where F_bb must exceed F_max, and roots are
+  !> sought below it only.
   subroutine cover_table(model, F_max, gamma_top, error, reached)
     type(model_type), intent(inout) :: model
     real(wp), intent(in) :: F_max, gamma_top
@@ -355,8 +356,9 @@ contains
     if (present(reached)) reached = .true.
     if (F_max <= 0) return
     associate(t => model%table)
-      do while (.not.(t%node(t%j_hi)%F_bb > F_max .and. (capped .or. (t%j_hi >= j_rising(model) &
-          & .and. t%node(t%j_hi)%F_bb >= t%node(t%j_hi - 1)%F_bb))))
+      do while (.not.(t%node(t%j_hi)%F_bb > F_max .and. ((capped .and. t%j_hi == j_cap) .or. &
+          & (.not.capped .and. t%j_hi >= j_rising(model) .and. &
+          & t%node(t%j_hi)%F_bb >= t%node(t%j_hi - 1)%F_bb))))
         if (t%j_hi >= j_cap) then
           write(buf, '(es11.4)') F_max
           if (capped) then

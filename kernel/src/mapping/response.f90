@@ -117,13 +117,12 @@ contains
       ! No more roots above a1 once q(a) >= a (1 - |k(a)| |H_gg|) exceeds the target there
       ! and |k| no longer grows: the bound then rises with a (above gamma_b |k| falls as the
       ! friction saturates). q itself need not rise: it dips where the layer's resonance passes
-      ! this frequency. At the end of a measured table without delta_M: past the target.
+      ! this frequency. A measured table without delta_M is scanned to its last row, where q
+      ! must be past the target.
       k1 = abs(model%damper%stiffness(a1))
-      if (capped) then
-        if (q1 > target) exit
-      else if (j >= j_rising(model) .and. k1 <= k0 .and. a1*(1 - k1*abs(r%gg)) > target) then
-        exit
-      end if
+      if (.not.capped .and. j >= j_rising(model) .and. k1 <= k0 .and. &
+        & a1*(1 - k1*abs(r%gg)) > target) exit
+      if (j >= j_cap .and. capped .and. q1 > target) exit
       k0 = k1
       if (j >= j_cap) then
         if (capped) then
