@@ -15,7 +15,7 @@
 !> receptance evaluations to rtol = 1e-12.
 module udmap_layer
   use udmap_kinds, only: wp
-  use udmap_error, only: error_type, fatal_error, UDMAP_ENUMERIC
+  use udmap_error, only: error_type, fatal_error, UDMAP_ENUMERIC, UDMAP_EPHYSICS
   use udmap_blade, only: blade_type, receptances_type
   use udmap_root_finding, only: brent_type, brent_start, brent_next, brent_update
   use udmap_band_receptances, only: band_receptances_type, band_eval
@@ -66,6 +66,12 @@ contains
     bare%evaluations = bare%evaluations + 1
     if (bare%band%active .and. omega >= bare%band%omega_lo .and. omega <= bare%band%omega_hi) then
       call band_eval(bare%band, omega, derivatives, r)
+      ! exactly on an undamped natural frequency the receptances are unbounded
+      if (.not.(abs(r%gE) <= huge(1.0_wp) .and. abs(r%gg) <= huge(1.0_wp) .and. &
+          & abs(r%dgE) <= huge(1.0_wp) .and. abs(r%dgg) <= huge(1.0_wp))) then
+        call fatal_error(error, "the receptances are unbounded at an undamped natural "// &
+          & "frequency", UDMAP_EPHYSICS)
+      end if
     else
       call bare%blade%receptances(omega, r, error, derivatives=derivatives)
     end if
