@@ -1,15 +1,16 @@
 !> The eigenvalue start of the backbone (PHYSICS.md 4): the complex eigenvalue lambda of
 !> (K + k e_g e_g^T) phi = lambda M phi nearest the bare first mode, f = Re(sqrt(lambda))/(2 pi).
 !> Damping (C) is left out: the start only needs to be near the peak, which the layer peak
-!> search then finds exactly.
+!> search then finds exactly (within 1e-3 in frequency for blade A; refinement to rtol).
 !>
 !> Three ways to get it:
-!> - direct, dense (ndof <= dense_max): LAPACK zggev on the full pencil, O(ndof^3)
-!>   (3 ms at 64 DOFs);
+!> - direct, dense (ndof <= dense_max, default 200): LAPACK zggev on the full pencil,
+!>   O(ndof^3) (3 ms at 64 DOFs);
 !> - direct, banded (ndof > dense_max, built with UDMAP_WITH_ARPACK): ARPACK znaupd/zneupd in
 !>   shift-invert mode about the bare omega_1^2, with a complex band LU (zgbtrf) of
-!>   K + k e_g e_g^T - sigma M. ARPACK keeps internal `save` state, so this path must not run
-!>   in two threads at once; the FMU is built without it;
+!>   K + k e_g e_g^T - sigma M whose solves are refined with quadruple-precision residuals.
+!>   ARPACK keeps internal `save` state, so this path must not run in two threads at once; the
+!>   FMU is built without it (a build without ARPACK uses the modal start for large models);
 !> - modal (secular equation): since the damper is a rank-one change, lambda solves
 !>   1/k + h(lambda) = 0 with h(lambda) = e_g^T (K - lambda M)^-1 e_g
 !>              = sum_r phi_g,r^2/(omega_r^2 - lambda) + R0 + lambda R1 + lambda^2 R2 + ...
@@ -17,9 +18,15 @@
 !>   R0 = (K^-1)_gg - sum_kept phi_g,r^2/omega_r^2 (all modes, from the static receptance),
 !>   R1, R2 = sums of phi_g,r^2/omega_r^4, ^6 over the computed modes above the kept ones
 !>   (exact for models whose modes are all computed). The error is then
-!>   O((omega/omega_(secular_modes+1))^6) of the dropped modes' share (1e-11 for blade A),
-!>   far below what a start needs. It costs some 50 flops per Newton step, so the backbone tracks the eigenvalue
-!>   with it from layer to layer.
+!>   O((omega/omega_(secular_modes+1))^6) of the dropped modes' share (about 1e-9 for
+!>   blade A), far below what a start needs. It costs some 50 flops per Newton step.
+!>
+!> Policy (analysis%eigen_method): EIGEN_AUTO (default) runs the direct solver (dense or
+!> ARPACK by the switch above) once per model, for the first layer of its first backbone
+!> table, and tracks the eigenvalue from layer to layer with the secular equation, started
+!> from the direct value (later tables, e.g. after set_damper, bracket it from the bare modes);
+!> EIGEN_DIRECT runs the direct solver for every layer (slow; for checks); EIGEN_MODAL never
+!> runs it.
 module udmap_eigen_start
   use udmap_kinds, only: wp
   use udmap_error, only: error_type, fatal_error, UDMAP_EINPUT, UDMAP_ENUMERIC
