@@ -35,6 +35,7 @@
 !> beam and for large or narrow-banded imported models.
 module udmap_blade
   use udmap_kinds, only: wp, pi
+  use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
   use udmap_error, only: error_type, fatal_error, UDMAP_EINPUT, UDMAP_EPHYSICS, UDMAP_ENUMERIC
   use udmap_beam, only: beam_params_type, assemble_beam, beam_kd
   use udmap_mmio, only: mtx_type, read_mtx, write_mtx, mtx_to_dense, mtx_bandwidth
@@ -435,7 +436,11 @@ contains
     logical :: deriv
     deriv = .false.
     if (present(derivatives)) deriv = derivatives
-    if (.not.(omega >= 0.0_wp .and. omega <= huge(omega))) then
+    if (.not.ieee_is_finite(omega)) then
+      call fatal_error(error, "the frequency must be a non-negative finite number", UDMAP_EINPUT)
+      return
+    end if
+    if (omega < 0.0_wp) then
       call fatal_error(error, "the frequency must be a non-negative finite number", UDMAP_EINPUT)
       return
     end if
@@ -917,7 +922,9 @@ contains
     else if (exc_dof < 1 .or. exc_dof > n) then
       call fatal_error(error, "exc_dof must be a DOF number from 1 to "//itoa(n)//", got "// &
         & itoa(exc_dof), UDMAP_EINPUT)
-    else if (.not.(zeta >= 0.0_wp .and. zeta <= huge(zeta))) then
+    else if (.not.ieee_is_finite(zeta)) then
+      call fatal_error(error, "zeta must be a non-negative finite number", UDMAP_EINPUT)
+    else if (zeta < 0.0_wp) then
       call fatal_error(error, "zeta must be a non-negative finite number", UDMAP_EINPUT)
     end if
     if (allocated(error)) return
@@ -933,7 +940,7 @@ contains
       if (size(s) /= n) then
         call fatal_error(error, name//" must have "//itoa(n)//" entries (one per DOF), got "// &
           & itoa(size(s)), UDMAP_EINPUT)
-      else if (.not.all(abs(s) <= huge(s))) then
+      else if (.not.all(ieee_is_finite(s))) then
         call fatal_error(error, name//" has a non-finite entry", UDMAP_EINPUT)
       end if
     end subroutine check_row
@@ -946,7 +953,7 @@ contains
     type(error_type), allocatable, intent(out) :: error
     real(wp) :: amax
     integer :: i, j
-    if (.not.all(abs(a) <= huge(a))) then
+    if (.not.all(ieee_is_finite(a))) then
       call fatal_error(error, name//" has a non-finite entry", UDMAP_EINPUT)
       return
     end if
@@ -1050,7 +1057,7 @@ contains
 
   elemental logical function finite(z)
     complex(wp), intent(in) :: z
-    finite = abs(z%re) <= huge(1.0_wp) .and. abs(z%im) <= huge(1.0_wp)
+    finite = ieee_is_finite(z%re) .and. ieee_is_finite(z%im)
   end function finite
 
   pure function itoa(i) result(s)
