@@ -39,7 +39,8 @@ module udmap_blade
   use udmap_error, only: error_type, fatal_error, UDMAP_EINPUT, UDMAP_EPHYSICS, UDMAP_ENUMERIC
   use udmap_beam, only: beam_params_type, assemble_beam, beam_kd
   use udmap_mmio, only: mtx_type, read_mtx, write_mtx, mtx_to_dense, mtx_bandwidth
-  use udmap_band, only: xp, band_to_dense, dense_to_band, dense_bandwidth, sym_matvec, sym_entry
+  use udmap_dd, only: dot_dd
+  use udmap_band, only: band_to_dense, dense_to_band, dense_bandwidth, sym_matvec, sym_entry
   use udmap_linear_solve, only: spd_factor_type, spd_factor, spd_solve, dynamic_solve
   use udmap_modes, only: all_modes, lowest_modes
   implicit none
@@ -790,7 +791,7 @@ contains
       sm = 0.0_wp
       if (blade%has_stress) then
         sk = stress_dot(blade%s_K, blade%phi(:, m), mrk, blade%w2(m))
-        sm = real(sum(real(blade%s_M, xp)*real(blade%phi(:, m), xp)), wp)
+        sm = dot_dd(blade%s_M, blade%phi(:, m))
       end if
       blade%coef(:, m) = [pg*pe, pg*pg, pe*pe, sk*pe, sm*pe, sk*pg, sm*pg, 0.0_wp]
     end do
@@ -892,20 +893,20 @@ contains
 
   !> s_K^T phi for a mode (K phi = w2 M phi) in the better conditioned of two exact forms:
   !> directly, or w2 phi^T M r_K with r_K = K^-1 s_K (low modes: s_K^T phi cancels digits).
-  !> Products in extended precision; the form with the smaller sum of |terms| is taken.
+  !> Products in double-double; the form with the smaller sum of |terms| is taken.
   pure function stress_dot(s_k, phi, mrk, w2) result(v)
     real(wp), intent(in) :: s_k(:), phi(:), mrk(:), w2
     real(wp) :: v
-    real(xp) :: a, b, ca, cb
-    a = sum(real(s_k, xp)*real(phi, xp))
-    ca = sum(abs(real(s_k, xp)*real(phi, xp)))
-    b = real(w2, xp)*sum(real(mrk, xp)*real(phi, xp))
-    cb = real(w2, xp)*sum(abs(real(mrk, xp)*real(phi, xp)))
-    ! Compare the conditioning |sum of |terms|| / |sum|.
+    real(wp) :: a, b, ca, cb
+    a = dot_dd(s_k, phi)
+    ca = sum(abs(s_k*phi))
+    b = w2*dot_dd(mrk, phi)
+    cb = w2*sum(abs(mrk*phi))
+    ! Compare the conditioning sum |terms| / |sum|.
     if (ca*abs(b) <= cb*abs(a)) then
-      v = real(a, wp)
+      v = a
     else
-      v = real(b, wp)
+      v = b
     end if
   end function stress_dot
 

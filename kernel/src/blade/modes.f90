@@ -6,15 +6,15 @@
 !> absolute errors ~ eps lambda_max in every eigenvalue (relative 1e-7 for the lowest mode of
 !> blade A). Hence:
 !> - all modes (small models): dsygvd on the inverted pencil M z = mu K z, whose largest mu are
-!>   the lowest modes, each then refined by its Rayleigh quotient with the products in
-!>   extended precision;
+!>   the lowest modes, each then polished through its coupling by K computed in double-double;
 !> - the lowest modes (large models): subspace iteration with K^-1 M (Bathe), whose solves are
 !>   refined in extended precision once the subspace has settled.
 module udmap_modes
   use udmap_kinds, only: wp
   use udmap_error, only: error_type, fatal_error, UDMAP_ENUMERIC
   use udmap_lapack, only: dsygvd, dsyev
-  use udmap_band, only: xp, sym_matvec, sym_matvec_xp
+  use udmap_band, only: sym_matvec
+  use udmap_dd, only: sym_matvec_dd
   use udmap_linear_solve, only: spd_factor_type, spd_solve
   implicit none
   private
@@ -216,16 +216,14 @@ contains
     integer, intent(in) :: kd, p
     real(wp), intent(in) :: x(:, :), lam(:)
     real(wp), allocatable, intent(out) :: lambda(:), phi(:, :)
-    real(xp), allocatable :: xq(:), yq(:)
-    real(wp), allocatable :: kx(:, :), kr(:, :), mphi(:), d(:)
+    real(wp), allocatable :: kx(:, :), kr(:, :), mphi(:), d(:), zero(:), yl(:)
     integer :: i, j, n, nq
     n = size(x, 1)
     nq = size(x, 2)
-    allocate(xq(n), yq(n), kx(n, p), mphi(n), lambda(p), d(nq))
+    allocate(kx(n, p), mphi(n), lambda(p), d(nq), zero(n), yl(n))
+    zero = 0.0_wp
     do j = 1, p
-      xq = real(x(:, j), xp)
-      call sym_matvec_xp(k, kb, kd, xq, yq)
-      kx(:, j) = real(yq, wp)
+      call sym_matvec_dd(k, kb, kd, x(:, j), zero, kx(:, j), yl)
     end do
     kr = matmul(transpose(x), kx)
     d = lam
