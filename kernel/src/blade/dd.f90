@@ -20,14 +20,29 @@ contains
   elemental subroutine two_sum(a, b, s, e)
     real(wp), intent(in) :: a, b
     real(wp), intent(out) :: s, e
-    real(wp) :: v
-    s = a + b
-    v = s - a
-    e = (a - (s - v)) + (b - v)
+    call fast_two_sum(a, b, s, e)
   end subroutine two_sum
 
   !> p + e = a b exactly, p = fl(a b) (Dekker; assumes no overflow in the splitting).
   elemental subroutine two_prod(a, b, p, e)
+    real(wp), intent(in) :: a, b
+    real(wp), intent(out) :: p, e
+    call fast_two_prod(a, b, p, e)
+  end subroutine two_prod
+
+  ! The private versions below are what this module calls: private procedures are not
+  ! interposable in the shared library, so the compiler can inline them.
+
+  elemental subroutine fast_two_sum(a, b, s, e)
+    real(wp), intent(in) :: a, b
+    real(wp), intent(out) :: s, e
+    real(wp) :: v
+    s = a + b
+    v = s - a
+    e = (a - (s - v)) + (b - v)
+  end subroutine fast_two_sum
+
+  elemental subroutine fast_two_prod(a, b, p, e)
     real(wp), intent(in) :: a, b
     real(wp), intent(out) :: p, e
     real(wp) :: t, ah, al, bh, bl
@@ -39,14 +54,14 @@ contains
     bh = t - (t - b)
     bl = b - bh
     e = ((ah*bh - p) + ah*bl + al*bh) + al*bl
-  end subroutine two_prod
+  end subroutine fast_two_prod
 
   !> (zh, zl) = (xh, xl) + (yh, yl), renormalised.
   elemental subroutine dd_add(xh, xl, yh, yl, zh, zl)
     real(wp), intent(in) :: xh, xl, yh, yl
     real(wp), intent(out) :: zh, zl
     real(wp) :: s, e
-    call two_sum(xh, yh, s, e)
+    call fast_two_sum(xh, yh, s, e)
     e = e + (xl + yl)
     zh = s + e
     zl = e - (zh - s)
@@ -57,7 +72,7 @@ contains
     real(wp), intent(in) :: xh, xl, y
     real(wp), intent(out) :: zh, zl
     real(wp) :: s, e
-    call two_sum(xh, y, s, e)
+    call fast_two_sum(xh, y, s, e)
     e = e + xl
     zh = s + e
     zl = e - (zh - s)
@@ -68,7 +83,7 @@ contains
     real(wp), intent(in) :: xh, xl, y
     real(wp), intent(out) :: zh, zl
     real(wp) :: p, e
-    call two_prod(xh, y, p, e)
+    call fast_two_prod(xh, y, p, e)
     e = e + xl*y
     zh = p + e
     zl = e - (zh - p)
@@ -105,7 +120,7 @@ contains
     end if
     ! Renormalise.
     do i = 1, n
-      call two_sum(yh(i), yl(i), s, e)
+      call fast_two_sum(yh(i), yl(i), s, e)
       yh(i) = s
       yl(i) = e
     end do
@@ -117,8 +132,8 @@ contains
     real(wp), intent(inout) :: sh, sl
     real(wp), intent(in) :: aij, xh, xl
     real(wp) :: p, e, s, t
-    call two_prod(aij, xh, p, e)
-    call two_sum(sh, p, s, t)
+    call fast_two_prod(aij, xh, p, e)
+    call fast_two_sum(sh, p, s, t)
     sh = s
     sl = sl + (t + (e + aij*xl))
   end subroutine accumulate
