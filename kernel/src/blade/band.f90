@@ -10,7 +10,7 @@ module udmap_band
   implicit none
   private
   public :: dense_to_band, band_to_dense, dense_bandwidth, sym_matvec
-  public :: sym_entry, sym_max_abs
+  public :: sym_entry
 
 contains
 
@@ -73,17 +73,6 @@ contains
       v = a(i, j)
     end if
   end function sym_entry
-
-  !> The largest |entry| of a symmetric matrix given densely or in band storage.
-  pure function sym_max_abs(a, ab) result(v)
-    real(wp), allocatable, intent(in) :: a(:, :), ab(:, :)
-    real(wp) :: v
-    if (allocated(ab)) then
-      v = maxval(abs(ab))
-    else
-      v = maxval(abs(a))
-    end if
-  end function sym_max_abs
 
   !> y = A x for the symmetric matrix A (dense `a` or band `ab` with half-bandwidth kd).
   pure subroutine sym_matvec(a, ab, kd, x, y)

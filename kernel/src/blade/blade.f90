@@ -36,7 +36,7 @@
 module udmap_blade
   use udmap_kinds, only: wp, pi
   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
-  use udmap_error, only: error_type, fatal_error, UDMAP_EINPUT, UDMAP_EPHYSICS, UDMAP_ENUMERIC
+  use udmap_error, only: error_type, fatal_error, UDMAP_EINPUT, UDMAP_EPHYSICS
   use udmap_beam, only: beam_params_type, assemble_beam, beam_kd
   use udmap_mmio, only: mtx_type, read_mtx, write_mtx, mtx_to_dense, mtx_bandwidth
   use udmap_dd, only: dot_dd
