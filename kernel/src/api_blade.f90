@@ -5,6 +5,7 @@
 module udmap_api_blade
   use, intrinsic :: iso_c_binding, only: c_ptr, c_null_ptr, c_associated, c_f_pointer, c_loc, &
     & c_int, c_double, c_char, c_size_t
+  use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
   use udmap_kinds, only: wp, pi
   use udmap_error, only: error_type, fatal_error, UDMAP_EINPUT, UDMAP_EPHYSICS
   use udmap_api, only: set_error, clear_error, error_from_handle, c_string_to_fortran
@@ -254,7 +255,7 @@ contains
     integer :: i
     call clear_error(error)
     call check_arrays(blade, n, f_hz, out, err)
-    if (.not.allocated(err) .and. .not.(abs(k_re) <= huge(1.0_wp) .and. abs(k_im) <= huge(1.0_wp))) &
+    if (.not.allocated(err) .and. .not.(ieee_is_finite(k_re) .and. ieee_is_finite(k_im))) &
       & call fatal_error(err, "the damper stiffness k_re + i k_im must be finite", UDMAP_EINPUT)
     if (.not.allocated(err) .and. n > 0) then
       call c_f_pointer(blade, b)
@@ -267,9 +268,7 @@ contains
         call b%receptances(2*pi*real(f(i), wp), r, err)
         if (allocated(err)) exit
         call layer_response(r, k, g, s, ue)
-        if (.not.(abs(g%re) <= huge(1.0_wp) .and. abs(g%im) <= huge(1.0_wp) .and. &
-            & abs(s%re) <= huge(1.0_wp) .and. abs(s%im) <= huge(1.0_wp) .and. &
-            & abs(ue%re) <= huge(1.0_wp) .and. abs(ue%im) <= huge(1.0_wp))) then
+        if (.not.all(ieee_is_finite([g%re, g%im, s%re, s%im, ue%re, ue%im]))) then
           call fatal_error(err, "the layer response is unbounded at f_hz["//itoa(i-1)// &
             & "] (1 + k H_gg = 0: an undamped natural frequency of the blade with the damper)", &
             & UDMAP_EPHYSICS)
@@ -320,9 +319,13 @@ contains
     real(c_double), intent(in) :: f
     integer, intent(in) :: i
     type(error_type), allocatable, intent(out) :: err
-    if (.not.(f >= 0.0_c_double .and. f <= huge(1.0_c_double))) &
-      & call fatal_error(err, "f_hz["//itoa(i-1)//"] must be a non-negative finite frequency", &
-      & UDMAP_EINPUT)
+    if (.not.ieee_is_finite(f)) then
+      call fatal_error(err, "f_hz["//itoa(i-1)//"] must be a non-negative finite frequency", &
+        & UDMAP_EINPUT)
+    else if (f < 0.0_c_double) then
+      call fatal_error(err, "f_hz["//itoa(i-1)//"] must be a non-negative finite frequency", &
+        & UDMAP_EINPUT)
+    end if
   end subroutine check_frequency
 
   !> The Fortran string of a NUL-terminated C string.

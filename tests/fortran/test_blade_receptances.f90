@@ -38,6 +38,7 @@ program test_blade_receptances
   if (allocated(error)) call finish(suite)
 
   call evaluation_paths()
+  call small_closed_forms()
   call explicit_damping()
   call derivatives()
   call sherman_morrison()
@@ -70,6 +71,51 @@ contains
     write(*, '(a, 3es10.2)') "largest relative error vs quad direct solve (default, all modes, "// &
       & "large path): ", worst
   end subroutine evaluation_paths
+
+  !> Closed forms: the one-DOF oscillator of PHYSICS.md 8 (m = 1, c = 0.01 given as C, k = 1),
+  !> H = 1/(k - omega^2 m + i omega c), and a two-DOF chain with stiffness-proportional damping,
+  !> K = [2 -1; -1 1], M = I: modes omega^2 = (3 -+ sqrt 5)/2, and H = (K - omega^2 M + i omega
+  !> beta K)^-1 by Cramer's rule.
+  subroutine small_closed_forms()
+    type(blade_type) :: one, two
+    type(receptances_type) :: r
+    real(wp) :: om, beta
+    complex(wp) :: d(2, 2), det
+    integer :: i
+    call new_matrices_blade(one, reshape([1.0_wp], [1, 1]), reshape([1.0_wp], [1, 1]), 1, 1, 0.0_wp, &
+      & error, C=reshape([0.01_wp], [1, 1]))
+    call check_no_error(suite, "one-DOF oscillator", error)
+    if (allocated(error)) return
+    call check_close(suite, "one-DOF: omega_1 = 1", one%omega1, 1.0_wp, 1.0e-15_wp)
+    do i = 0, 4
+      om = 0.9_wp + 0.05_wp*i
+      call one%receptances(om, r, error, derivatives=.true.)
+      call close_c("one-DOF: H", r%gE, 1.0_wp/cmplx(1.0_wp - om**2, 0.01_wp*om, wp), 1.0e-14_wp)
+      call close_c("one-DOF: dH", r%dgE, -cmplx(-2*om, 0.01_wp, wp)/cmplx(1.0_wp - om**2, &
+        & 0.01_wp*om, wp)**2, 1.0e-12_wp)
+    end do
+    call new_matrices_blade(two, reshape([1.0_wp, 0.0_wp, 0.0_wp, 1.0_wp], [2, 2]), &
+      & reshape([2.0_wp, -1.0_wp, -1.0_wp, 1.0_wp], [2, 2]), 2, 1, 0.01_wp, error)
+    call check_no_error(suite, "two-DOF chain", error)
+    if (allocated(error)) return
+    call check_close(suite, "two-DOF: omega_1^2 = (3 - sqrt 5)/2", two%omega(1)**2, &
+      & (3.0_wp - sqrt(5.0_wp))/2, 1.0e-14_wp)
+    call check_close(suite, "two-DOF: omega_2^2 = (3 + sqrt 5)/2", two%omega(2)**2, &
+      & (3.0_wp + sqrt(5.0_wp))/2, 1.0e-14_wp)
+    beta = 2*0.01_wp/two%omega1
+    do i = 0, 4
+      om = two%omega1*(0.9_wp + 0.05_wp*i)
+      d = cmplx(1.0_wp + 0*om, om*beta, wp)*reshape([(2.0_wp, 0.0_wp), (-1.0_wp, 0.0_wp), &
+        & (-1.0_wp, 0.0_wp), (1.0_wp, 0.0_wp)], [2, 2]) - om**2*reshape([(1.0_wp, 0.0_wp), &
+        & (0.0_wp, 0.0_wp), (0.0_wp, 0.0_wp), (1.0_wp, 0.0_wp)], [2, 2])
+      det = d(1, 1)*d(2, 2) - d(1, 2)*d(2, 1)
+      call two%receptances(om, r, error)
+      ! g = DOF 2, E = DOF 1: H_gE = -d21/det, H_gg = d11/det, H_EE = d22/det.
+      call close_c("two-DOF: H_gE", r%gE, -d(2, 1)/det, 1.0e-13_wp)
+      call close_c("two-DOF: H_gg", r%gg, d(1, 1)/det, 1.0e-13_wp)
+      call close_c("two-DOF: H_EE", r%EE, d(2, 2)/det, 1.0e-13_wp)
+    end do
+  end subroutine small_closed_forms
 
   !> Explicit C: C = beta K given as a matrix gives the modal result (direct complex solve);
   !> a general C (Rayleigh plus a dashpot on gamma_P) against the quad solve.

@@ -1,7 +1,6 @@
 !> Storage helpers for the symmetric blade matrices: LAPACK symmetric band storage
 !> (uplo = 'U': ab(kd+1+i-j, j) = a(i,j) for max(1, j-kd) <= i <= j) and dense copies,
-!> and the matrix-vector products used by the solvers, including products accumulated in an
-!> extended precision `xp` for the residuals of iterative refinement.
+!> and the matrix-vector product used by the solvers (udmap_dd has the double-double one).
 !>
 !> Routines that accept a matrix take both its dense form `a` and its band form `ab` as
 !> allocatable arguments and use whichever is allocated (the band form if both are).
@@ -10,13 +9,8 @@ module udmap_band
   use udmap_lapack, only: dsbmv
   implicit none
   private
-  public :: xp, dense_to_band, band_to_dense, dense_bandwidth, sym_matvec, sym_matvec_xp
-  public :: sym_entry, sym_max_abs
-
-  !> Extended precision for residuals: quadruple where the compiler has it, else the x87
-  !> 80-bit type, else double (then refinement only repeats the working precision).
-  integer, parameter :: xp = merge(selected_real_kind(30), merge(selected_real_kind(18), wp, &
-    & selected_real_kind(18) > 0), selected_real_kind(30) > 0)
+  public :: dense_to_band, band_to_dense, dense_bandwidth, sym_matvec
+  public :: sym_entry
 
 contains
 
@@ -80,17 +74,6 @@ contains
     end if
   end function sym_entry
 
-  !> The largest |entry| of a symmetric matrix given densely or in band storage.
-  pure function sym_max_abs(a, ab) result(v)
-    real(wp), allocatable, intent(in) :: a(:, :), ab(:, :)
-    real(wp) :: v
-    if (allocated(ab)) then
-      v = maxval(abs(ab))
-    else
-      v = maxval(abs(a))
-    end if
-  end function sym_max_abs
-
   !> y = A x for the symmetric matrix A (dense `a` or band `ab` with half-bandwidth kd).
   pure subroutine sym_matvec(a, ab, kd, x, y)
     real(wp), allocatable, intent(in) :: a(:, :), ab(:, :)
@@ -105,37 +88,4 @@ contains
       y = matmul(a, x)
     end if
   end subroutine sym_matvec
-
-  !> y = A x accumulated in extended precision (A given in working precision, x in xp), so
-  !> that the cancellation in the products of a stiff matrix with a smooth vector is resolved.
-  pure subroutine sym_matvec_xp(a, ab, kd, x, y)
-    real(wp), allocatable, intent(in) :: a(:, :), ab(:, :)
-    integer, intent(in) :: kd
-    real(xp), intent(in) :: x(:)
-    real(xp), intent(out) :: y(:)
-    integer :: i, j, n
-    real(xp) :: s, aij
-    n = size(x)
-    if (allocated(ab)) then
-      y = 0.0_xp
-      do j = 1, n
-        ! Column j of the upper band: a(i,j) for i in [j-kd, j]; mirror for the lower part.
-        s = 0.0_xp
-        do i = max(1, j-kd), j - 1
-          aij = real(ab(kd+1+i-j, j), xp)
-          y(i) = y(i) + aij*x(j)
-          s = s + aij*x(i)
-        end do
-        y(j) = y(j) + s + real(ab(kd+1, j), xp)*x(j)
-      end do
-    else
-      do i = 1, n
-        s = 0.0_xp
-        do j = 1, n
-          s = s + real(a(j, i), xp)*x(j)
-        end do
-        y(i) = s
-      end do
-    end if
-  end subroutine sym_matvec_xp
 end module udmap_band

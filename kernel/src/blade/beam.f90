@@ -12,6 +12,7 @@
 module udmap_beam
   use udmap_kinds, only: wp
   use udmap_error, only: error_type, fatal_error, UDMAP_EINPUT
+  use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
   implicit none
   private
   public :: beam_params_type, check_beam_params, assemble_beam, beam_kd, beam_max_elements
@@ -41,7 +42,11 @@ contains
     character(len=24) :: buf
     call positive(p%E, "blade.E", error); if (allocated(error)) return
     call positive(p%rho, "blade.rho", error); if (allocated(error)) return
-    if (.not.(p%zeta >= 0.0_wp .and. p%zeta <= huge(p%zeta))) then
+    if (.not.ieee_is_finite(p%zeta)) then
+      call fatal_error(error, "blade.zeta must be a non-negative finite number", UDMAP_EINPUT)
+      return
+    end if
+    if (p%zeta < 0.0_wp) then
       call fatal_error(error, "blade.zeta must be a non-negative finite number", UDMAP_EINPUT)
       return
     end if
@@ -70,8 +75,12 @@ contains
       real(wp), intent(in) :: x
       character(len=*), intent(in) :: name
       type(error_type), allocatable, intent(inout) :: error
-      if (.not.(x > 0.0_wp .and. x <= huge(x))) &
-        & call fatal_error(error, name//" must be a positive finite number", UDMAP_EINPUT)
+      ! ieee_is_finite first: comparing a NaN would raise the invalid flag.
+      if (.not.ieee_is_finite(x)) then
+        call fatal_error(error, name//" must be a positive finite number", UDMAP_EINPUT)
+      else if (x <= 0.0_wp) then
+        call fatal_error(error, name//" must be a positive finite number", UDMAP_EINPUT)
+      end if
     end subroutine positive
   end subroutine check_beam_params
 

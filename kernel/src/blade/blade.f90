@@ -17,7 +17,7 @@
 !>   allocation or LAPACK. Above omega_d/2: the direct solve below (a modal sum far above the
 !>   first modes cancels digits between its terms).
 !>   * ndof <= blade_full_modal_limit, or dense storage only: all modes by dsygvd on the
-!>     inverted pencil (the lowest blade_polish_modes polished in extended precision);
+!>     inverted pencil (the lowest blade_polish_modes polished in double-double);
 !>     nfast = min(ndof, blade_fast_modes) and the moments R_n are sums over the computed
 !>     modes. (kept_modes >= ndof: every mode summed term by term, no series.)
 !>   * larger banded models (or kept_modes < ndof): the lowest kept_modes (default
@@ -27,7 +27,7 @@
 !>   The stress products use s_K^T q = r_K^T K q, r_K = K^-1 s_K, where that is better
 !>   conditioned (s_K holds element stiffnesses: stress from displacements cancels digits).
 !> - explicit C: a direct complex solve of D(omega) for e_E and e_g per frequency (zgetrf for
-!>   dense storage, zgbtrf for band), refined in extended precision; derivatives from
+!>   dense storage, zgbtrf for band), refined in double-double; derivatives from
 !>   dD/domega = -2 omega M + i C. This path allocates and costs ~1 ms for 64 DOFs.
 !> Accuracy (tests/fortran/test_blade_receptances.f90, test_blade_large.f90): 1e-12 or better
 !> against quadruple-precision direct solves in the band of the first mode.
@@ -35,10 +35,12 @@
 !> beam and for large or narrow-banded imported models.
 module udmap_blade
   use udmap_kinds, only: wp, pi
-  use udmap_error, only: error_type, fatal_error, UDMAP_EINPUT, UDMAP_EPHYSICS, UDMAP_ENUMERIC
+  use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+  use udmap_error, only: error_type, fatal_error, UDMAP_EINPUT, UDMAP_EPHYSICS
   use udmap_beam, only: beam_params_type, assemble_beam, beam_kd
   use udmap_mmio, only: mtx_type, read_mtx, write_mtx, mtx_to_dense, mtx_bandwidth
-  use udmap_band, only: xp, band_to_dense, dense_to_band, dense_bandwidth, sym_matvec, sym_entry
+  use udmap_dd, only: dot_dd
+  use udmap_band, only: band_to_dense, dense_to_band, dense_bandwidth, sym_matvec, sym_entry
   use udmap_linear_solve, only: spd_factor_type, spd_factor, spd_solve, dynamic_solve
   use udmap_modes, only: all_modes, lowest_modes
   implicit none
@@ -53,7 +55,7 @@ module udmap_blade
   !> Largest ndof for which all modes are computed (dsygvd) by default when band storage is
   !> available; dense-only models (no narrow band) always compute all modes.
   integer, parameter :: blade_full_modal_limit = 128
-  !> Modes polished in extended precision when all modes are computed.
+  !> Modes polished (double-double products with K) when all modes are computed.
   integer, parameter :: blade_polish_modes = 64
   !> Modes computed and summed term by term in larger models (the rest enter the series).
   integer, parameter :: blade_kept_modes = 20
@@ -435,7 +437,11 @@ contains
     logical :: deriv
     deriv = .false.
     if (present(derivatives)) deriv = derivatives
-    if (.not.(omega >= 0.0_wp .and. omega <= huge(omega))) then
+    if (.not.ieee_is_finite(omega)) then
+      call fatal_error(error, "the frequency must be a non-negative finite number", UDMAP_EINPUT)
+      return
+    end if
+    if (omega < 0.0_wp) then
       call fatal_error(error, "the frequency must be a non-negative finite number", UDMAP_EINPUT)
       return
     end if
@@ -460,20 +466,21 @@ contains
     end if
   end subroutine receptances
 
-  !> The modal sum, hot path: the coefficient vectors of all products are accumulated together
-  !> (8 contiguous doubles per mode, so the update vectorises).
+  !> The modal sum, hot path. The seven products are accumulated in scalars (kept in registers;
+  !> arrays would go through memory at every mode), then the series of the dropped modes.
   pure subroutine modal_receptances(self, omega, nsum, r)
     class(blade_type), intent(in) :: self
     real(wp), intent(in) :: omega
     integer, intent(in) :: nsum
     type(receptances_type), intent(out) :: r
-    real(wp) :: om2, wb, a, b, t, tr, ti, acc_re(8), acc_im(8)
-    complex(wp) :: h(8)
+    real(wp) :: om2, wb, a, b, t, tr, ti
+    real(wp) :: r1, r2, r3, r4, r5, r6, r7, i1, i2, i3, i4, i5, i6, i7
+    complex(wp) :: h(7)
     integer :: m
     om2 = omega*omega
     wb = omega*self%beta
-    acc_re = 0.0_wp
-    acc_im = 0.0_wp
+    r1 = 0; r2 = 0; r3 = 0; r4 = 0; r5 = 0; r6 = 0; r7 = 0
+    i1 = 0; i2 = 0; i3 = 0; i4 = 0; i5 = 0; i6 = 0; i7 = 0
     do m = 1, nsum
       ! 1/(w^2 (1 + i omega beta) - omega^2) = (a - i b)/(a^2 + b^2)
       a = self%w2(m) - om2
@@ -481,17 +488,63 @@ contains
       t = 1.0_wp/(a*a + b*b)
       tr = a*t
       ti = -b*t
-      acc_re = acc_re + self%coef(:, m)*tr
-      acc_im = acc_im + self%coef(:, m)*ti
+      r1 = r1 + self%coef(1, m)*tr; i1 = i1 + self%coef(1, m)*ti
+      r2 = r2 + self%coef(2, m)*tr; i2 = i2 + self%coef(2, m)*ti
+      r3 = r3 + self%coef(3, m)*tr; i3 = i3 + self%coef(3, m)*ti
+      r4 = r4 + self%coef(4, m)*tr; i4 = i4 + self%coef(4, m)*ti
+      r5 = r5 + self%coef(5, m)*tr; i5 = i5 + self%coef(5, m)*ti
+      r6 = r6 + self%coef(6, m)*tr; i6 = i6 + self%coef(6, m)*ti
+      r7 = r7 + self%coef(7, m)*tr; i7 = i7 + self%coef(7, m)*ti
     end do
-    h = cmplx(acc_re, acc_im, wp)
-    if (nsum < self%ndof) call add_residual(self, omega, h)
+    h = [cmplx(r1, i1, wp), cmplx(r2, i2, wp), cmplx(r3, i3, wp), cmplx(r4, i4, wp), &
+      & cmplx(r5, i5, wp), cmplx(r6, i6, wp), cmplx(r7, i7, wp)]
+    if (nsum < self%ndof) call add_series(self, omega, h)
     r%gE = h(1)
     r%gg = h(2)
     r%EE = h(3)
     r%sE = h(4) - om2*h(5)
     r%sg = h(6) - om2*h(7)
   end subroutine modal_receptances
+
+  !> Adds the series of the modes above nfast (see add_residual), without derivatives.
+  pure subroutine add_series(self, omega, h)
+    class(blade_type), intent(in) :: self
+    real(wp), intent(in) :: omega
+    complex(wp), intent(inout) :: h(7)
+    complex(wp) :: f, finv, zeta, p1, p2, p3, p4, p5, p6, p7
+    integer :: n, nterms
+    f = cmplx(1.0_wp, omega*self%beta, wp)
+    finv = conjg(f)/(1.0_wp + (omega*self%beta)**2)
+    zeta = (omega/self%omega_d)**2*finv
+    nterms = series_terms(self, zeta)
+    p1 = self%res(1, nterms); p2 = self%res(2, nterms); p3 = self%res(3, nterms)
+    p4 = self%res(4, nterms); p5 = self%res(5, nterms); p6 = self%res(6, nterms)
+    p7 = self%res(7, nterms)
+    do n = nterms - 1, 1, -1
+      p1 = p1*zeta + self%res(1, n); p2 = p2*zeta + self%res(2, n)
+      p3 = p3*zeta + self%res(3, n); p4 = p4*zeta + self%res(4, n)
+      p5 = p5*zeta + self%res(5, n); p6 = p6*zeta + self%res(6, n)
+      p7 = p7*zeta + self%res(7, n)
+    end do
+    h = h + [p1, p2, p3, p4, p5, p6, p7]*finv
+  end subroutine add_series
+
+  !> Terms of the series for zeta: the tail after N terms is below |zeta|^N/(1 - |zeta|) of the
+  !> dropped modes' part; N is the first with that below series_tol (|zeta| <= 1/4 on the modal
+  !> path, so N <= blade_residual_terms).
+  pure integer function series_terms(self, zeta) result(nterms)
+    class(blade_type), intent(in) :: self
+    complex(wp), intent(in) :: zeta
+    real(wp) :: az, t, bound
+    az = sqrt(zeta%re**2 + zeta%im**2)
+    bound = series_tol*(1.0_wp - az)
+    t = az
+    nterms = 1
+    do while (t > bound .and. nterms < self%nres)
+      t = t*az
+      nterms = nterms + 1
+    end do
+  end function series_terms
 
   !> The modal sum with derivatives: d/d omega of 1/d_m is -d_m'/d_m^2, d_m' = i beta w^2 - 2 omega.
   pure subroutine modal_receptances_deriv(self, omega, nsum, r)
@@ -544,26 +597,17 @@ contains
   end subroutine modal_receptances_deriv
 
   !> Adds the series of the modes above nfast, (1/f) sum_n Rt_n zeta^n with f = 1 + i omega beta,
-  !> zeta = omega^2/(f omega_d^2) and the scaled moments Rt_n = res(:, n+1), taking the terms
-  !> that |zeta| needs for series_tol (|zeta| <= 1/4 on the fast path).
+  !> zeta = omega^2/(f omega_d^2) and the scaled moments Rt_n = res(:, n+1), and its derivative,
+  !> taking the terms that |zeta| needs for series_tol (|zeta| <= 1/4 on the modal path).
   pure subroutine add_residual(self, omega, h, dh)
     class(blade_type), intent(in) :: self
     real(wp), intent(in) :: omega
-    complex(wp), intent(inout) :: h(8)
-    complex(wp), intent(inout), optional :: dh(8)
+    complex(wp), intent(inout) :: h(8), dh(8)
     complex(wp) :: f, zeta, p(8), dp(8), dzeta
-    real(wp) :: az, t
     integer :: n, nterms
     f = cmplx(1.0_wp, omega*self%beta, wp)
     zeta = omega**2/(f*self%omega_d**2)
-    ! Terms: the tail after nterms is below |zeta|^nterms/(1 - |zeta|) of the dropped modes' part.
-    az = abs(zeta)
-    t = az
-    nterms = 1
-    do while (t > series_tol*(1.0_wp - az) .and. nterms < self%nres)
-      t = t*az
-      nterms = nterms + 1
-    end do
+    nterms = series_terms(self, zeta)
     p = self%res(:, nterms)
     dp = 0.0_wp
     do n = nterms - 1, 1, -1
@@ -571,10 +615,8 @@ contains
       p = p*zeta + self%res(:, n)
     end do
     h = h + p/f
-    if (present(dh)) then
-      dzeta = omega*cmplx(2.0_wp, omega*self%beta, wp)/(f*f*self%omega_d**2)
-      dh = dh + dp*dzeta/f - p*cmplx(0.0_wp, self%beta, wp)/(f*f)
-    end if
+    dzeta = omega*cmplx(2.0_wp, omega*self%beta, wp)/(f*f*self%omega_d**2)
+    dh = dh + dp*dzeta/f - p*cmplx(0.0_wp, self%beta, wp)/(f*f)
   end subroutine add_residual
 
   !> Direct solves of D(omega) q = e_E, e_g (and s for the stress derivative).
@@ -785,7 +827,7 @@ contains
       sm = 0.0_wp
       if (blade%has_stress) then
         sk = stress_dot(blade%s_K, blade%phi(:, m), mrk, blade%w2(m))
-        sm = real(sum(real(blade%s_M, xp)*real(blade%phi(:, m), xp)), wp)
+        sm = dot_dd(blade%s_M, blade%phi(:, m))
       end if
       blade%coef(:, m) = [pg*pe, pg*pg, pe*pe, sk*pe, sm*pe, sk*pg, sm*pg, 0.0_wp]
     end do
@@ -887,20 +929,20 @@ contains
 
   !> s_K^T phi for a mode (K phi = w2 M phi) in the better conditioned of two exact forms:
   !> directly, or w2 phi^T M r_K with r_K = K^-1 s_K (low modes: s_K^T phi cancels digits).
-  !> Products in extended precision; the form with the smaller sum of |terms| is taken.
+  !> Products in double-double; the form with the smaller sum of |terms| is taken.
   pure function stress_dot(s_k, phi, mrk, w2) result(v)
     real(wp), intent(in) :: s_k(:), phi(:), mrk(:), w2
     real(wp) :: v
-    real(xp) :: a, b, ca, cb
-    a = sum(real(s_k, xp)*real(phi, xp))
-    ca = sum(abs(real(s_k, xp)*real(phi, xp)))
-    b = real(w2, xp)*sum(real(mrk, xp)*real(phi, xp))
-    cb = real(w2, xp)*sum(abs(real(mrk, xp)*real(phi, xp)))
-    ! Compare the conditioning |sum of |terms|| / |sum|.
+    real(wp) :: a, b, ca, cb
+    a = dot_dd(s_k, phi)
+    ca = sum(abs(s_k*phi))
+    b = w2*dot_dd(mrk, phi)
+    cb = w2*sum(abs(mrk*phi))
+    ! Compare the conditioning sum |terms| / |sum|.
     if (ca*abs(b) <= cb*abs(a)) then
-      v = real(a, wp)
+      v = a
     else
-      v = real(b, wp)
+      v = b
     end if
   end function stress_dot
 
@@ -917,7 +959,9 @@ contains
     else if (exc_dof < 1 .or. exc_dof > n) then
       call fatal_error(error, "exc_dof must be a DOF number from 1 to "//itoa(n)//", got "// &
         & itoa(exc_dof), UDMAP_EINPUT)
-    else if (.not.(zeta >= 0.0_wp .and. zeta <= huge(zeta))) then
+    else if (.not.ieee_is_finite(zeta)) then
+      call fatal_error(error, "zeta must be a non-negative finite number", UDMAP_EINPUT)
+    else if (zeta < 0.0_wp) then
       call fatal_error(error, "zeta must be a non-negative finite number", UDMAP_EINPUT)
     end if
     if (allocated(error)) return
@@ -933,7 +977,7 @@ contains
       if (size(s) /= n) then
         call fatal_error(error, name//" must have "//itoa(n)//" entries (one per DOF), got "// &
           & itoa(size(s)), UDMAP_EINPUT)
-      else if (.not.all(abs(s) <= huge(s))) then
+      else if (.not.all(ieee_is_finite(s))) then
         call fatal_error(error, name//" has a non-finite entry", UDMAP_EINPUT)
       end if
     end subroutine check_row
@@ -946,7 +990,7 @@ contains
     type(error_type), allocatable, intent(out) :: error
     real(wp) :: amax
     integer :: i, j
-    if (.not.all(abs(a) <= huge(a))) then
+    if (.not.all(ieee_is_finite(a))) then
       call fatal_error(error, name//" has a non-finite entry", UDMAP_EINPUT)
       return
     end if
@@ -1050,7 +1094,7 @@ contains
 
   elemental logical function finite(z)
     complex(wp), intent(in) :: z
-    finite = abs(z%re) <= huge(1.0_wp) .and. abs(z%im) <= huge(1.0_wp)
+    finite = ieee_is_finite(z%re) .and. ieee_is_finite(z%im)
   end function finite
 
   pure function itoa(i) result(s)

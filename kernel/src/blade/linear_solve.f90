@@ -1,17 +1,17 @@
 !> Linear solves for the blade: Cholesky of a symmetric positive definite matrix (dense or band)
 !> and the complex dynamic stiffness D(omega) = K - omega^2 M + i omega C, both with iterative
-!> refinement whose residuals are accumulated in the extended precision `xp`.
+!> refinement whose residuals are computed in double-double arithmetic (udmap_dd).
 !>
 !> Why refinement: finely meshed beams are very ill-conditioned (the stiffness of a 2048-element
 !> airfoil has kappa eps ~ 1e-3), so a plain double-precision solve loses most digits. With the
-!> residual in extended precision and the solution accumulated there, refinement converges to
-!> the exact solution of the stored (double) data whenever eps kappa < 1, at the price of a
+!> residual in double-double and the solution accumulated there, refinement converges to the
+!> exact solution of the stored (double) data whenever eps kappa < 1, at the price of a
 !> matrix-vector product per step.
 module udmap_linear_solve
   use udmap_kinds, only: wp
   use udmap_error, only: error_type, fatal_error, UDMAP_EINPUT, UDMAP_ENUMERIC
   use udmap_lapack, only: dpotrf, dpotrs, dpbtrf, dpbtrs, zgetrf, zgetrs, zgbtrf, zgbtrs
-  use udmap_band, only: xp, sym_matvec_xp
+  use udmap_dd, only: dd_add, dd_add_d, dd_mul_d, sym_matvec_dd
   implicit none
   private
   public :: spd_factor_type, spd_factor, spd_solve, dynamic_solve
@@ -75,8 +75,7 @@ contains
     real(wp), intent(in) :: b(:, :)
     real(wp), intent(out) :: x(:, :)
     logical, intent(in) :: refine
-    real(xp), allocatable :: xx(:), r(:)
-    real(wp), allocatable :: d(:)
+    real(wp), allocatable :: xh(:), xl(:), yh(:), yl(:), d(:)
     real(wp) :: dnorm, dprev
     integer :: j, it, n, kd
     n = f%n
@@ -84,23 +83,26 @@ contains
     x = b
     call plain_solve(f, x)
     if (.not.refine) return
-    allocate(xx(n), r(n), d(n))
+    allocate(xh(n), xl(n), yh(n), yl(n), d(n))
     do j = 1, size(b, 2)
-      xx = real(x(:, j), xp)
+      xh = x(:, j)
+      xl = 0.0_wp
       dprev = huge(1.0_wp)
       do it = 1, max_refine
-        call sym_matvec_xp(a, ab, kd, xx, r)
-        r = real(b(:, j), xp) - r
-        d = real(r, wp)
+        ! d = b - A x in double-double, rounded; then x += A^-1 d kept in double-double.
+        call sym_matvec_dd(a, ab, kd, xh, xl, yh, yl)
+        call dd_add_d(-yh, -yl, b(:, j), d, yl)
         call plain_solve_1(f, d)
-        xx = xx + real(d, xp)
+        call dd_add_d(xh, xl, d, yh, yl)
+        xh = yh
+        xl = yl
         dnorm = maxval(abs(d))
         ! Converged (well below rounding of the largest entry, so that small entries are
         ! accurate too), or stalled (at the floor, or eps kappa >= 1).
-        if (dnorm <= refine_tol*maxval(abs(xx)) .or. dnorm > 0.5_wp*dprev) exit
+        if (dnorm <= refine_tol*maxval(abs(xh)) .or. dnorm > 0.5_wp*dprev) exit
         dprev = dnorm
       end do
-      x(:, j) = real(xx, wp)
+      x(:, j) = xh
     end do
   end subroutine spd_solve
 
@@ -143,7 +145,8 @@ contains
     integer :: n, nrhs, info, i, j, ldab, it, kdu
     logical :: band, explicit
     character(len=24) :: buf
-    real(xp), allocatable :: xr(:), xi(:), yr(:), yi(:), rr(:), ri(:)
+    real(wp), allocatable :: xrh(:), xrl(:), xih(:), xil(:), th(:), tl(:), uh(:), ul(:), &
+      & rr(:), ri(:)
     real(wp) :: dnorm, dprev
 
     band = allocated(kb)
@@ -187,39 +190,67 @@ contains
 
     q = b
     call lu_solve(q)
-    allocate(xr(n), xi(n), yr(n), yi(n), rr(n), ri(n), d(n))
+    allocate(xrh(n), xrl(n), xih(n), xil(n), th(n), tl(n), uh(n), ul(n), rr(n), ri(n), d(n))
     do j = 1, nrhs
-      xr = real(q(:, j)%re, xp)
-      xi = real(q(:, j)%im, xp)
+      xrh = q(:, j)%re
+      xih = q(:, j)%im
+      xrl = 0.0_wp
+      xil = 0.0_wp
       dprev = huge(1.0_wp)
       do it = 1, max_refine
-        ! r = b - D x, every product accumulated in xp
-        call sym_matvec_xp(k, kb, kdu, xr, yr)
-        call sym_matvec_xp(k, kb, kdu, xi, yi)
-        rr = real(b(:, j)%re, xp) - (real(fk%re, xp)*yr - real(fk%im, xp)*yi)
-        ri = real(b(:, j)%im, xp) - (real(fk%re, xp)*yi + real(fk%im, xp)*yr)
-        call sym_matvec_xp(m, mb, kdu, xr, yr)
-        call sym_matvec_xp(m, mb, kdu, xi, yi)
-        rr = rr + real(omega, xp)**2*yr
-        ri = ri + real(omega, xp)**2*yi
-        if (explicit) then
-          call sym_matvec_xp(c, cb, kdu, xr, yr)
-          call sym_matvec_xp(c, cb, kdu, xi, yi)
-          rr = rr + real(omega, xp)*yi
-          ri = ri - real(omega, xp)*yr
-        end if
-        d = cmplx(real(rr, wp), real(ri, wp), wp)
+        ! r = b - D x in double-double: D x = K x + i omega beta K x - omega^2 M x + i omega C x
+        ! (fk = 1 + i omega beta; fk = 1 with explicit C).
+        call residual_part(xrh, xrl, xih, xil, real(b(:, j)), -1.0_wp, rr)
+        call residual_part(xih, xil, xrh, xrl, aimag(b(:, j)), 1.0_wp, ri)
+        d = cmplx(rr, ri, wp)
         call lu_solve_1(d)
-        xr = xr + real(d%re, xp)
-        xi = xi + real(d%im, xp)
+        call dd_add_d(xrh, xrl, d%re, th, tl)
+        xrh = th
+        xrl = tl
+        call dd_add_d(xih, xil, d%im, th, tl)
+        xih = th
+        xil = tl
         dnorm = maxval(abs(d))
-        if (dnorm <= refine_tol*sqrt(maxval(xr**2 + xi**2)) .or. dnorm > 0.5_wp*dprev) exit
+        if (dnorm <= refine_tol*sqrt(maxval(xrh**2 + xih**2)) .or. dnorm > 0.5_wp*dprev) exit
         dprev = dnorm
       end do
-      q(:, j) = cmplx(real(xr, wp), real(xi, wp), wp)
+      q(:, j) = cmplx(xrh, xih, wp)
     end do
 
   contains
+
+    !> One part (real: sgn = -1, x = real part, y = imaginary part; imaginary: sgn = +1 with x, y
+    !> swapped) of r = b - D (x + i y): r = b - (K x + sgn fk_im K y - omega^2 M x
+    !> + sgn omega C y), every product exact and every sum compensated.
+    subroutine residual_part(xh, xl, yh, yl, bp, sgn, r)
+      real(wp), intent(in) :: xh(:), xl(:), yh(:), yl(:), bp(:), sgn
+      real(wp), intent(out) :: r(:)
+      real(wp), allocatable :: ah(:), al(:)
+      allocate(ah(n), al(n))
+      call sym_matvec_dd(k, kb, kdu, xh, xl, th, tl)
+      if (fk%im /= 0.0_wp) then
+        call sym_matvec_dd(k, kb, kdu, yh, yl, uh, ul)
+        call dd_mul_d(uh, ul, sgn*fk%im, ah, al)
+        call dd_add(th, tl, ah, al, uh, ul)
+        th = uh
+        tl = ul
+      end if
+      call sym_matvec_dd(m, mb, kdu, xh, xl, uh, ul)
+      call dd_mul_d(uh, ul, -omega, ah, al)
+      call dd_mul_d(ah, al, omega, uh, ul)
+      call dd_add(th, tl, uh, ul, ah, al)
+      th = ah
+      tl = al
+      if (explicit) then
+        call sym_matvec_dd(c, cb, kdu, yh, yl, uh, ul)
+        call dd_mul_d(uh, ul, sgn*omega, ah, al)
+        call dd_add(th, tl, ah, al, uh, ul)
+        th = uh
+        tl = ul
+      end if
+      call dd_add_d(-th, -tl, bp, ah, al)
+      r = ah
+    end subroutine residual_part
 
     complex(wp) function d_entry(i, j)
       integer, intent(in) :: i, j

@@ -4,6 +4,7 @@
 !> Entries are held as coordinate triplets; symmetric files list the lower triangle only.
 module udmap_mmio
   use udmap_kinds, only: wp
+  use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
   use udmap_error, only: error_type, fatal_error, UDMAP_EINPUT
   implicit none
   private
@@ -368,7 +369,8 @@ contains
     if (verify(tok(1:k), '+-0123456789.eEdD') /= 0) return
     if (scan(tok(1:k), '0123456789') == 0) return
     read(tok(1:k), *, iostat=ios) v
-    ok = ios == 0 .and. abs(v) <= huge(v)
+    ok = ios == 0
+    if (ok) ok = ieee_is_finite(v)
   end subroutine parse_real
 
   pure function itoa(i) result(s)

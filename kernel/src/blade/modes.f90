@@ -6,15 +6,15 @@
 !> absolute errors ~ eps lambda_max in every eigenvalue (relative 1e-7 for the lowest mode of
 !> blade A). Hence:
 !> - all modes (small models): dsygvd on the inverted pencil M z = mu K z, whose largest mu are
-!>   the lowest modes, each then refined by its Rayleigh quotient with the products in
-!>   extended precision;
+!>   the lowest modes, each then polished through its coupling by K computed in double-double;
 !> - the lowest modes (large models): subspace iteration with K^-1 M (Bathe), whose solves are
-!>   refined in extended precision once the subspace has settled.
+!>   refined in double-double once the subspace has settled.
 module udmap_modes
   use udmap_kinds, only: wp
   use udmap_error, only: error_type, fatal_error, UDMAP_ENUMERIC
   use udmap_lapack, only: dsygvd, dsyev
-  use udmap_band, only: xp, sym_matvec, sym_matvec_xp
+  use udmap_band, only: sym_matvec
+  use udmap_dd, only: sym_matvec_dd
   use udmap_linear_solve, only: spd_factor_type, spd_solve
   implicit none
   private
@@ -83,9 +83,10 @@ contains
   !> Each step: M-orthonormal basis Q (modified Gram-Schmidt, twice), Z = A Q, Rayleigh-Ritz on
   !> T = Q^T M A Q = (M Q)^T Z. Working with mu keeps the lowest modes accurate to rounding:
   !> the textbook Q^T K Q would need products with the stiff K, and Y^T M Y of the raw iterates
-  !> squares their conditioning. Converged when ||A x_r - mu_r x_r||_M <= 1e-13 mu_1 for the
-  !> Ritz pairs r < p and mu_1..mu_p have settled to 1e-13 mu_1; the solves are refined in extended precision once
-  !> plain solves stop improving.
+  !> squares their conditioning. Converged when ||A x_r - mu_r x_r||_M (r < p) and the changes
+  !> of mu_1..mu_p are below 1e-16 mu_1, or have settled at their rounding floor (<= 1e-11 mu_1
+  !> and no longer halving); the solves are refined in double-double once plain solves stop
+  !> improving. The Ritz vectors are then polished (see polish).
   subroutine lowest_modes(k, kb, m, mb, kd, kf, p, lambda, phi, error)
     real(wp), allocatable, intent(in) :: k(:, :), kb(:, :), m(:, :), mb(:, :)
     integer, intent(in) :: kd, p
@@ -206,7 +207,7 @@ contains
 
   !> Polishes the first p of the approximate eigenvectors x (n, q), M-orthonormal, with
   !> eigenvalue estimates lam(q), through their exact coupling by K: with K_r = X^T K x_j (K x_j
-  !> accumulated in extended precision, where it cancels digits),
+  !> accumulated in double-double, where it cancels digits),
   !> phi_j = x_j + sum_(i /= j) x_i K_r,ij/(K_r,jj - d_i), d_i = K_r,ii for i <= p else lam(i),
   !> lambda_j = K_r,jj (the Rayleigh quotient, second-order accurate), then mass-normalised.
   !> Eigenvectors of the inverted pencil carry errors ~ eps mu_1/gap, large for the higher
@@ -216,16 +217,14 @@ contains
     integer, intent(in) :: kd, p
     real(wp), intent(in) :: x(:, :), lam(:)
     real(wp), allocatable, intent(out) :: lambda(:), phi(:, :)
-    real(xp), allocatable :: xq(:), yq(:)
-    real(wp), allocatable :: kx(:, :), kr(:, :), mphi(:), d(:)
+    real(wp), allocatable :: kx(:, :), kr(:, :), mphi(:), d(:), zero(:), yl(:)
     integer :: i, j, n, nq
     n = size(x, 1)
     nq = size(x, 2)
-    allocate(xq(n), yq(n), kx(n, p), mphi(n), lambda(p), d(nq))
+    allocate(kx(n, p), mphi(n), lambda(p), d(nq), zero(n), yl(n))
+    zero = 0.0_wp
     do j = 1, p
-      xq = real(x(:, j), xp)
-      call sym_matvec_xp(k, kb, kd, xq, yq)
-      kx(:, j) = real(yq, wp)
+      call sym_matvec_dd(k, kb, kd, x(:, j), zero, kx(:, j), yl)
     end do
     kr = matmul(transpose(x), kx)
     d = lam
