@@ -83,9 +83,20 @@ contains
     allocate(loops(16))
     n = 0
     ! First interval from a tiny amplitude (every vertex proportional to it: k constant).
-    call next_loop(1e-9_wp*tab%gamma_b)
+    ! Start at 1e-3 gamma_b, where the loop's forces stand well above the resolution of the
+    ! preload forces (a tiny loop cannot tell a contact on its cone from one near it), and
+    ! step down past any kink below until the interval reaches down to zero.
+    p = 1e-3_wp*tab%gamma_b
+    do i = 1, 12
+      call probe(p, lo, hi)
+      if (allocated(error)) return
+      if (lo <= 1e-3_wp*p) exit
+      p = lo/4
+    end do
+    ! Trace the first interval again in its middle.
+    call next_loop(min(hi, p_stop)/2)
     if (allocated(error)) return
-    hi_prev = max(loops(1)%hi, loops(1)%p0)
+    hi_prev = max(min(loops(1)%hi, p_stop), loops(1)%p0)
     do while (hi_prev < p_stop*(1 - 1e-12_wp))
       if (n >= MAX_INTERVALS) then
         call fatal_error(error, "stiffness table: more than 400 changes of the loop topology "// &
@@ -102,14 +113,12 @@ contains
         if (lo <= hi_prev*(1 + 1e-9_wp) .or. p - hi_prev <= 1e-12_wp*p) exit
         p = (hi_prev + lo)/2
       end do
-      if (hi >= p_stop) then
-        ! The last, unbounded interval (plateaus not frozen): a point well inside it.
-        call next_loop(2*max(lo, hi_prev))
-      else
-        call next_loop((max(lo, hi_prev) + hi)/2)
-      end if
+      ! The interval holds the probe; rounding may put its ends a hair inside.
+      lo = max(min(lo, p), hi_prev)
+      hi = min(max(hi, p), p_stop)
+      call next_loop((lo + hi)/2)
       if (allocated(error)) return
-      hi_prev = max(loops(n)%hi, hi_prev*(1 + 1e-12_wp))
+      hi_prev = max(min(loops(n)%hi, p_stop), hi, hi_prev*(1 + 1e-12_wp))
     end do
 
     tab%n_int = n

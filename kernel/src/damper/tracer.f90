@@ -339,8 +339,8 @@ contains
     real(wp), intent(in), optional :: max_travel
     type(rates_type) :: rt
     integer :: pred(3), nev, i, nc, ic, best, ev_contact(10), ev_state(10)
-    real(wp) :: dgam, dcf, tc(10), tcp(10), g(3), s(3), N(3), T(3), gp(3), sp(3), Np(3), Tp(3)
-    real(wp) :: f(3), df(3), fp(3), remaining, step, step_p, cur
+    real(wp) :: dgam, dcf, tc(10), tcp(10), rate_of(10), g(3), s(3), N(3), T(3), gp(3), sp(3), Np(3), Tp(3)
+    real(wp) :: f(3), df(3), fp(3), remaining, step, step_p, cur, scale
     character(len=60) :: buf
 
     travel = 0
@@ -418,8 +418,14 @@ contains
       ! An event that coincides with the target to rounding (often identically in p, e.g. a
       ! contact that returns to its cone exactly at the reversal) is left to the next call:
       ! the target ends this one without a zero-length segment.
+      ! Coincidence is judged in gamma and in force (stopping at the target instead leaves
+      ! the contact past its boundary by less than the force tolerance of the classification),
+      ! but never beyond 1e-10 of the amplitude.
       if (has_target .and. ev_contact(best) /= 0) then
-        if (tc(best) >= remaining - 1e-13_wp*max(abs(target), abs(cur))) best = nc
+        scale = max(abs(target), abs(cur))
+        if (tc(best) >= remaining - max(1e-13_wp*scale, &
+          & min(TOL_FORCE*max(abs(st%CF), maxval(abs(N)), maxval(abs(T)))/rate_of(best), &
+          & 1e-10_wp*scale))) best = nc
       end if
       step = tc(best)
       step_p = tcp(best)
@@ -488,19 +494,20 @@ contains
           nc = nc + 1
           tc(nc) = max(f(k), 0.0_wp)/(-df(k))
           tcp(nc) = fp(k)/(-df(k))
+          rate_of(nc) = -df(k)
           ev_contact(nc) = i
           ev_state(nc) = states(k)
         end if
       end do
     end subroutine add_candidates
 
-    !> Requires d + d_p (p - p0) >= 0; pairs that vanish identically are structural ties.
+    !> Requires d + d_p (p - p0) >= 0. Gaps below the tie tolerance are ties at p0 (mostly
+    !> structural ones that hold for every p, e.g. a contact back on its cone at a reversal):
+    !> their p-derivatives are rounding noise and bound nothing.
     subroutine restrict(v, d, d_p)
       type(validity_type), intent(inout) :: v
       real(wp), intent(in) :: d, d_p
-      real(wp) :: tol_d
-      tol_d = 1e-12_wp*max(abs(v%p0), abs(travel), abs(cur))
-      if (abs(d) <= tol_d .and. abs(d_p) <= 1e-8_wp) return
+      if (abs(d) <= 1e-10_wp*max(abs(v%p0), abs(travel), abs(cur))) return
       if (d_p < 0) then
         v%hi = min(v%hi, v%p0 + d/(-d_p))
       else if (d_p > 0) then
@@ -544,7 +551,7 @@ contains
     character(len=120) :: buf
 
     call contact_forces(geo, st%mode, st%q, st%gamma, st%w, g, s, N, T)
-    tolF = TOL_FORCE*max(abs(st%CF), maxval(abs(N)), maxval(abs(T)))
+    tolF = force_tolerance(geo, st)
     tolR = TOL_RATE*(geo%rate_scale*abs(dgam) + abs(dcf))
     sig0 = 0
     do i = 1, 3
@@ -642,6 +649,15 @@ contains
       end do
     end subroutine snap_new_states
   end subroutine resolve_mode
+
+  !> Forces within this of a boundary count as on it: the resolution of the force sums.
+  pure real(wp) function force_tolerance(geo, st)
+    type(damper_geometry_type), intent(in) :: geo
+    type(damper_state_type), intent(in) :: st
+    real(wp) :: g(3), s(3), N(3), T(3)
+    call contact_forces(geo, st%mode, st%q, st%gamma, st%w, g, s, N, T)
+    force_tolerance = TOL_FORCE*max(abs(st%CF), maxval(abs(N)), maxval(abs(T)))
+  end function force_tolerance
 
   !> Moves `first` to the front of the candidate list (if it is in it).
   pure subroutine put_first(list, first)
