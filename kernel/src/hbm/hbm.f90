@@ -14,7 +14,7 @@
 module udmap_hbm
   use udmap_kinds, only: wp, pi
   use udmap_error, only: error_type, fatal_error, UDMAP_EINPUT, UDMAP_EPHYSICS, UDMAP_ENUMERIC
-  use udmap_hbm_lapack, only: dgesv, dgbtrf, dgbtrs, dgetrf, dgetrs
+  use udmap_lapack, only: dgesv, dgbtrf, dgbtrs, dgetrf, dgetrs
   use udmap_linear_structure, only: structure_type, structure_receptances_type, &
     & structure_receptances
   use udmap_hysteretic, only: hysteretic_element_type
@@ -43,7 +43,7 @@ module udmap_hbm
     integer :: target_iter = 4          !< step control: Newton iterations aimed at per step
     real(wp) :: max_angle = 0.35_wp     !< largest turn of the tangent per step [rad]
     integer :: max_steps = 20000        !< continuation steps per force
-    real(wp) :: peak_tol = 1.0e-11_wp   !< peak refinement: tolerance on the arc-length parameter
+    real(wp) :: peak_tol = 1.0e-10_wp   !< peak refinement: tolerance on the arc-length parameter
     integer :: aft_samples = 0          !< 0: exact event-driven AFT; N > 0: N samples per period
     integer :: aft_min_periods = 1      !< AFT: least periods after the ramp
     integer :: aft_max_periods = 8      !< AFT: most periods until the loop repeats
@@ -476,6 +476,8 @@ contains
       call newton_arclength(p, st, trial%x, trial%omega, a, xp, wp_, ok, it, error)
       if (allocated(error)) return
       if (.not.ok) then
+        ! at the rounding floor: the bracket already pins the peak, keep the best end
+        if (s_hi - s_lo <= 1.0e-6_wp*max(1.0_wp, s_hi)) exit
         call fatal_error(error, "hbm: Newton did not converge while refining the peak", &
           & UDMAP_ENUMERIC)
         return
@@ -643,11 +645,14 @@ contains
   end subroutine renormalise
 
   !> Newton convergence: the step is below tol, or the next one, predicted from two successive
-  !> contractions, is (saves the confirming iteration of a quadratically converging Newton).
+  !> contractions, is (saves the confirming iteration of a quadratically converging Newton), or
+  !> the steps stagnate just above tol (the rounding floor of an ill-conditioned full system).
   pure logical function converged(tol, stepn, prev, prev2)
     real(wp), intent(in) :: tol, stepn, prev, prev2
     converged = stepn <= tol
-    if (converged .or. prev >= huge(1.0_wp) .or. prev2 >= huge(1.0_wp)) return
+    if (converged .or. prev >= huge(1.0_wp)) return
+    converged = stepn <= 100.0_wp*tol .and. prev <= 100.0_wp*tol .and. stepn > 0.5_wp*prev
+    if (converged .or. prev2 >= huge(1.0_wp)) return
     converged = stepn <= 0.2_wp*prev .and. prev <= 0.5_wp*prev2 .and. stepn**2/prev <= tol
   end function converged
 

@@ -5,10 +5,12 @@
 module udmap_linear_structure
   use udmap_kinds, only: wp
   use udmap_error, only: error_type, fatal_error, UDMAP_EINPUT, UDMAP_ENUMERIC
-  use udmap_hbm_lapack, only: zgbtrf, zgbtrs, zgetrf, zgetrs
+  use udmap_lapack, only: zgbtrf, zgbtrs, zgetrf, zgetrs
+  use udmap_blade, only: blade_type, receptances_type
   implicit none
   private
   public :: structure_type, structure_receptances_type, new_structure, structure_receptances
+  public :: structure_from_blade
 
   !> Matrices of the linear blade. kd >= 0: M, K, C in LAPACK symmetric band storage 'U'
   !> (kd+1, ndof), A(i,j) = X(kd+1+i-j, j) for max(1,j-kd) <= i <= j; kd < 0: dense (ndof, ndof).
@@ -20,6 +22,8 @@ module udmap_linear_structure
     logical :: has_stress = .false.   !< whether s_K, s_M are given
     real(wp), allocatable :: M(:,:), K(:,:), C(:,:)
     real(wp), allocatable :: s_K(:), s_M(:)
+    !> The blade it was built from, if any: its (modal, exact) receptances are used.
+    type(blade_type), allocatable :: blade
   contains
     !> Entry (i, j) of 'M', 'K' or 'C'.
     procedure :: entry => structure_entry
@@ -100,6 +104,55 @@ contains
     end if
   end subroutine new_structure
 
+  !> The structure of a kernel blade (PHYSICS.md 1): its band (or dense) matrices, with
+  !> C = beta K unless the blade has an explicit C; the receptances come from the blade.
+  subroutine structure_from_blade(st, blade, error)
+    type(structure_type), intent(out) :: st
+    type(blade_type), intent(in) :: blade
+    type(error_type), allocatable, intent(out) :: error
+    if (blade%ndof < 1) then
+      call fatal_error(error, "structure: the blade has not been built", UDMAP_EINPUT)
+      return
+    end if
+    st%ndof = blade%ndof
+    st%gamma_dof = blade%gamma_dof
+    st%exc_dof = blade%exc_dof
+    if (blade%kd >= 0 .and. allocated(blade%Kb) .and. allocated(blade%Mb)) then
+      st%kd = blade%kd
+      st%M = blade%Mb
+      st%K = blade%Kb
+      if (blade%explicit_C) then
+        if (.not.allocated(blade%Cb)) then
+          call fatal_error(error, "structure: explicit C of the blade is not in band storage", &
+            & UDMAP_EINPUT)
+          return
+        end if
+        st%C = blade%Cb
+      else
+        st%C = blade%beta*blade%Kb
+      end if
+    else if (allocated(blade%K) .and. allocated(blade%M)) then
+      st%kd = -1
+      st%M = blade%M
+      st%K = blade%K
+      if (blade%explicit_C) then
+        st%C = blade%C
+      else
+        st%C = blade%beta*blade%K
+      end if
+    else
+      call fatal_error(error, "structure: the blade keeps neither band nor dense matrices", &
+        & UDMAP_EINPUT)
+      return
+    end if
+    st%has_stress = blade%has_stress
+    if (blade%has_stress) then
+      st%s_K = blade%s_K
+      st%s_M = blade%s_M
+    end if
+    allocate(st%blade, source=blade)
+  end subroutine structure_from_blade
+
   !> Entry (i, j) of the matrix named by `which` ('M', 'K' or 'C').
   pure real(wp) function structure_entry(self, which, i, j) result(a)
     class(structure_type), intent(in) :: self
@@ -126,12 +179,14 @@ contains
     end select
   end function structure_entry
 
-  !> Receptances at omega [rad/s] by a direct (banded or dense) complex LU solve.
+  !> Receptances at omega [rad/s]: the blade's when the structure has one, else by a direct
+  !> (banded or dense) complex LU solve.
   subroutine structure_receptances(st, omega, r, error)
     type(structure_type), intent(in) :: st
     real(wp), intent(in) :: omega
     type(structure_receptances_type), intent(out) :: r
     type(error_type), allocatable, intent(out) :: error
+    type(receptances_type) :: rb
     complex(wp), allocatable :: A(:,:), X(:,:), DX(:,:)
     integer, allocatable :: ipiv(:)
     integer :: n, kd, i, j, info, nrhs, ldab
@@ -139,6 +194,13 @@ contains
     integer :: lo, hi
     real(wp), allocatable :: s(:)
     character(len=12) :: buf
+    if (allocated(st%blade)) then
+      call st%blade%receptances(omega, rb, error, derivatives=.true.)
+      if (allocated(error)) return
+      r%gg = rb%gg; r%gE = rb%gE; r%EE = rb%EE; r%sE = rb%sE; r%sg = rb%sg
+      r%dgg = rb%dgg; r%dgE = rb%dgE; r%dEE = rb%dEE
+      return
+    end if
     n = st%ndof
     kd = st%kd
     nrhs = 2

@@ -17,7 +17,7 @@
 module udmap_newmark
   use udmap_kinds, only: wp, pi
   use udmap_error, only: error_type, fatal_error, UDMAP_EINPUT, UDMAP_EPHYSICS, UDMAP_ENUMERIC
-  use udmap_hbm_lapack, only: dpbtrf, dpbtrs, dpotrf, dpotrs
+  use udmap_lapack, only: dpbtrf, dpbtrs, dpotrf, dpotrs
   use udmap_linear_structure, only: structure_type
   use udmap_hysteretic, only: hysteretic_element_type
   use udmap_hbm, only: hbm_settings_type, hbm_point_type, hbm_peak
