@@ -37,7 +37,8 @@ module udmap_api_hbm
     real(c_double) :: peak_tol
     integer(c_int) :: aft_samples, aft_max_periods
     real(c_double) :: fd_step, gamma_limit
-    integer(c_int) :: full_band
+    integer(c_int) :: full_band, jacobian_reuse
+    real(c_double) :: tol_path
   end type c_hbm_settings
 
   !> udmap_hbm_point.
@@ -365,6 +366,8 @@ contains
     c%fd_step = s%fd_step
     c%gamma_limit = s%gamma_limit
     c%full_band = merge(1, 0, s%full_band)
+    c%jacobian_reuse = merge(1, 0, s%jacobian_reuse)
+    c%tol_path = s%tol_path
   end subroutine settings_to_c
 
   subroutine settings_from_c(c, s, error)
@@ -392,6 +395,8 @@ contains
     s%fd_step = c%fd_step
     s%gamma_limit = c%gamma_limit
     s%full_band = c%full_band /= 0
+    s%jacobian_reuse = c%jacobian_reuse /= 0
+    s%tol_path = c%tol_path
   end subroutine settings_from_c
 
   subroutine point_to_c(p, c)

@@ -58,7 +58,7 @@ program test_hbm_chain
     call check_close(suite, "sigma_a F ="//tag, pc%sigma_a, sig_x(i), 1.0e-7_wp)
     call check_close(suite, "u_E F ="//tag, pc%u_E, uE_x(i), 1.0e-7_wp)
     call check_close(suite, "full = condensed gamma_P F ="//tag, pf%gamma_P, pc%gamma_P, 1.0e-10_wp)
-    call check_close(suite, "full = condensed f_res F ="//tag, pf%f_res, pc%f_res, 1.0e-10_wp)
+    call check_close(suite, "full = condensed f_res F ="//tag, pf%f_res, pc%f_res, 1.0e-9_wp)
     call check_close(suite, "full = condensed sigma_a F ="//tag, pf%sigma_a, pc%sigma_a, 1.0e-9_wp)
     call check_close(suite, "full = condensed u_E F ="//tag, pf%u_E, pc%u_E, 1.0e-9_wp)
   end do

@@ -207,7 +207,7 @@ typedef struct {
   int harmonics;       /* H: harmonics 1..H (default 1) */
   int harmonic0;       /* 1: also balance the static harmonic 0 (default 0) */
   int variant;         /* UDMAP_HBM_CONDENSED (default) or UDMAP_HBM_FULL */
-  double tol;          /* Newton: relative step tolerance (default 1e-10) */
+  double tol;          /* Newton: relative step tolerance at the peak (default 1e-10) */
   int max_iter;        /* Newton iterations per corrector (default 30) */
   double ds_initial;   /* arc-length steps in relative amplitude/frequency units: */
   double ds_min;       /*   first 0.05, smallest 1e-9, largest 0.3 */
@@ -221,6 +221,8 @@ typedef struct {
   double fd_step;      /* relative finite-difference step of the damper Jacobian (1e-7) */
   double gamma_limit;  /* amplitude [rad] beyond which the response is unbounded (10) */
   int full_band;       /* 1: continue to f_max (default); 0: stop once past the peak */
+  int jacobian_reuse;  /* 1: keep the damper Jacobian while Newton contracts well (default) */
+  double tol_path;     /* Newton: relative step tolerance along the path (default 1e-6) */
 } udmap_hbm_settings;
 
 void udmap_hbm_defaults(udmap_hbm_settings *settings);

@@ -35,7 +35,8 @@ module udmap_hbm
     integer :: harmonics = 1            !< H: harmonics 1..H
     logical :: harmonic0 = .false.      !< also balance the static harmonic 0
     integer :: variant = HBM_CONDENSED  !< HBM_CONDENSED or HBM_FULL
-    real(wp) :: tol = 1.0e-10_wp        !< Newton: relative step tolerance (amplitude, frequency)
+    real(wp) :: tol = 1.0e-10_wp        !< Newton: relative step tolerance at the peak and outputs
+    real(wp) :: tol_path = 1.0e-6_wp    !< Newton: relative step tolerance along the path
     integer :: max_iter = 30            !< Newton iterations per corrector
     real(wp) :: ds_initial = 0.05_wp    !< first arc-length step (relative amplitude/frequency units)
     real(wp) :: ds_min = 1.0e-9_wp      !< smallest step before giving up
@@ -51,6 +52,9 @@ module udmap_hbm
     real(wp) :: fd_step = 1.0e-7_wp     !< relative finite-difference step of the damper Jacobian
     real(wp) :: gamma_limit = 10.0_wp   !< amplitude [rad] beyond which the response is unbounded
     logical :: full_band = .true.       !< continue to f_max; else stop when past the peak
+    !> Keep the damper Jacobian from one Newton iteration (and step) to the next while Newton
+    !> contracts well (chord steps: one AFT per iteration); .false.: new one every iteration.
+    logical :: jacobian_reuse = .true.
   end type hbm_settings_type
 
   !> The peak of the response for one force (fields as the backbone's, plus statistics).
@@ -100,6 +104,10 @@ module udmap_hbm
     integer, allocatable :: ipiv(:)
     integer :: kb = 0
     logical :: banded = .false.
+    !> omega-derivative of the residual at the last Newton iterate (its J_x is still factorised)
+    real(wp), allocatable :: Jw_last(:)
+    !> p%JM holds a damper Jacobian that may be reused
+    logical :: jm_valid = .false.
     integer :: iterations = 0
   end type problem_type
 
@@ -201,7 +209,8 @@ contains
       call fatal_error(error, "hbm: variant must be condensed (0) or full (1)", UDMAP_EINPUT)
       return
     end if
-    if (.not.(settings%tol > 0.0_wp) .or. .not.(settings%ds_min > 0.0_wp) .or. &
+    if (.not.(settings%tol > 0.0_wp) .or. .not.(settings%tol_path > 0.0_wp) .or. &
+        & .not.(settings%ds_min > 0.0_wp) .or. &
         & .not.(settings%ds_max >= settings%ds_min) .or. .not.(settings%ds_initial > 0.0_wp) &
         & .or. .not.(settings%fd_step > 0.0_wp) .or. .not.(settings%peak_tol > 0.0_wp) .or. &
         & .not.(settings%max_angle > 0.0_wp) .or. .not.(settings%gamma_limit > 0.0_wp) .or. &
@@ -271,7 +280,7 @@ contains
     call stuck_guess(p, st, omega_a, cur%x, error)
     if (allocated(error)) return
     cur%omega = omega_a
-    call newton_fixed(p, st, cur%x, cur%omega, ok, it, error)
+    call newton_fixed(p, st, cur%x, cur%omega, p%set%tol_path, ok, it, error)
     if (allocated(error)) return
     if (.not.ok) then
       call fatal_error(error, "hbm: Newton did not converge at f_min (try more iterations or "// &
@@ -301,12 +310,20 @@ contains
       end if
       call corrector_step(p, st, cur, ds, nxt, ok, it, error)
       if (allocated(error)) return
+      ! jumps to another part of the curve: a corrected point below the start, far from the
+      ! predictor (a corner of angle theta puts it ds tan(theta) away), or an amplitude changed
+      ! threefold in one step
+      if (ok) ok = nxt%omega >= omega_a .and. nxt%A <= 3.0_wp*cur%A .and. 3.0_wp*nxt%A >= cur%A
+      if (ok) ok = sqrt(scaled_dot(p, nxt%x - cur%x - ds*cur%tx, nxt%omega - cur%omega - &
+        & ds*cur%tw, nxt%x - cur%x - ds*cur%tx, nxt%omega - cur%omega - ds*cur%tw, cur%A_s)) &
+        & <= 3.0_wp*ds
       if (ok) then
         ! the tangent may turn by at most max_angle per step; a turn that does not shrink with
-        ! the step is a corner of the curve (stick-slip transition of the damper): accept it
+        ! a small step is a corner of the curve (stick-slip transition of the damper): accept it
         cosang = scaled_dot(p, cur%tx, cur%tw, nxt%tx, nxt%tw, cur%A_s)
         angle = acos(max(-1.0_wp, min(1.0_wp, cosang)))
-        if (angle > p%set%max_angle .and. .not.(angle > 0.7_wp*angle_rejected)) then
+        if (angle > p%set%max_angle .and. .not.(angle > 0.7_wp*angle_rejected .and. &
+            & ds <= 0.01_wp .and. angle < 0.5_wp*pi)) then
           ok = .false.
           angle_rejected = angle
         end if
@@ -322,12 +339,9 @@ contains
       end if
       if (nxt%omega >= omega_b) then
         ! land exactly on the band end
-        call land_at(p, st, cur, nxt, omega_b, error)
+        call land_at(p, st, cur, nxt, omega_b, merge(p%set%tol, p%set%tol_path, at_end), error)
         if (allocated(error)) return
         last = .true.
-      else if (nxt%omega < omega_a) then
-        call fatal_error(error, "hbm: the response curve turned back below f_min", UDMAP_EPHYSICS)
-        return
       end if
       steps = steps + 1
       angle_rejected = huge(1.0_wp)
@@ -355,8 +369,17 @@ contains
       if (.not.at_end .and. .not.p%set%full_band .and. have_best) then
         if (nxt%A < 0.5_wp*A_best .and. nxt%dA < 0.0_wp) last = .true.
       end if
-      fac = real(p%set%target_iter, wp)/real(max(it, 1), wp)
-      ds = min(p%set%ds_max, ds*max(0.5_wp, min(2.0_wp, fac)))
+      ! step control on the Newton iterations of this step
+      if (2*it <= p%set%target_iter) then
+        fac = 2.0_wp
+      else if (it < p%set%target_iter) then
+        fac = 1.5_wp
+      else if (it > p%set%target_iter + 1) then
+        fac = 0.6_wp
+      else
+        fac = 1.0_wp
+      end if
+      ds = min(p%set%ds_max, ds*fac)
       call move_alloc(nxt%x, cur%x)
       call move_alloc(nxt%tx, cur%tx)
       cur%omega = nxt%omega
@@ -404,21 +427,23 @@ contains
     wp_ = cur%omega + ds*cur%tw
     nxt%x = xp
     nxt%omega = wp_
-    call newton_arclength(p, st, nxt%x, nxt%omega, cur, xp, wp_, ok, it, error)
+    call newton_arclength(p, st, nxt%x, nxt%omega, cur, xp, wp_, p%set%tol_path, ok, it, error)
     if (allocated(error) .or. .not.ok) return
     nxt%A_s = cur%A_s
     allocate(nxt%tx(p%nx))
-    call tangent(p, st, nxt, cur%tx, cur%tw, error, cur%A_s)
+    ! tangent from a new Jacobian at the converged point; with jacobian_reuse it also serves
+    ! the chord iterations of the next corrector
+    call tangent(p, st, nxt, cur%tx, cur%tw, error, cur%A_s, reuse=.not.p%set%jacobian_reuse)
   end subroutine corrector_step
 
   !> Replaces nxt (beyond omega_end) by the point at omega_end, by Newton at fixed frequency
   !> from the linear interpolation between cur and nxt.
-  subroutine land_at(p, st, cur, nxt, omega_end, error)
+  subroutine land_at(p, st, cur, nxt, omega_end, tol, error)
     type(problem_type), intent(inout) :: p
     type(structure_type), intent(in) :: st
     type(curve_point_type), intent(in) :: cur
     type(curve_point_type), intent(inout) :: nxt
-    real(wp), intent(in) :: omega_end
+    real(wp), intent(in) :: omega_end, tol
     type(error_type), allocatable, intent(out) :: error
     real(wp) :: th
     real(wp), allocatable :: tx_old(:)
@@ -429,7 +454,7 @@ contains
     if (nxt%omega /= cur%omega) th = (omega_end - cur%omega)/(nxt%omega - cur%omega)
     nxt%x = cur%x + th*(nxt%x - cur%x)
     nxt%omega = omega_end
-    call newton_fixed(p, st, nxt%x, nxt%omega, ok, it, error)
+    call newton_fixed(p, st, nxt%x, nxt%omega, tol, ok, it, error)
     if (allocated(error)) return
     if (.not.ok) then
       call fatal_error(error, "hbm: Newton did not converge at the band end", UDMAP_ENUMERIC)
@@ -473,7 +498,7 @@ contains
       trial%omega = w_lo + (s - s_lo)/(s_hi - s_lo)*(w_hi - w_lo)
       xp = a%x + s*a%tx
       wp_ = a%omega + s*a%tw
-      call newton_arclength(p, st, trial%x, trial%omega, a, xp, wp_, ok, it, error)
+      call newton_arclength(p, st, trial%x, trial%omega, a, xp, wp_, p%set%tol, ok, it, error)
       if (allocated(error)) return
       if (.not.ok) then
         ! at the rounding floor: the bracket already pins the peak, keep the best end
@@ -503,11 +528,11 @@ contains
   ! ------------------------------------------------------------------ Newton
 
   !> Newton at fixed omega from x.
-  subroutine newton_fixed(p, st, x, omega, ok, it, error)
+  subroutine newton_fixed(p, st, x, omega, tol, ok, it, error)
     type(problem_type), intent(inout) :: p
     type(structure_type), intent(in) :: st
     real(wp), intent(inout) :: x(:)
-    real(wp), intent(in) :: omega
+    real(wp), intent(in) :: omega, tol
     logical, intent(out) :: ok
     integer, intent(out) :: it
     type(error_type), allocatable, intent(out) :: error
@@ -530,7 +555,7 @@ contains
       A_s = amplitude_scale(p, x)
       stepn = norm2(dx(p%goff+1:p%goff+p%m))/A_s
       if (.not.(stepn <= huge(1.0_wp))) return
-      if (converged(p%set%tol, stepn, prev, prev2)) then
+      if (converged(tol, stepn, prev, prev2)) then
         ok = .true.
         return
       end if
@@ -541,18 +566,19 @@ contains
   end subroutine newton_fixed
 
   !> Newton on [R = 0; <t, y - y_p> = 0] with the tangent and metric of `base`.
-  subroutine newton_arclength(p, st, x, omega, base, xp, omega_p, ok, it, error)
+  subroutine newton_arclength(p, st, x, omega, base, xp, omega_p, tol, ok, it, error)
     type(problem_type), intent(inout) :: p
     type(structure_type), intent(in) :: st
     real(wp), intent(inout) :: x(:), omega
     type(curve_point_type), intent(in) :: base
-    real(wp), intent(in) :: xp(:), omega_p
+    real(wp), intent(in) :: xp(:), omega_p, tol
     logical, intent(out) :: ok
     integer, intent(out) :: it
     type(error_type), allocatable, intent(out) :: error
     real(wp), allocatable :: R(:), Jw(:), dx(:), cx(:)
     real(wp) :: dw, cw, Nres, stepn, prev, prev2
     integer :: grow
+    logical :: fresh
     allocate(R(p%nx), Jw(p%nx), dx(p%nx))
     cx = base%tx(p%goff+1:p%goff+p%m)/base%A_s**2
     cw = base%tw/p%W_s**2
@@ -560,8 +586,9 @@ contains
     prev = huge(1.0_wp)
     prev2 = huge(1.0_wp)
     grow = 0
+    fresh = .not.(p%set%jacobian_reuse .and. p%jm_valid)
     do it = 1, p%set%max_iter
-      call evaluate(p, st, x, omega, R, error, Jw=Jw)
+      call evaluate(p, st, x, omega, R, error, Jw=Jw, damper_jacobian=fresh)
       if (allocated(error)) return
       call factor(p, st, omega, error)
       if (allocated(error)) return
@@ -569,30 +596,35 @@ contains
         & cw*(omega - omega_p)
       call bordered_solve(p, Jw, cx, cw, -R, -Nres, dx, dw, error)
       if (allocated(error)) return
+      p%Jw_last = Jw
       x = x + dx
       omega = omega + dw
       p%iterations = p%iterations + 1
       stepn = norm2(dx(p%goff+1:p%goff+p%m))/base%A_s + abs(dw)/p%W_s
-      if (.not.(stepn <= huge(1.0_wp)) .or. .not.(omega > 0.0_wp)) return
+      if (.not.(stepn <= huge(1.0_wp)) .or. .not.(omega > 0.0_wp)) exit
       ! converged when the step, or the next one predicted from the contraction rate, is small
-      if (converged(p%set%tol, stepn, prev, prev2)) then
+      if (converged(tol, stepn, prev, prev2)) then
         ok = .true.
         return
       end if
-      if (amplitude(p, x) > 10.0_wp*p%set%gamma_limit) return
+      if (amplitude(p, x) > 10.0_wp*p%set%gamma_limit) exit
       ! divergence: the step keeps growing
       if (stepn > prev) then
         grow = grow + 1
-        if (grow >= 3) return
+        if (grow >= 3) exit
       end if
+      ! a reused damper Jacobian that no longer contracts well is renewed
+      fresh = .not.p%set%jacobian_reuse .or. stepn > 0.25_wp*prev
       prev2 = prev
       prev = stepn
     end do
+    ! failed: start the next attempt with a new Jacobian
+    p%jm_valid = .false.
   end subroutine newton_arclength
 
   !> Tangent at pt (converged): solves [J_x Jw; <t_ref, .>] t = [0; 1], normalises it in the
   !> metric and sets pt%A, pt%dA. With central, the damper Jacobian by central differences.
-  subroutine tangent(p, st, pt, tx_ref, tw_ref, error, A_s, central)
+  subroutine tangent(p, st, pt, tx_ref, tw_ref, error, A_s, central, reuse)
     type(problem_type), intent(inout) :: p
     type(structure_type), intent(in) :: st
     type(curve_point_type), intent(inout) :: pt
@@ -600,16 +632,25 @@ contains
     type(error_type), allocatable, intent(out) :: error
     real(wp), intent(in), optional :: A_s
     logical, intent(in), optional :: central
+    !> Use the Jacobian of the last Newton iterate (already factorised) instead of a new one.
+    logical, intent(in), optional :: reuse
     real(wp), allocatable :: R(:), Jw(:), cx(:), zero(:)
     real(wp) :: cw, tw, nrm, As
+    logical :: again
     allocate(R(p%nx), Jw(p%nx), zero(p%nx))
     zero = 0.0_wp
     As = amplitude_scale(p, pt%x)
     if (present(A_s)) As = A_s
-    call evaluate(p, st, pt%x, pt%omega, R, error, Jw=Jw, central=central)
-    if (allocated(error)) return
-    call factor(p, st, pt%omega, error)
-    if (allocated(error)) return
+    again = .false.
+    if (present(reuse)) again = reuse .and. allocated(p%Jw_last)
+    if (again) then
+      Jw = p%Jw_last
+    else
+      call evaluate(p, st, pt%x, pt%omega, R, error, Jw=Jw, central=central)
+      if (allocated(error)) return
+      call factor(p, st, pt%omega, error)
+      if (allocated(error)) return
+    end if
     cx = tx_ref(p%goff+1:p%goff+p%m)/As**2
     cw = tw_ref/p%W_s**2
     call bordered_solve(p, Jw, cx, cw, zero, 1.0_wp, pt%tx, tw, error)
@@ -660,7 +701,7 @@ contains
 
   !> The residual R(x, omega), its omega-derivative Jw and the damper Jacobian p%JM (finite
   !> differences of the AFT in the gamma unknowns, forward or central).
-  subroutine evaluate(p, st, x, omega, R, error, Jw, central)
+  subroutine evaluate(p, st, x, omega, R, error, Jw, central, damper_jacobian)
     type(problem_type), intent(inout) :: p
     type(structure_type), intent(in) :: st
     real(wp), intent(in) :: x(:), omega
@@ -668,18 +709,23 @@ contains
     type(error_type), allocatable, intent(out) :: error
     real(wp), intent(out), optional :: Jw(:)
     logical, intent(in), optional :: central
+    !> With Jw: also the damper Jacobian by finite differences (default); .false. keeps p%JM.
+    logical, intent(in), optional :: damper_jacobian
     real(wp), allocatable :: xg(:), Mv(:), Mp(:), Mm(:)
     real(wp) :: delta, scale
     integer :: c
-    logical :: cen
+    logical :: cen, fd
     cen = .false.
     if (present(central)) cen = central
+    fd = present(Jw)
+    if (present(damper_jacobian)) fd = fd .and. damper_jacobian
     allocate(xg(p%m))
     xg = x(p%goff+1:p%goff+p%m)
     call damper_vector(p, xg, Mv, error)
     if (allocated(error)) return
     call unpack_moment(p, Mv)
-    if (present(Jw)) then
+    if (fd) then
+      p%jm_valid = .true.
       scale = max(norm2(xg), tiny(1.0_wp))
       do c = 1, p%m
         delta = p%set%fd_step*scale

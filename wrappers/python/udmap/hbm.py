@@ -38,7 +38,8 @@ class HbmSettings(ctypes.Structure):
                 ("max_steps", ctypes.c_int), ("peak_tol", ctypes.c_double),
                 ("aft_samples", ctypes.c_int), ("aft_max_periods", ctypes.c_int),
                 ("fd_step", ctypes.c_double), ("gamma_limit", ctypes.c_double),
-                ("full_band", ctypes.c_int)]
+                ("full_band", ctypes.c_int), ("jacobian_reuse", ctypes.c_int),
+                ("tol_path", ctypes.c_double)]
 
 
 class HbmPoint(ctypes.Structure):
