@@ -346,8 +346,9 @@ contains
       steps = steps + 1
       angle_rejected = huge(1.0_wp)
       if (nxt%A > p%set%gamma_limit) then
-        call fatal_error(error, "hbm: the response exceeds gamma_limit: unbounded (F_E at or "// &
-          & "above the limit force with little damping)", UDMAP_EPHYSICS)
+        call fatal_error(error, "hbm: the response exceeds gamma_limit (unbounded: F_E at or "// &
+          & "above the limit force with little damping, or a force far beyond the model)", &
+          & UDMAP_EPHYSICS)
         return
       end if
       if (present(curve)) call curve_push(p, st, curve, nxt)

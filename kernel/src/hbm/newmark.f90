@@ -360,7 +360,8 @@ contains
         call el%copy_state(trial)
         if (.not.(abs(gam) <= set%gamma_limit)) then
           call fatal_error(error, "dti: |gamma_P| exceeds gamma_limit: the response is "// &
-            & "unbounded (F_E at or above the limit force with little damping)", UDMAP_EPHYSICS)
+            & "unbounded (F_E at or above the limit force with little damping, or a force far "// &
+            & "beyond the model)", UDMAP_EPHYSICS)
           return
         end if
       end do
