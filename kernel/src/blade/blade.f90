@@ -14,10 +14,11 @@
 !>   valid for omega <= omega_d/2 (omega_d = w_(nfast+1), so |z|/omega_d^2 <= 1/4). Each call
 !>   takes as many terms as the actual |z| needs for 1e-17 relative (a handful in the band of a
 !>   resonance; at most blade_residual_terms = 28), so the sum is exact to rounding, without
-!>   allocation or LAPACK. Where the series is not valid: the full modal sum over all modes
-!>   (models with every mode computed) or the direct solve below.
+!>   allocation or LAPACK. Above omega_d/2: the direct solve below (a modal sum far above the
+!>   first modes cancels digits between its terms).
 !>   * ndof <= blade_full_modal_limit: all modes by dsygvd; nfast = min(ndof, blade_fast_modes)
-!>     and the moments R_n are sums over the computed modes.
+!>     and the moments R_n are sums over the computed modes (kept_modes >= ndof: every mode
+!>     summed term by term at all frequencies, no series).
 !>   * larger models: the lowest `kept_modes` (default blade_kept_modes) by subspace iteration;
 !>     the moments come from solves with K, projected off the kept modes,
 !>     R_n = a^T K^-1 (M K^-1)^n b - sum_kept c_r/w_r^(2(n+1)), without that cancellation.
@@ -100,7 +101,8 @@ module udmap_blade
     integer :: nres = 0
     !> First mode of the series, w_(nfast+1) [rad/s] (0 when nfast = ndof).
     real(wp) :: omega_d = 0
-    !> The fast path (and its series) is used up to this circular frequency.
+    !> The modal path (and its series) is used up to this circular frequency, the direct solve
+    !> above.
     real(wp) :: omega_fast_max = huge(1.0_wp)
     !> omega_r^2 of the computed modes.
     real(wp), allocatable :: w2(:)
@@ -432,16 +434,9 @@ contains
       call fatal_error(error, "the blade has not been built", UDMAP_EINPUT)
       return
     end if
-    if (self%explicit_C .or. (omega > self%omega_fast_max .and. self%nmodes < self%ndof)) then
+    if (self%explicit_C .or. omega > self%omega_fast_max) then
       call direct_receptances(self, omega, deriv, r, error)
       if (allocated(error)) return
-    else if (omega > self%omega_fast_max) then
-      ! Beyond the series: every mode term by term.
-      if (deriv) then
-        call modal_receptances_deriv(self, omega, self%nmodes, r)
-      else
-        call modal_receptances(self, omega, self%nmodes, r)
-      end if
     else if (deriv) then
       call modal_receptances_deriv(self, omega, self%nfast, r)
     else

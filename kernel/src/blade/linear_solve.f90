@@ -18,6 +18,9 @@ module udmap_linear_solve
 
   !> Maximum number of refinement steps of one solve.
   integer, parameter :: max_refine = 30
+  !> Refinement stops when the correction is below this fraction of the largest entry: far
+  !> below rounding, so that entries 1e6 times smaller than the largest are still exact.
+  real(wp), parameter :: refine_tol = 1.0e-6_wp*epsilon(1.0_wp)
 
   !> Cholesky factor (uplo = 'U') of a symmetric positive definite matrix: dense (kd < 0)
   !> or in band storage with half-bandwidth kd.
@@ -92,8 +95,9 @@ contains
         call plain_solve_1(f, d)
         xx = xx + real(d, xp)
         dnorm = maxval(abs(d))
-        ! Converged to working precision, or stalled (eps kappa >= 1: nothing better exists).
-        if (dnorm <= 2*epsilon(1.0_wp)*maxval(abs(xx)) .or. dnorm > 0.5_wp*dprev) exit
+        ! Converged (well below rounding of the largest entry, so that small entries are
+        ! accurate too), or stalled (at the floor, or eps kappa >= 1).
+        if (dnorm <= refine_tol*maxval(abs(xx)) .or. dnorm > 0.5_wp*dprev) exit
         dprev = dnorm
       end do
       x(:, j) = real(xx, wp)
@@ -209,7 +213,7 @@ contains
         xr = xr + real(d%re, xp)
         xi = xi + real(d%im, xp)
         dnorm = maxval(abs(d))
-        if (dnorm <= 2*epsilon(1.0_wp)*sqrt(maxval(xr**2 + xi**2)) .or. dnorm > 0.5_wp*dprev) exit
+        if (dnorm <= refine_tol*sqrt(maxval(xr**2 + xi**2)) .or. dnorm > 0.5_wp*dprev) exit
         dprev = dnorm
       end do
       q(:, j) = cmplx(real(xr, wp), real(xi, wp), wp)

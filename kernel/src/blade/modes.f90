@@ -18,7 +18,7 @@ module udmap_modes
   use udmap_linear_solve, only: spd_factor_type, spd_solve
   implicit none
   private
-  public :: all_modes, lowest_modes, rayleigh_refine
+  public :: all_modes, lowest_modes, polish
 
   character(len=*), parameter :: fmt_i = '(i0)'
   integer, parameter :: i8 = selected_int_kind(18)
@@ -30,7 +30,7 @@ contains
     real(wp), intent(in) :: k(:, :), m(:, :)
     real(wp), allocatable, intent(out) :: lambda(:), phi(:, :)
     type(error_type), allocatable, intent(out) :: error
-    real(wp), allocatable :: a(:, :), b(:, :), mu(:), work(:)
+    real(wp), allocatable :: a(:, :), b(:, :), mu(:), work(:), x(:, :)
     integer, allocatable :: iwork(:)
     real(wp) :: wq(1)
     integer :: iq(1), n, info, lwork, liwork, r
@@ -56,41 +56,17 @@ contains
       return
     end if
     ! z^T K z = 1 and z^T M z = mu: phi = z/sqrt(mu), lambda = 1/mu; largest mu first.
-    allocate(lambda(n), phi(n, n))
+    allocate(x(n, n))
     do r = 1, n
-      lambda(r) = 1.0_wp/mu(n+1-r)
-      phi(:, r) = a(:, n+1-r)/sqrt(mu(n+1-r))
+      x(:, r) = a(:, n+1-r)/sqrt(mu(n+1-r))
     end do
     block
-      real(wp), allocatable :: none(:, :)
-      real(wp), allocatable :: kk(:, :), mm(:, :)
-      kk = k
-      mm = m
-      call rayleigh_refine(kk, none, mm, none, 0, lambda, phi)
+      real(wp), allocatable :: none(:, :), kk(:, :), mm(:, :)
+      allocate(kk, source=k)
+      allocate(mm, source=m)
+      call polish(kk, none, mm, none, 0, x, n, lambda, phi)
     end block
   end subroutine all_modes
-
-  !> Replaces each lambda(r) by the Rayleigh quotient of phi(:, r) and mass-normalises it, with
-  !> the products in extended precision (the quotient's error is second order in the error of
-  !> the vector).
-  subroutine rayleigh_refine(k, kb, m, mb, kd, lambda, phi)
-    real(wp), allocatable, intent(in) :: k(:, :), kb(:, :), m(:, :), mb(:, :)
-    integer, intent(in) :: kd
-    real(wp), intent(inout) :: lambda(:), phi(:, :)
-    real(xp), allocatable :: x(:), y(:)
-    real(xp) :: xkx, xmx
-    integer :: r
-    allocate(x(size(phi, 1)), y(size(phi, 1)))
-    do r = 1, size(lambda)
-      x = real(phi(:, r), xp)
-      call sym_matvec_xp(k, kb, kd, x, y)
-      xkx = sum(x*y)
-      call sym_matvec_xp(m, mb, kd, x, y)
-      xmx = sum(x*y)
-      lambda(r) = real(xkx/xmx, wp)
-      phi(:, r) = real(x/sqrt(xmx), wp)
-    end do
-  end subroutine rayleigh_refine
 
   !> The lowest p modes by subspace iteration on A = K^-1 M (M-self-adjoint, eigenvalues
   !> mu = 1/lambda) with q = min(n, max(2p, p+8)) vectors, using the Cholesky factor `kf` of K.
@@ -174,11 +150,10 @@ contains
         & UDMAP_ENUMERIC)
       return
     end if
-    lambda = 1.0_wp/mu(1:p)
-    phi = x(:, 1:p)
-    call rayleigh_refine(k, kb, m, mb, kd, lambda, phi)
+    call polish(k, kb, m, mb, kd, x, p, lambda, phi)
 
   contains
+
 
     real(wp) function m_norm(w)
       real(wp), intent(in) :: w(:)
@@ -218,6 +193,42 @@ contains
       end do
     end subroutine orthonormalize
   end subroutine lowest_modes
+
+  !> Polishes approximate eigenvectors x (n, q), M-orthonormal, through their exact coupling by
+  !> K: with K_r = X^T K X (K X accumulated in extended precision, where it cancels digits),
+  !> phi_j = x_j + sum_(i /= j) x_i K_r,ij/(K_r,jj - K_r,ii) for j <= p, lambda_j = K_r,jj (the
+  !> Rayleigh quotient, second-order accurate), then mass-normalised. Eigenvectors from the
+  !> inverted pencil carry errors ~ eps mu_1/gap, large for the higher modes; this removes them
+  !> to second order. Pairs too close for a first-order step are left alone.
+  subroutine polish(k, kb, m, mb, kd, x, p, lambda, phi)
+    real(wp), allocatable, intent(in) :: k(:, :), kb(:, :), m(:, :), mb(:, :)
+    integer, intent(in) :: kd, p
+    real(wp), intent(in) :: x(:, :)
+    real(wp), allocatable, intent(out) :: lambda(:), phi(:, :)
+    real(xp), allocatable :: xq(:), yq(:)
+    real(wp), allocatable :: kx(:, :), kr(:, :), mphi(:)
+    integer :: i, j, n, nq
+    n = size(x, 1)
+    nq = size(x, 2)
+    allocate(xq(n), yq(n), kx(n, nq), mphi(n), lambda(p))
+    do j = 1, nq
+      xq = real(x(:, j), xp)
+      call sym_matvec_xp(k, kb, kd, xq, yq)
+      kx(:, j) = real(yq, wp)
+    end do
+    kr = matmul(transpose(x), kx)
+    allocate(phi, source=x(:, 1:p))
+    do j = 1, p
+      lambda(j) = kr(j, j)
+      do i = 1, nq
+        if (i == j) cycle
+        if (abs(kr(i, j)) < 0.1_wp*abs(kr(j, j) - kr(i, i))) &
+          & phi(:, j) = phi(:, j) + x(:, i)*(kr(i, j)/(kr(j, j) - kr(i, i)))
+      end do
+      call sym_matvec(m, mb, kd, phi(:, j), mphi)
+      phi(:, j) = phi(:, j)/sqrt(dot_product(phi(:, j), mphi))
+    end do
+  end subroutine polish
 
   !> Deterministic pseudo-random entries in [-1/2, 1/2) (a local linear congruential
   !> generator: no global state).
