@@ -101,7 +101,7 @@ _dti_peak = declare("udmap_dti_peak",
 
 def _blade_ptr(blade) -> ctypes.c_void_p:
     """The udmap_blade handle of a Blade object (or a raw handle)."""
-    for name in ("ptr", "_ptr", "handle", "_handle"):
+    for name in ("_handle", "handle", "_ptr", "ptr"):
         ptr = getattr(blade, name, None)
         if ptr is not None:
             return ptr if isinstance(ptr, ctypes.c_void_p) else ctypes.c_void_p(ptr)
