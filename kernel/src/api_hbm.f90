@@ -50,6 +50,7 @@ module udmap_api_hbm
     real(c_double) :: gamma_h(max_harmonics)
     integer(c_int) :: steps, iterations, aft_calls
     real(c_double) :: seconds
+    integer(c_int) :: lift_off
   end type c_hbm_point
 
   !> udmap_dti_settings.
@@ -65,6 +66,7 @@ module udmap_api_hbm
     real(c_double) :: F_E, f, gamma_1, sigma_1, gamma_max, gamma_0, ss_error
     integer(c_int) :: periods, runs
     real(c_double) :: seconds
+    integer(c_int) :: lift_off
   end type c_dti_point
 
 contains
@@ -426,6 +428,7 @@ contains
     c%iterations = p%iterations
     c%aft_calls = p%aft_calls
     c%seconds = p%seconds
+    c%lift_off = merge(1, 0, p%lift_off)
   end subroutine point_to_c
 
   pure function dti_from_c(c) result(s)
@@ -453,5 +456,6 @@ contains
     c%periods = p%periods
     c%runs = p%runs
     c%seconds = p%seconds
+    c%lift_off = merge(1, 0, p%lift_off)
   end subroutine dti_point_to_c
 end module udmap_api_hbm

@@ -245,6 +245,7 @@ typedef struct {
   int iterations;    /* Newton iterations */
   int aft_calls;     /* AFT evaluations (Jacobians included) */
   double seconds;    /* wall time of this force [s] */
+  int lift_off;      /* 1 if a damper contact opens during the cycle at the peak */
 } udmap_hbm_point;
 
 /* Peaks for n forces over [f_min, f_max] [Hz]: continuation from f_min upwards from the stuck
@@ -287,6 +288,7 @@ typedef struct {
   int periods;      /* periods integrated (last run) */
   int runs;         /* time integrations (several for the peak search) */
   double seconds;   /* wall time [s] */
+  int lift_off;     /* 1 if a damper contact opened during the last period */
 } udmap_dti_point;
 
 /* Newmark (average acceleration) on the whole blade to steady state at f_exc [Hz]. */

@@ -28,6 +28,7 @@ module udmap_aft
     integer :: nbp = 0
     class(hysteretic_element_type), allocatable :: start   !< state at the start of a period
     integer :: calls = 0                            !< number of aft_moment calls (statistics)
+    logical :: lift_off = .false.                   !< a contact opened in the last call
   end type aft_workspace_type
 
   real(wp), parameter :: two_pi = 2.0_wp*pi
@@ -240,6 +241,7 @@ contains
     end if
     call waveform_extrema(G, tau, n)
 
+    ws%lift_off = .false.
     call element%load(error)
     if (allocated(error)) return
     if (n == 0) then
@@ -273,6 +275,7 @@ contains
         if (present(periods)) periods = p
         if (p >= min_periods .and. closed) exit
       end do
+      ws%lift_off = element%lifted()
       M0 = sum(Ms)/np
       do k = 1, H
         M(k) = (0.0_wp, 0.0_wp)
@@ -307,6 +310,7 @@ contains
       if (present(periods)) periods = p
       if (p >= min_periods .and. closed) exit
     end do
+    ws%lift_off = element%lifted()
     call integrate_period(ws, G0, G, tau, gam, M0, M)
   end subroutine aft_moment
 

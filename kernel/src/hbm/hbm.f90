@@ -66,6 +66,7 @@ module udmap_hbm
     real(wp) :: u_E = 0.0_wp       !< first-harmonic displacement amplitude at E [m]
     real(wp) :: k_re = 0.0_wp, k_im = 0.0_wp   !< M_1/Gamma_1 at the peak [N m/rad]
     real(wp) :: gamma_max = 0.0_wp !< largest gamma(t) over the period at the peak [rad]
+    logical :: lift_off = .false.  !< a damper contact opens during the cycle at the peak
     integer :: npeaks = 0          !< number of local maxima of gamma_1 on the curve
     real(wp) :: peaks(HBM_MAX_PEAKS) = 0.0_wp   !< their gamma_1, ascending
     real(wp) :: peak_f(HBM_MAX_PEAKS) = 0.0_wp  !< their frequencies [Hz]
@@ -1108,6 +1109,7 @@ contains
     point%gamma_P = abs(G1)
     point%f_res = pt%omega/(2.0_wp*pi)
     point%gamma_max = p%gmax
+    point%lift_off = p%ws%lift_off
     if (abs(G1) > 0.0_wp) then
       point%k_re = real(p%Mh(1)/G1, wp)
       point%k_im = aimag(p%Mh(1)/G1)

@@ -24,6 +24,8 @@ module udmap_hysteretic
 
   !> A quasi-static, rate-independent element on gamma with internal state (sliders, contacts).
   type, abstract :: hysteretic_element_type
+    !> A contact opened (lift-off, PHYSICS.md 2.3) since the last load or clear_flags.
+    logical :: lift_off = .false.
   contains
     !> Virgin state and the centrifugal-load ramp at gamma = 0 (history steps 0 and 1).
     procedure(load_interface), deferred :: load
@@ -38,6 +40,10 @@ module udmap_hysteretic
     !> Current gamma [rad] and M_r [N m].
     procedure(scalar_interface), deferred :: gamma
     procedure(scalar_interface), deferred :: moment
+    !> Whether a contact opened (lift-off, PHYSICS.md 2.3) since the last load or clear_flags.
+    procedure :: lifted => element_lifted
+    !> Forgets the lift-off flag.
+    procedure :: clear_flags => element_clear_flags
   end type hysteretic_element_type
 
   abstract interface
@@ -109,6 +115,16 @@ contains
     self%gamma(self%n) = gamma
     self%M(self%n) = M
   end subroutine event_list_push
+
+  logical function element_lifted(self)
+    class(hysteretic_element_type), intent(in) :: self
+    element_lifted = self%lift_off
+  end function element_lifted
+
+  subroutine element_clear_flags(self)
+    class(hysteretic_element_type), intent(inout) :: self
+    self%lift_off = .false.
+  end subroutine element_clear_flags
 
   !> A Jenkins element with stiffness kt [N m/rad] and slip moment M_slip [N m], virgin state.
   subroutine new_jenkins_element(element, kt, M_slip, error)

@@ -44,6 +44,7 @@ module udmap_newmark
     real(wp) :: sigma_1 = 0.0_wp    !< first-harmonic amplitude of the stress [Pa]
     real(wp) :: gamma_max = 0.0_wp  !< largest gamma_P(t) over the last period [rad]
     real(wp) :: gamma_0 = 0.0_wp    !< mean of gamma_P(t) over the last period [rad]
+    logical :: lift_off = .false.   !< a damper contact opened during the last period
     real(wp) :: ss_error = 0.0_wp   !< estimated remaining relative error of gamma_1
     integer :: periods = 0          !< periods integrated (last run)
     integer :: runs = 0             !< time integrations done (several for --peak)
@@ -320,6 +321,8 @@ contains
       G1 = (0.0_wp, 0.0_wp)
       S1 = (0.0_wp, 0.0_wp)
       gmean = 0.0_wp
+      call el%clear_flags()
+      call trial%clear_flags()
       gmax_p = q(g)
       do j = 0, Ns - 1
         ! effective load at t_{n+1}
@@ -394,6 +397,7 @@ contains
     end do
     point%gamma_1 = abs(G1)
     point%sigma_1 = abs(S1)
+    point%lift_off = el%lifted()
     point%gamma_max = gmax_p
     point%gamma_0 = gmean/T
     point%ss_error = est/max(abs(G1), tiny(1.0_wp))

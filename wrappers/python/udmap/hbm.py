@@ -51,7 +51,8 @@ class HbmPoint(ctypes.Structure):
                 ("peaks", ctypes.c_double * MAX_ROOTS), ("peak_f", ctypes.c_double * MAX_ROOTS),
                 ("harmonics", ctypes.c_int), ("gamma_h", ctypes.c_double * MAX_HARMONICS),
                 ("steps", ctypes.c_int), ("iterations", ctypes.c_int),
-                ("aft_calls", ctypes.c_int), ("seconds", ctypes.c_double)]
+                ("aft_calls", ctypes.c_int), ("seconds", ctypes.c_double),
+                ("lift_off", ctypes.c_int)]
 
 
 class DtiSettings(ctypes.Structure):
@@ -67,7 +68,8 @@ class DtiPoint(ctypes.Structure):
     _fields_ = [("F_E", ctypes.c_double), ("f", ctypes.c_double), ("gamma_1", ctypes.c_double),
                 ("sigma_1", ctypes.c_double), ("gamma_max", ctypes.c_double),
                 ("gamma_0", ctypes.c_double), ("ss_error", ctypes.c_double),
-                ("periods", ctypes.c_int), ("runs", ctypes.c_int), ("seconds", ctypes.c_double)]
+                ("periods", ctypes.c_int), ("runs", ctypes.c_int), ("seconds", ctypes.c_double),
+                ("lift_off", ctypes.c_int)]
 
 
 _vp = ctypes.c_void_p
@@ -97,6 +99,19 @@ _dti_response = declare("udmap_dti_response",
 _dti_peak = declare("udmap_dti_peak",
                     [_vp, _vp, _vp, ctypes.POINTER(DtiSettings), ctypes.c_double,
                      ctypes.c_double, ctypes.c_int, _c_double_p, ctypes.POINTER(DtiPoint)])
+
+
+class _AsymmetricParams(ctypes.Structure):
+    """udmap_asymmetric_params (wrappers/c/udmap.h)."""
+    _fields_ = [(name, ctypes.c_double) for name in (
+        "CF", "mu", "pitch", "y_P", "beta_L_deg", "beta_R_deg", "flat1_x", "flat1_y",
+        "flat2_x", "flat2_y", "curved_x", "curved_y", "kn_flat", "kt_flat", "kn_curved",
+        "kt_curved")]
+
+
+def _new_asymmetric():
+    return declare("udmap_new_contact_asymmetric",
+                   [_vp, ctypes.POINTER(_AsymmetricParams), ctypes.POINTER(_vp)])
 
 
 def _blade_ptr(blade) -> ctypes.c_void_p:
@@ -137,14 +152,22 @@ class Contact:
 
     @classmethod
     def asymmetric(cls, damper: dict) -> "Contact":
-        """The asymmetric flat/curved damper (PHYSICS.md 2.1) from its case parameters."""
-        from .damper import AsymmetricParams  # the C struct udmap_asymmetric_params
-        params = AsymmetricParams.from_dict(damper)
-        fn = declare("udmap_new_contact_asymmetric",
-                     [_vp, ctypes.POINTER(AsymmetricParams), ctypes.POINTER(_vp)])
+        """The asymmetric flat/curved damper (PHYSICS.md 2.1) from its case parameters (the
+        damper section of a case: CF, mu, pitch, y_P, beta_L_deg, beta_R_deg, flat_points,
+        curved_point, kn_flat, kt_flat, kn_curved, kt_curved)."""
+        try:
+            (f1x, f1y), (f2x, f2y) = damper["flat_points"]
+            cx, cy = damper["curved_point"]
+            params = _AsymmetricParams(
+                *(float(damper[k]) for k in ("CF", "mu", "pitch", "y_P", "beta_L_deg",
+                                             "beta_R_deg")),
+                float(f1x), float(f1y), float(f2x), float(f2y), float(cx), float(cy),
+                *(float(damper[k]) for k in ("kn_flat", "kt_flat", "kn_curved", "kt_curved")))
+        except (KeyError, TypeError, ValueError) as exc:
+            raise InputError(f"damper: asymmetric parameters incomplete or invalid ({exc})")
         err = ErrorHandle()
         ptr = ctypes.c_void_p()
-        err.check(fn(err.ptr, ctypes.byref(params), ctypes.byref(ptr)))
+        err.check(_new_asymmetric()(err.ptr, ctypes.byref(params), ctypes.byref(ptr)))
         return cls(ptr)
 
     def __del__(self):
@@ -215,6 +238,7 @@ def _hbm_dict(p: HbmPoint) -> dict:
             "peak_f": [p.peak_f[i] for i in range(n)],
             "gamma_max": p.gamma_max,
             "gamma_h": [p.gamma_h[i] for i in range(max(0, min(p.harmonics, MAX_HARMONICS)))],
+            "lift_off": bool(p.lift_off),
             "steps": p.steps, "iterations": p.iterations, "aft_calls": p.aft_calls,
             "seconds": p.seconds}
 
@@ -296,4 +320,7 @@ def dti(blade, damper, F_E: Iterable[float], freq: float | None = None, peak: bo
         err.check(_dti_response(err.ptr, _blade_ptr(blade), contact.ptr, ctypes.byref(s),
                                 float(freq), len(arr), ptr, pts))
     keys = [k for k, _ in DtiPoint._fields_]
-    return [{k: getattr(pts[i], k) for k in keys} for i in range(len(arr))]
+    out = [{k: getattr(pts[i], k) for k in keys} for i in range(len(arr))]
+    for p in out:
+        p["lift_off"] = bool(p["lift_off"])
+    return out
