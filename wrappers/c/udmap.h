@@ -117,9 +117,15 @@ typedef struct {
 
 int udmap_damper_get_info(udmap_error error, udmap_damper damper, udmap_damper_info *info);
 
-/* k(gamma) = k_re + i k_im for n amplitudes [rad]. */
+/* k(gamma) = k_re + i k_im for n amplitudes [rad] (each > 0; a table without delta_M only up to
+ * its last row). */
 int udmap_damper_stiffness(udmap_error error, udmap_damper damper, int n, const double *gamma,
                            double *k_re, double *k_im);
+
+/* dk/dgamma for n amplitudes [N m/rad^2] (closed forms of the base cycle and the traced loops;
+ * the PCHIP derivative for a table). */
+int udmap_damper_stiffness_derivative(udmap_error error, udmap_damper damper, int n,
+                                      const double *gamma, double *dk_re, double *dk_im);
 
 /* The steady loop M_r(tau) at amplitude gamma_a, gamma = gamma_a cos(tau), at n equally spaced
  * tau in [0, 2 pi) (asymmetric and jenkins kinds). */
