@@ -6,7 +6,7 @@ module udmap_lapack
   implicit none
   private
   public :: dsyev, dsygvd, dsygv, dpotrf, dpotrs, dpbtrf, dpbtrs, dsbmv
-  public :: zgetrf, zgetrs, zgbtrf, zgbtrs
+  public :: zgetrf, zgetrs, zgbtrf, zgbtrs, zggev
   public :: dgesv, dgetrf, dgetrs, dgbtrf, dgbtrs
 
   interface
@@ -163,5 +163,18 @@ module udmap_lapack
       real(wp), intent(inout) :: b(ldb, *)
       integer, intent(out) :: info
     end subroutine dgbtrs
+
+    !> Generalized non-symmetric eigenproblem A x = lambda B x (QZ), eigenvalues
+    !> alpha/beta.
+    pure subroutine zggev(jobvl, jobvr, n, a, lda, b, ldb, alpha, beta, vl, ldvl, vr, ldvr, &
+        & work, lwork, rwork, info)
+      import :: wp
+      character(len=1), intent(in) :: jobvl, jobvr
+      integer, intent(in) :: n, lda, ldb, ldvl, ldvr, lwork
+      complex(wp), intent(inout) :: a(lda, *), b(ldb, *)
+      complex(wp), intent(out) :: alpha(*), beta(*), vl(ldvl, *), vr(ldvr, *), work(*)
+      real(wp), intent(out) :: rwork(*)
+      integer, intent(out) :: info
+    end subroutine zggev
   end interface
 end module udmap_lapack

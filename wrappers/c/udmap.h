@@ -143,6 +143,11 @@ typedef struct {
   double sigma_all;     /* allowable alternating stress [Pa], default 80e6 */
   double rtol;          /* relative tolerance of peak and root refinement, default 1e-12 */
   int grid_per_decade;  /* backbone amplitude grid density for root bracketing, default 24 */
+  int eigen_method;     /* eigenvalue start: 0 auto (a direct solve once per model, then the
+                           secular equation), 1 direct for every layer, 2 secular only */
+  int dense_max;        /* largest ndof for the dense eigen-solver (zggev); larger banded models
+                           use ARPACK shift-invert, default 200 */
+  int sweep_points;     /* bare-blade samples over the band for the response curves, default 400 */
 } udmap_analysis;
 
 void udmap_analysis_defaults(udmap_analysis *analysis);
@@ -153,6 +158,11 @@ void udmap_analysis_defaults(udmap_analysis *analysis);
 int udmap_new_model(udmap_error error, udmap_blade blade, udmap_damper damper,
                     const udmap_analysis *analysis, udmap_model *model);
 void udmap_delete_model(udmap_model *model);
+
+/* Couples another damper to the model (borrowed like the first; the old one may then be
+ * deleted). The bare-blade data are kept and the backbone table is rebuilt on next use: the
+ * cheap path after a change of damper parameters. */
+int udmap_model_set_damper(udmap_error error, udmap_model model, udmap_damper damper);
 
 /* One point of the non-linear response (at resonance or at a given frequency). */
 typedef struct {
@@ -165,7 +175,8 @@ typedef struct {
   int regime;      /* 0 stuck, 1 partial slip, 2 full slip, 3 at or above F_lim */
   int hcf_ok;      /* F_E <= 0.5 F_lim and sigma_a <= sigma_all */
   int unbounded;   /* zeta = 0 and F_E >= F_lim: no finite response; numbers are 0 */
-  int nroots;      /* number of gamma_P roots (all in roots[], ascending) */
+  int nroots;      /* number of gamma_P roots (all in roots[], ascending; beyond
+                      UDMAP_MAX_ROOTS the largest ones) */
   double roots[UDMAP_MAX_ROOTS];
 } udmap_point;
 
@@ -179,9 +190,30 @@ int udmap_model_backbone_curve(udmap_error error, udmap_model model, int n, cons
 int udmap_model_backbone(udmap_error error, udmap_model model, int n, const double *F_E,
                          udmap_point *points);
 
-/* Response at the excitation frequency f_exc [Hz] for n forces (PHYSICS.md 4, last paragraph). */
+/* Response at the excitation frequency f_exc [Hz] for n forces (PHYSICS.md 4, last paragraph).
+ * f_exc must lie in the band. The response at a fixed frequency is finite even above F_lim, so
+ * unbounded is never set here (regime is still 3). */
 int udmap_model_response(udmap_error error, udmap_model model, double f_exc, int n,
                          const double *F_E, udmap_point *points);
+
+/* Response curves by amplitude layered force mapping (PHYSICS.md 3) for n forces, starting
+ * from `layers` log-spaced amplitude layers (more are added where the curves bend). The curves
+ * are kept in the model until the next call; read curve i (0-based, in the order of F_E) with
+ * udmap_model_curve_size and udmap_model_curve_get. Points come in path order: per connected
+ * part, the lower-frequency branch by rising gamma_P, the peak, the upper-frequency branch by
+ * falling gamma_P (a detached part starts and ends at its bottom turning point). branch: 0
+ * below the peak frequency of the point's layer, 1 above, 2 a turning point on the backbone;
+ * part: 1 the main curve, 2, 3, ... detached parts. */
+#define UDMAP_BRANCH_LOWER 0
+#define UDMAP_BRANCH_UPPER 1
+#define UDMAP_BRANCH_TURNING 2
+int udmap_model_curves(udmap_error error, udmap_model model, int n, const double *F_E,
+                       int layers);
+int udmap_model_curve_size(udmap_error error, udmap_model model, int i, int *npoints);
+/* Copies curve i into arrays of at least npoints entries (f in Hz, gamma_P in rad, sigma_a in
+ * Pa). */
+int udmap_model_curve_get(udmap_error error, udmap_model model, int i, int npoints, double *f_hz,
+                          double *gamma_P, double *sigma_a, int *branch, int *part);
 
 /* ---------------------------------------------------------------- standard method, time integration */
 
