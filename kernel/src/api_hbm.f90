@@ -10,6 +10,9 @@ module udmap_api_hbm
   use udmap_blade, only: blade_type
   use udmap_linear_structure, only: structure_type, structure_from_blade
   use udmap_hysteretic, only: hysteretic_element_type, jenkins_element_type, new_jenkins_element
+  use udmap_contact_element, only: contact_element_type, new_contact_element
+  use udmap_damper_params, only: asymmetric_params_type
+  use udmap_api_damper, only: udmap_asymmetric_params
   use udmap_aft, only: aft_workspace_type, aft_moment
   use udmap_hbm, only: hbm_settings_type, hbm_point_type, hbm_curve_type, hbm_peak, &
     & hbm_response, HBM_MAX_PEAKS
@@ -92,6 +95,40 @@ contains
     end if
     stat = set_error(ehandle, error)
   end function udmap_new_contact_jenkins
+
+  function udmap_new_contact_asymmetric(ehandle, params, contact) result(stat) &
+      & bind(C, name="udmap_new_contact_asymmetric")
+    type(c_ptr), value :: ehandle
+    type(udmap_asymmetric_params), intent(in) :: params
+    type(c_ptr), intent(out) :: contact
+    integer(c_int) :: stat
+    type(error_type), allocatable :: error
+    type(c_contact_type), pointer :: c
+    type(asymmetric_params_type) :: p
+    type(contact_element_type) :: el
+    contact = c_null_ptr
+    call clear_error(ehandle)
+    p%CF = params%CF
+    p%mu = params%mu
+    p%pitch = params%pitch
+    p%y_P = params%y_P
+    p%beta_L_deg = params%beta_L_deg
+    p%beta_R_deg = params%beta_R_deg
+    p%flat(:,1) = [params%flat1_x, params%flat1_y]
+    p%flat(:,2) = [params%flat2_x, params%flat2_y]
+    p%curved = [params%curved_x, params%curved_y]
+    p%kn_flat = params%kn_flat
+    p%kt_flat = params%kt_flat
+    p%kn_curved = params%kn_curved
+    p%kt_curved = params%kt_curved
+    call new_contact_element(el, p, error)
+    if (.not.allocated(error)) then
+      allocate(c)
+      allocate(c%element, source=el)
+      contact = c_loc(c)
+    end if
+    stat = set_error(ehandle, error)
+  end function udmap_new_contact_asymmetric
 
   subroutine udmap_delete_contact(contact) bind(C, name="udmap_delete_contact")
     type(c_ptr), intent(inout) :: contact

@@ -90,7 +90,7 @@ module udmap_hbm
   type :: problem_type
     type(hbm_settings_type) :: set
     integer :: H = 1, h0 = 0, m = 2, b = 2, nx = 2, goff = 0, n = 1
-    real(wp) :: F = 0.0_wp, W_s = 1.0_wp, k_stuck = 0.0_wp, Hgg0 = 0.0_wp
+    real(wp) :: F = 0.0_wp, W_s = 1.0_wp, k_stuck = 0.0_wp, Hgg0 = 0.0_wp, M_ref = 0.0_wp
     class(hysteretic_element_type), allocatable :: el
     type(aft_workspace_type) :: ws
     ! damper moment at the last evaluation and its Jacobian d(M vector)/d(gamma unknowns)
@@ -249,6 +249,8 @@ contains
     call p%el%load(error)
     if (allocated(error)) return
     p%k_stuck = p%el%stuck_stiffness()
+    ! the static moment of the loaded damper is in equilibrium with the blade's reference state
+    p%M_ref = p%el%moment()
     if (p%h0 == 1 .and. settings%variant == HBM_CONDENSED) then
       call structure_receptances(st, 0.0_wp, r0, error)
       if (allocated(error)) return
@@ -817,7 +819,7 @@ contains
     call update_receptances(p, st, omega, error)
     if (allocated(error)) return
     if (p%h0 == 1) then
-      R(1) = x(1) + p%Hgg0*p%M0
+      R(1) = x(1) + p%Hgg0*(p%M0 - p%M_ref)
       if (present(Jw)) Jw(1) = 0.0_wp
     end if
     do h = 1, p%H
@@ -877,7 +879,7 @@ contains
     bi = (st%exc_dof - 1)*p%b
     R(bi+p%h0+1) = R(bi+p%h0+1) - p%F
     bi = p%goff
-    if (p%h0 == 1) R(bi+1) = R(bi+1) + p%M0
+    if (p%h0 == 1) R(bi+1) = R(bi+1) + p%M0 - p%M_ref
     do h = 1, p%H
       cr = p%h0 + 2*h - 1
       R(bi+cr) = R(bi+cr) + real(p%Mh(h), wp)
@@ -1049,7 +1051,7 @@ contains
     Msave = p%Mh
     Msave0 = p%M0
     p%Mh = (0.0_wp, 0.0_wp)
-    p%M0 = 0.0_wp
+    p%M0 = p%M_ref
     p%JM = 0.0_wp
     do c = 1, p%m
       p%JM(c, c) = p%k_stuck
