@@ -16,7 +16,7 @@ from typing import Iterable
 
 import numpy as np
 
-from ._lib import ErrorHandle, InputError, as_doubles, declare, lib
+from ._lib import ErrorHandle, InputError, PhysicsError, as_doubles, declare, lib
 
 _c_double_p = ctypes.POINTER(ctypes.c_double)
 _c_int_p = ctypes.POINTER(ctypes.c_int)
@@ -109,6 +109,19 @@ class _AsymmetricParams(ctypes.Structure):
         "kt_curved")]
 
 
+def _asymmetric_params(damper: dict) -> _AsymmetricParams:
+    """udmap_asymmetric_params from the damper section of a case."""
+    try:
+        (f1x, f1y), (f2x, f2y) = damper["flat_points"]
+        cx, cy = damper["curved_point"]
+        return _AsymmetricParams(
+            *(float(damper[k]) for k in ("CF", "mu", "pitch", "y_P", "beta_L_deg", "beta_R_deg")),
+            float(f1x), float(f1y), float(f2x), float(f2y), float(cx), float(cy),
+            *(float(damper[k]) for k in ("kn_flat", "kt_flat", "kn_curved", "kt_curved")))
+    except (KeyError, TypeError, ValueError) as exc:
+        raise InputError(f"damper: asymmetric parameters incomplete or invalid ({exc})")
+
+
 def _new_asymmetric():
     return declare("udmap_new_contact_asymmetric",
                    [_vp, ctypes.POINTER(_AsymmetricParams), ctypes.POINTER(_vp)])
@@ -155,16 +168,7 @@ class Contact:
         """The asymmetric flat/curved damper (PHYSICS.md 2.1) from its case parameters (the
         damper section of a case: CF, mu, pitch, y_P, beta_L_deg, beta_R_deg, flat_points,
         curved_point, kn_flat, kt_flat, kn_curved, kt_curved)."""
-        try:
-            (f1x, f1y), (f2x, f2y) = damper["flat_points"]
-            cx, cy = damper["curved_point"]
-            params = _AsymmetricParams(
-                *(float(damper[k]) for k in ("CF", "mu", "pitch", "y_P", "beta_L_deg",
-                                             "beta_R_deg")),
-                float(f1x), float(f1y), float(f2x), float(f2y), float(cx), float(cy),
-                *(float(damper[k]) for k in ("kn_flat", "kt_flat", "kn_curved", "kt_curved")))
-        except (KeyError, TypeError, ValueError) as exc:
-            raise InputError(f"damper: asymmetric parameters incomplete or invalid ({exc})")
+        params = _asymmetric_params(damper)
         err = ErrorHandle()
         ptr = ctypes.c_void_p()
         err.check(_new_asymmetric()(err.ptr, ctypes.byref(params), ctypes.byref(ptr)))
@@ -244,23 +248,95 @@ def _hbm_dict(p: HbmPoint) -> dict:
 
 
 def hbm(blade, damper, f_min: float, f_max: float, F_E: Iterable[float], harmonics: int = 1,
-        variant: str = "condensed", sigma_all: float = 80e6, **settings) -> list[dict]:
+        variant: str = "condensed", sigma_all: float = 80e6, classify: bool = True,
+        **settings) -> list[dict]:
     """Peaks of the response by the standard method for each force.
 
     blade: a udmap Blade; damper: the case's damper section (dict) or a Contact; band
     [f_min, f_max] in Hz; variant 'condensed' or 'full'; settings: fields of
-    udmap_hbm_settings (tol, ds_max, aft_samples, harmonic0, ...).
+    udmap_hbm_settings (tol, tol_path, ds_max, aft_samples, harmonic0, jacobian_reuse, ...).
     Returns per force the backbone fields (F_E, gamma_P, f_res, sigma_a, u_E, k_re, k_im,
-    roots: every local maximum of gamma_1, ascending) plus gamma_max, gamma_h, steps,
-    iterations, aft_calls and seconds (kernel wall time of that force)."""
+    roots: every local maximum of gamma_1, ascending; with classify and a damper dict also
+    regime and hcf_ok from F_lim, gamma_s, gamma_b) plus gamma_max, gamma_h (|Gamma_h|),
+    peak_f, lift_off, steps, iterations, aft_calls and seconds (kernel wall time of that
+    force). A response the standard method finds unbounded (at or above F_lim without enough
+    damping) is a point with unbounded=True and a message, as for the backbone."""
     contact = _contact(damper)
     s = hbm_settings(harmonics, variant, **settings)
-    arr, ptr = _forces(F_E)
-    pts = (HbmPoint * max(1, len(arr)))()
-    err = ErrorHandle()
-    err.check(_hbm_peaks(err.ptr, _blade_ptr(blade), contact.ptr, float(f_min), float(f_max),
-                         ctypes.byref(s), len(arr), ptr, pts))
-    return [_hbm_dict(pts[i]) for i in range(len(arr))]
+    arr, _ = _forces(F_E)
+    out = []
+    for F in arr:
+        one, ptr = as_doubles(np.array([F]))
+        pts = (HbmPoint * 1)()
+        err = ErrorHandle()
+        try:
+            err.check(_hbm_peaks(err.ptr, _blade_ptr(blade), contact.ptr, float(f_min),
+                                 float(f_max), ctypes.byref(s), 1, ptr, pts))
+        except PhysicsError as exc:
+            if "unbounded" not in str(exc):
+                raise
+            out.append({"F_E": float(F), "unbounded": True, "message": str(exc)})
+            continue
+        out.append(_hbm_dict(pts[0]))
+    if classify and isinstance(damper, dict):
+        _classify(blade, damper, f_min, f_max, sigma_all, out)
+    return out
+
+
+class _DamperInfo(ctypes.Structure):
+    """udmap_damper_info."""
+    _fields_ = [("gamma_b", ctypes.c_double), ("gamma_s", ctypes.c_double),
+                ("M_max", ctypes.c_double), ("M_min", ctypes.c_double),
+                ("k_stuck", ctypes.c_double), ("lift_off", ctypes.c_int)]
+
+
+class _KernelDamper:
+    """A udmap_damper handle of the case's damper section (for F_lim and the regimes only)."""
+
+    def __init__(self, damper: dict):
+        self._err = ErrorHandle()
+        self._handle = _vp()
+        if damper["kind"] == "jenkins":
+            fn = declare("udmap_new_damper_jenkins",
+                         [_vp, ctypes.c_double, ctypes.c_double, ctypes.POINTER(_vp)])
+            self._err.check(fn(self._err.ptr, float(damper["kt"]), float(damper["M_slip"]),
+                               ctypes.byref(self._handle)))
+        else:
+            params = _asymmetric_params(damper)
+            fn = declare("udmap_new_damper_asymmetric",
+                         [_vp, ctypes.POINTER(_AsymmetricParams), ctypes.POINTER(_vp)])
+            self._err.check(fn(self._err.ptr, ctypes.byref(params), ctypes.byref(self._handle)))
+        info = _DamperInfo()
+        fn = declare("udmap_damper_get_info", [_vp, _vp, ctypes.POINTER(_DamperInfo)])
+        self._err.check(fn(self._err.ptr, self._handle, ctypes.byref(info)))
+        self.info = info
+
+    def __del__(self):
+        h = getattr(self, "_handle", None)
+        if h is not None and h.value and lib is not None:
+            declare("udmap_delete_damper", [ctypes.POINTER(_vp)], None)(ctypes.byref(h))
+
+
+def _classify(blade, damper: dict, f_min, f_max, sigma_all, points: list[dict]) -> None:
+    """Adds regime (0 stuck, 1 partial slip, 2 full slip, 3 at or above F_lim) and hcf_ok
+    (F_E <= 0.5 F_lim and sigma_a <= sigma_all) as the backbone defines them."""
+    from .model import Model
+    kd = _KernelDamper(damper)
+    F_lim = Model(blade, kd, f_min, f_max, sigma_all=sigma_all).limit_force()
+    for p in points:
+        p["F_lim"] = F_lim
+        if p["F_E"] >= F_lim:
+            p["regime"] = 3
+        elif p.get("unbounded"):
+            p["regime"] = 3
+        elif p["gamma_P"] <= kd.info.gamma_s:
+            p["regime"] = 0
+        elif p["gamma_P"] < kd.info.gamma_b:
+            p["regime"] = 1
+        else:
+            p["regime"] = 2
+        p["hcf_ok"] = bool(not p.get("unbounded") and p["F_E"] <= 0.5 * F_lim
+                           and p["sigma_a"] <= sigma_all)
 
 
 def hbm_response(blade, damper, f_min: float, f_exc: float, F_E: Iterable[float],
