@@ -10,7 +10,7 @@ module udmap_contact_element
   use udmap_damper_params, only: asymmetric_params_type
   use udmap_damper_tracer, only: damper_geometry_type, damper_state_type, branch_record_type, &
     & new_damper_geometry, virgin_state, ramp_CF, trace_gamma, restoring_moment, &
-    & reset_record, record_start, CONTACT_OPEN
+    & reset_record, record_start, contact_forces, CONTACT_OPEN
   use udmap_hysteretic, only: hysteretic_element_type, event_list_type
   use udmap_aft, only: aft_workspace_type, aft_moment
   implicit none
@@ -22,8 +22,10 @@ module udmap_contact_element
     type(damper_geometry_type) :: geo
     !> State after the CF ramp at gamma = 0 (history steps 0 and 1), and the current state.
     type(damper_state_type) :: loaded, state
-    !> Tangent dM_r/dgamma of the loaded state (stuck damper) [N m/rad].
+    !> Stuck stiffness (first harmonic of a tiny loop) [N m/rad].
     real(wp) :: k_stuck = 0.0_wp
+    !> Force scale of the state comparisons: the centrifugal load [N].
+    real(wp) :: F_scale = 1.0_wp
     !> Vertices of the last traced path (kept to avoid allocations).
     type(branch_record_type) :: rec
   contains
@@ -49,6 +51,7 @@ contains
     real(wp) :: dg, M0
     call new_damper_geometry(element%geo, params, error)
     if (allocated(error)) return
+    element%F_scale = params%CF
     call virgin_state(element%geo, element%loaded)
     call ramp_CF(element%geo, element%loaded, params%CF, error)
     if (allocated(error)) return
@@ -112,19 +115,25 @@ contains
     end select
   end subroutine contact_copy_state
 
+  !> Same contact states and forces (both states of this damper: copies made by copy_state carry
+  !> no geometry): the future path is then the same (the sliders of slipping
+  !> contacts are only refreshed when the tracer moves on, so they are not compared).
   logical function contact_same_state(self, other, rtol)
     class(contact_element_type), intent(in) :: self
     class(hysteretic_element_type), intent(in) :: other
     real(wp), intent(in) :: rtol
-    real(wp) :: scale_q, scale_w
+    real(wp) :: g(3), sd(3), Na(3), Ta(3), Nb(3), Tb(3)
     contact_same_state = .false.
     select type (other)
     type is (contact_element_type)
-      scale_q = max(maxval(abs(self%state%q)), maxval(abs(other%state%q)), tiny(1.0_wp))
-      scale_w = max(maxval(abs(self%state%w)), maxval(abs(other%state%w)), scale_q)
-      contact_same_state = all(self%state%mode == other%state%mode) .and. &
-        & maxval(abs(self%state%q - other%state%q)) <= rtol*scale_q .and. &
-        & maxval(abs(self%state%w - other%state%w)) <= rtol*scale_w
+      if (any(self%state%mode /= other%state%mode)) return
+      if (self%state%gamma /= other%state%gamma) return
+      call contact_forces(self%geo, self%state%mode, self%state%q, self%state%gamma, &
+        & self%state%w, g, sd, Na, Ta)
+      call contact_forces(self%geo, other%state%mode, other%state%q, other%state%gamma, &
+        & other%state%w, g, sd, Nb, Tb)
+      contact_same_state = all(abs(Na - Nb) <= rtol*self%F_scale) .and. &
+        & all(abs(Ta - Tb) <= rtol*self%F_scale)
     end select
   end function contact_same_state
 
