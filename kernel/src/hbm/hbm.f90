@@ -480,7 +480,7 @@ contains
     real(wp) :: s_lo, s_hi, g_lo, g_hi, s, g, w_lo, w_hi
     real(wp), allocatable :: x_lo(:), x_hi(:), xp(:)
     real(wp) :: wp_
-    integer :: iter, side, it
+    integer :: iter, side, it, retry
     logical :: ok
     type(curve_point_type) :: trial
     s_lo = 0.0_wp
@@ -504,6 +504,18 @@ contains
       wp_ = a%omega + s*a%tw
       call newton_arclength(p, st, trial%x, trial%omega, a, xp, wp_, p%set%tol, ok, it, error)
       if (allocated(error)) return
+      ! retry from the bracket ends (a kink of the damper law between them can defeat the
+      ! interpolated guess)
+      do retry = 1, 2
+        if (ok) exit
+        if (retry == 1) then
+          trial%x = x_lo; trial%omega = w_lo
+        else
+          trial%x = x_hi; trial%omega = w_hi
+        end if
+        call newton_arclength(p, st, trial%x, trial%omega, a, xp, wp_, p%set%tol, ok, it, error)
+        if (allocated(error)) return
+      end do
       if (.not.ok) then
         ! at the rounding floor: the bracket already pins the peak, keep the best end
         if (s_hi - s_lo <= 1.0e-6_wp*max(1.0_wp, s_hi)) exit
