@@ -50,5 +50,5 @@ def test_contact_errors():
         hbm_settings(nonsense=1)
     with pytest.raises(InputError, match="variant"):
         hbm_settings(variant="other")
-    assert dti_settings().steps_per_period == 256
+    assert dti_settings().steps_per_period == 1024
     assert hbm_settings(harmonics=5, variant="full").harmonics == 5

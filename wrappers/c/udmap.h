@@ -303,7 +303,7 @@ int udmap_hbm_curve(udmap_error error, udmap_blade blade, udmap_contact contact,
 
 /* Settings of the time integration; fill with udmap_dti_defaults. */
 typedef struct {
-  int steps_per_period; /* Newmark steps per excitation period (default 256, >= 8) */
+  int steps_per_period; /* Newmark steps per excitation period (default 1024, >= 8) */
   double ss_tol;        /* steady state: estimated remaining relative error of gamma_1 (1e-8) */
   int min_periods;      /* least periods (default 20) */
   int max_periods;      /* most periods before giving up (default 200000) */

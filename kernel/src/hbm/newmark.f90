@@ -27,7 +27,7 @@ module udmap_newmark
 
   !> Settings of the time integration.
   type :: dti_settings_type
-    integer :: steps_per_period = 256   !< time steps per excitation period (>= 8)
+    integer :: steps_per_period = 1024  !< time steps per excitation period (>= 8)
     real(wp) :: ss_tol = 1.0e-8_wp      !< estimated remaining relative error of Gamma_1
     integer :: min_periods = 20         !< least periods before the steady-state test
     integer :: max_periods = 200000     !< most periods before giving up
