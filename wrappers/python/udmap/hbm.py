@@ -249,7 +249,7 @@ def _hbm_dict(p: HbmPoint) -> dict:
 
 def hbm(blade, damper, f_min: float, f_max: float, F_E: Iterable[float], harmonics: int = 1,
         variant: str = "condensed", sigma_all: float = 80e6, classify: bool = True,
-        **settings) -> list[dict]:
+        progress=None, **settings) -> list[dict]:
     """Peaks of the response by the standard method for each force.
 
     blade: a udmap Blade; damper: the case's damper section (dict) or a Contact; band
@@ -260,7 +260,8 @@ def hbm(blade, damper, f_min: float, f_max: float, F_E: Iterable[float], harmoni
     regime and hcf_ok from F_lim, gamma_s, gamma_b) plus gamma_max, gamma_h (|Gamma_h|),
     peak_f, lift_off, steps, iterations, aft_calls and seconds (kernel wall time of that
     force). A response the standard method finds unbounded (at or above F_lim without enough
-    damping) is a point with unbounded=True and a message, as for the backbone."""
+    damping) is a point with unbounded=True and a message, as for the backbone.
+    progress: optional callable, called with 1 after each force (e.g. Progress.update)."""
     contact = _contact(damper)
     s = hbm_settings(harmonics, variant, **settings)
     arr, _ = _forces(F_E)
@@ -276,8 +277,10 @@ def hbm(blade, damper, f_min: float, f_max: float, F_E: Iterable[float], harmoni
             if "unbounded" not in str(exc):
                 raise
             out.append({"F_E": float(F), "unbounded": True, "message": str(exc)})
-            continue
-        out.append(_hbm_dict(pts[0]))
+        else:
+            out.append(_hbm_dict(pts[0]))
+        if progress is not None:
+            progress(1)
     if classify and isinstance(damper, dict):
         _classify(blade, damper, f_min, f_max, sigma_all, out)
     return out
@@ -374,29 +377,36 @@ def hbm_curve(blade, damper, f_min: float, f_max: float, F_E: float, harmonics: 
 
 
 def dti(blade, damper, F_E: Iterable[float], freq: float | None = None, peak: bool = False,
-        f_min: float | None = None, f_max: float | None = None, **settings) -> list[dict]:
+        f_min: float | None = None, f_max: float | None = None, progress=None,
+        **settings) -> list[dict]:
     """Time integration to steady state for each force, at `freq` [Hz] or, with peak=True, at
     the frequency of the largest gamma_1 near the single-harmonic peak in [f_min, f_max].
-    settings: fields of udmap_dti_settings (steps_per_period, ss_tol, ...).
+    settings: fields of udmap_dti_settings (steps_per_period, ss_tol, ...); progress: optional
+    callable, called with 1 after each force.
     Returns dicts {F_E, f, gamma_1, sigma_1, gamma_max, gamma_0, ss_error, periods, runs,
-    seconds}."""
+    seconds, lift_off}."""
     contact = _contact(damper)
     s = dti_settings(**settings)
-    arr, ptr = _forces(F_E)
-    pts = (DtiPoint * max(1, len(arr)))()
-    err = ErrorHandle()
-    if peak:
-        if f_min is None or f_max is None:
-            raise InputError("dti: the peak search needs the band f_min, f_max")
-        err.check(_dti_peak(err.ptr, _blade_ptr(blade), contact.ptr, ctypes.byref(s),
-                            float(f_min), float(f_max), len(arr), ptr, pts))
-    else:
-        if freq is None:
-            raise InputError("dti: give freq or peak=True")
-        err.check(_dti_response(err.ptr, _blade_ptr(blade), contact.ptr, ctypes.byref(s),
-                                float(freq), len(arr), ptr, pts))
+    arr, _ = _forces(F_E)
+    if peak and (f_min is None or f_max is None):
+        raise InputError("dti: the peak search needs the band f_min, f_max")
+    if not peak and freq is None:
+        raise InputError("dti: give freq or peak=True")
     keys = [k for k, _ in DtiPoint._fields_]
-    out = [{k: getattr(pts[i], k) for k in keys} for i in range(len(arr))]
-    for p in out:
+    out = []
+    for F in arr:
+        one, ptr = as_doubles(np.array([F]))
+        pts = (DtiPoint * 1)()
+        err = ErrorHandle()
+        if peak:
+            err.check(_dti_peak(err.ptr, _blade_ptr(blade), contact.ptr, ctypes.byref(s),
+                                float(f_min), float(f_max), 1, ptr, pts))
+        else:
+            err.check(_dti_response(err.ptr, _blade_ptr(blade), contact.ptr, ctypes.byref(s),
+                                    float(freq), 1, ptr, pts))
+        p = {k: getattr(pts[0], k) for k in keys}
         p["lift_off"] = bool(p["lift_off"])
+        out.append(p)
+        if progress is not None:
+            progress(1)
     return out
