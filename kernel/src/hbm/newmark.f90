@@ -400,7 +400,12 @@ contains
     point%lift_off = el%lifted()
     point%gamma_max = gmax_p
     point%gamma_0 = gmean/T
-    point%ss_error = est/max(abs(G1), tiny(1.0_wp))
+    ! relative remaining error, without overflow when no estimate exists yet
+    if (est < 1.0e-3_wp*huge(1.0_wp)*max(abs(G1), tiny(1.0_wp))) then
+      point%ss_error = est/max(abs(G1), tiny(1.0_wp))
+    else
+      point%ss_error = huge(1.0_wp)
+    end if
     if (good < 3) then
       write(buf, '(i0)') set%max_periods
       call fatal_error(error, "dti: no steady state within max_periods = "//trim(buf)// &
