@@ -76,6 +76,7 @@ contains
 
   ! ------------------------------------------------------------------ contact elements
 
+  !> A rotational Jenkins element as a contact handle (PHYSICS.md 2.4).
   function udmap_new_contact_jenkins(ehandle, kt, M_slip, contact) result(stat) &
       & bind(C, name="udmap_new_contact_jenkins")
     type(c_ptr), value :: ehandle
@@ -96,6 +97,7 @@ contains
     stat = set_error(ehandle, error)
   end function udmap_new_contact_jenkins
 
+  !> The asymmetric damper as a contact handle: geometry, CF ramp, stuck stiffness.
   function udmap_new_contact_asymmetric(ehandle, params, contact) result(stat) &
       & bind(C, name="udmap_new_contact_asymmetric")
     type(c_ptr), value :: ehandle
@@ -130,6 +132,7 @@ contains
     stat = set_error(ehandle, error)
   end function udmap_new_contact_asymmetric
 
+  !> Frees a contact handle (NULL allowed) and sets it to NULL.
   subroutine udmap_delete_contact(contact) bind(C, name="udmap_delete_contact")
     type(c_ptr), intent(inout) :: contact
     type(c_contact_type), pointer :: c
@@ -186,12 +189,14 @@ contains
 
   ! ------------------------------------------------------------------ standard method
 
+  !> The default settings of the standard method.
   subroutine udmap_hbm_defaults(settings) bind(C, name="udmap_hbm_defaults")
     type(c_hbm_settings), intent(out) :: settings
     type(hbm_settings_type) :: d
     call settings_to_c(d, settings)
   end subroutine udmap_hbm_defaults
 
+  !> Peaks of the response for n forces (udmap_hbm_point each).
   function udmap_hbm_peaks(ehandle, blade, contact, f_min, f_max, settings, n, F_E, points) &
       & result(stat) bind(C, name="udmap_hbm_peaks")
     type(c_ptr), value :: ehandle, blade, contact
@@ -221,6 +226,7 @@ contains
     stat = set_error(ehandle, error)
   end function udmap_hbm_peaks
 
+  !> Response at f_exc for n forces, by continuation from f_min.
   function udmap_hbm_response(ehandle, blade, contact, f_min, f_exc, settings, n, F_E, points) &
       & result(stat) bind(C, name="udmap_hbm_response")
     type(c_ptr), value :: ehandle, blade, contact
@@ -250,6 +256,7 @@ contains
     stat = set_error(ehandle, error)
   end function udmap_hbm_response
 
+  !> The continued response curve of one force.
   function udmap_hbm_curve(ehandle, blade, contact, f_min, f_max, settings, F_E, capacity, &
       & npoints, f, gamma_1, sigma_1, gamma_max) result(stat) bind(C, name="udmap_hbm_curve")
     type(c_ptr), value :: ehandle, blade, contact
@@ -290,6 +297,7 @@ contains
 
   ! ------------------------------------------------------------------ time integration
 
+  !> The default settings of the time integration.
   subroutine udmap_dti_defaults(settings) bind(C, name="udmap_dti_defaults")
     type(c_dti_settings), intent(out) :: settings
     type(dti_settings_type) :: d
@@ -302,6 +310,7 @@ contains
     settings%gamma_limit = d%gamma_limit
   end subroutine udmap_dti_defaults
 
+  !> Steady state by time integration at f_exc for n forces.
   function udmap_dti_response(ehandle, blade, contact, settings, f_exc, n, F_E, points) &
       & result(stat) bind(C, name="udmap_dti_response")
     type(c_ptr), value :: ehandle, blade, contact
@@ -329,6 +338,7 @@ contains
     stat = set_error(ehandle, error)
   end function udmap_dti_response
 
+  !> Time integration at the frequency of the largest gamma_1 near the H = 1 peak.
   function udmap_dti_peak(ehandle, blade, contact, settings, f_min, f_max, n, F_E, points) &
       & result(stat) bind(C, name="udmap_dti_peak")
     type(c_ptr), value :: ehandle, blade, contact
