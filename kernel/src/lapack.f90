@@ -7,6 +7,7 @@ module udmap_lapack
   private
   public :: dsyev, dsygvd, dsygv, dpotrf, dpotrs, dpbtrf, dpbtrs, dsbmv
   public :: zgetrf, zgetrs, zgbtrf, zgbtrs, zggev
+  public :: dgesv, dgetrf, dgetrs, dgbtrf, dgbtrs
 
   interface
     !> Symmetric eigenproblem A x = lambda x (QR iteration).
@@ -123,6 +124,45 @@ module udmap_lapack
       complex(wp), intent(inout) :: b(ldb, *)
       integer, intent(out) :: info
     end subroutine zgbtrs
+    !> Dense real LU solve.
+    pure subroutine dgesv(n, nrhs, a, lda, ipiv, b, ldb, info)
+      import :: wp
+      integer, intent(in) :: n, nrhs, lda, ldb
+      real(wp), intent(inout) :: a(lda, *), b(ldb, *)
+      integer, intent(out) :: ipiv(*), info
+    end subroutine dgesv
+    !> Dense real LU factorisation.
+    pure subroutine dgetrf(m, n, a, lda, ipiv, info)
+      import :: wp
+      integer, intent(in) :: m, n, lda
+      real(wp), intent(inout) :: a(lda, *)
+      integer, intent(out) :: ipiv(*), info
+    end subroutine dgetrf
+    !> Dense real LU back substitution.
+    pure subroutine dgetrs(trans, n, nrhs, a, lda, ipiv, b, ldb, info)
+      import :: wp
+      character(len=1), intent(in) :: trans
+      integer, intent(in) :: n, nrhs, lda, ldb, ipiv(*)
+      real(wp), intent(in) :: a(lda, *)
+      real(wp), intent(inout) :: b(ldb, *)
+      integer, intent(out) :: info
+    end subroutine dgetrs
+    !> Banded real LU factorisation.
+    pure subroutine dgbtrf(m, n, kl, ku, ab, ldab, ipiv, info)
+      import :: wp
+      integer, intent(in) :: m, n, kl, ku, ldab
+      real(wp), intent(inout) :: ab(ldab, *)
+      integer, intent(out) :: ipiv(*), info
+    end subroutine dgbtrf
+    !> Banded real LU back substitution.
+    pure subroutine dgbtrs(trans, n, kl, ku, nrhs, ab, ldab, ipiv, b, ldb, info)
+      import :: wp
+      character(len=1), intent(in) :: trans
+      integer, intent(in) :: n, kl, ku, nrhs, ldab, ldb, ipiv(*)
+      real(wp), intent(in) :: ab(ldab, *)
+      real(wp), intent(inout) :: b(ldb, *)
+      integer, intent(out) :: info
+    end subroutine dgbtrs
 
     !> Generalized non-symmetric eigenproblem A x = lambda B x (QZ), eigenvalues
     !> alpha/beta.

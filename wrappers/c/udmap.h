@@ -216,6 +216,129 @@ int udmap_model_curve_size(udmap_error error, udmap_model model, int i, int *npo
 int udmap_model_curve_get(udmap_error error, udmap_model model, int i, int npoints, double *f_hz,
                           double *gamma_P, double *sigma_a, int *branch, int *part);
 
+/* ---------------------------------------------------------------- standard method, time integration */
+
+/* The standard convergence-based method (PHYSICS.md 6) and the time-domain ground truth
+ * (PHYSICS.md 7). The damper enters as its contact law in time (udmap_contact): the steady
+ * moment for a periodic gamma(t) is traced with the loading history of PHYSICS.md 2.1, exactly
+ * (event-driven) unless a number of AFT samples is set. */
+typedef struct _udmap_contact *udmap_contact;
+
+#define UDMAP_HBM_CONDENSED 0 /* harmonic balance on the damper DOF after condensation */
+#define UDMAP_HBM_FULL 1      /* harmonic balance on all DOFs */
+#define UDMAP_HBM_MAX_HARMONICS 64
+
+/* Rotational Jenkins element (PHYSICS.md 2.4): kt [N m/rad], M_slip [N m]. */
+int udmap_new_contact_jenkins(udmap_error error, double kt, double M_slip, udmap_contact *contact);
+/* Asymmetric flat/curved damper (PHYSICS.md 2.1), with its CF ramp. */
+int udmap_new_contact_asymmetric(udmap_error error, const udmap_asymmetric_params *params,
+                                 udmap_contact *contact);
+void udmap_delete_contact(udmap_contact *contact);
+
+/* One AFT evaluation: gamma(tau) = G0 + Re(sum_h G_h e^{i h tau}), h = 1..H, G as H (re, im)
+ * pairs; returns the steady M_r = M0 + Re(sum_h M_h e^{i h tau}) (M as H pairs) and the largest
+ * gamma. samples = 0: exact event-driven integration; >= 2H+1: classical sampled AFT. */
+int udmap_contact_aft(udmap_error error, udmap_contact contact, int H, double G0, const double *G,
+                      int samples, double *M0, double *M, double *gamma_max);
+
+/* Settings of the standard method; fill with udmap_hbm_defaults, then change what is needed. */
+typedef struct {
+  int harmonics;       /* H: harmonics 1..H (default 1) */
+  int harmonic0;       /* 1: also balance the static harmonic 0 (default 0) */
+  int variant;         /* UDMAP_HBM_CONDENSED (default) or UDMAP_HBM_FULL */
+  double tol;          /* Newton: relative step tolerance at the peak (default 1e-10) */
+  int max_iter;        /* Newton iterations per corrector (default 30) */
+  double ds_initial;   /* arc-length steps in relative amplitude/frequency units: */
+  double ds_min;       /*   first 0.05, smallest 1e-9, largest 0.3 */
+  double ds_max;
+  int target_iter;     /* step control: Newton iterations aimed at per step (default 4) */
+  double max_angle;    /* largest turn of the tangent per step [rad] (default 0.35) */
+  int max_steps;       /* continuation steps per force (default 20000) */
+  double peak_tol;     /* peak refinement tolerance on the arc length (default 1e-10) */
+  int aft_samples;     /* 0: exact event-driven AFT (default); N >= 2H+1: N samples per period */
+  int aft_max_periods; /* periods until the damper loop repeats, at most (default 8) */
+  double fd_step;      /* relative finite-difference step of the damper Jacobian (1e-7) */
+  double gamma_limit;  /* amplitude [rad] beyond which the response is unbounded (10) */
+  int full_band;       /* 1: continue to f_max (default); 0: stop once past the peak */
+  int jacobian_reuse;  /* 1: keep the damper Jacobian while Newton contracts well (default) */
+  double tol_path;     /* Newton: relative step tolerance along the path (default 1e-6) */
+} udmap_hbm_settings;
+
+void udmap_hbm_defaults(udmap_hbm_settings *settings);
+
+/* The peak of the first harmonic of gamma_P on the continued response curve of one force. */
+typedef struct {
+  double F_E;        /* excitation force amplitude [N] */
+  double gamma_P;    /* first-harmonic amplitude of gamma_P at the peak [rad] */
+  double f_res;      /* frequency of the peak [Hz] (or the given frequency) */
+  double sigma_a;    /* first-harmonic stress amplitude [Pa] (0 without stress rows) */
+  double u_E;        /* first-harmonic displacement amplitude at E [m] */
+  double k_re, k_im; /* M_1/Gamma_1 at the peak [N m/rad] */
+  double gamma_max;  /* largest gamma_P(t) over the period [rad] */
+  int npeaks;        /* local maxima of gamma_1 on the curve (peaks[], peak_f[], ascending) */
+  double peaks[UDMAP_MAX_ROOTS];
+  double peak_f[UDMAP_MAX_ROOTS];
+  int harmonics;     /* number of entries of gamma_h */
+  double gamma_h[UDMAP_HBM_MAX_HARMONICS]; /* |Gamma_h|, h = 1..harmonics [rad] */
+  int steps;         /* accepted continuation steps */
+  int iterations;    /* Newton iterations */
+  int aft_calls;     /* AFT evaluations (Jacobians included) */
+  double seconds;    /* wall time of this force [s] */
+  int lift_off;      /* 1 if a damper contact opens during the cycle at the peak */
+} udmap_hbm_point;
+
+/* Peaks for n forces over [f_min, f_max] [Hz]: continuation from f_min upwards from the stuck
+ * linear response, the peak located on the curve. No peak inside the band: UDMAP_EPHYSICS. */
+int udmap_hbm_peaks(udmap_error error, udmap_blade blade, udmap_contact contact, double f_min,
+                    double f_max, const udmap_hbm_settings *settings, int n, const double *F_E,
+                    udmap_hbm_point *points);
+/* Response at f_exc [Hz] for n forces, reached by continuation from f_min. */
+int udmap_hbm_response(udmap_error error, udmap_blade blade, udmap_contact contact, double f_min,
+                       double f_exc, const udmap_hbm_settings *settings, int n, const double *F_E,
+                       udmap_hbm_point *points);
+/* The continued curve of one force: *npoints points (only the first `capacity` written) of f
+ * [Hz], |Gamma_1| [rad], first-harmonic stress [Pa] and the largest gamma(t) [rad]. */
+int udmap_hbm_curve(udmap_error error, udmap_blade blade, udmap_contact contact, double f_min,
+                    double f_max, const udmap_hbm_settings *settings, double F_E, int capacity,
+                    int *npoints, double *f, double *gamma_1, double *sigma_1, double *gamma_max);
+
+/* Settings of the time integration; fill with udmap_dti_defaults. */
+typedef struct {
+  int steps_per_period; /* Newmark steps per excitation period (default 1024, >= 8) */
+  double ss_tol;        /* steady state: estimated remaining relative error of gamma_1 (1e-8) */
+  int min_periods;      /* least periods (default 20) */
+  int max_periods;      /* most periods before giving up (default 200000) */
+  double peak_rtol;     /* peak search: relative frequency tolerance (default 1e-6) */
+  double peak_window;   /* peak search: first bracket half-width, relative (default 0.01) */
+  double gamma_limit;   /* |gamma_P| [rad] beyond which the response is unbounded (10) */
+} udmap_dti_settings;
+
+void udmap_dti_defaults(udmap_dti_settings *settings);
+
+/* Steady state reached from rest under F_E sin(2 pi f t) at E. */
+typedef struct {
+  double F_E;       /* excitation force amplitude [N] */
+  double f;         /* excitation frequency [Hz] */
+  double gamma_1;   /* first-harmonic amplitude of gamma_P [rad] */
+  double sigma_1;   /* first-harmonic amplitude of the stress [Pa] */
+  double gamma_max; /* largest gamma_P(t) over the last period [rad] */
+  double gamma_0;   /* mean of gamma_P(t) over the last period [rad] */
+  double ss_error;  /* estimated remaining relative error of gamma_1 */
+  int periods;      /* periods integrated (last run) */
+  int runs;         /* time integrations (several for the peak search) */
+  double seconds;   /* wall time [s] */
+  int lift_off;     /* 1 if a damper contact opened during the last period */
+} udmap_dti_point;
+
+/* Newmark (average acceleration) on the whole blade to steady state at f_exc [Hz]. */
+int udmap_dti_response(udmap_error error, udmap_blade blade, udmap_contact contact,
+                       const udmap_dti_settings *settings, double f_exc, int n,
+                       const double *F_E, udmap_dti_point *points);
+/* The frequency of the largest gamma_1 near the single-harmonic peak in [f_min, f_max]. */
+int udmap_dti_peak(udmap_error error, udmap_blade blade, udmap_contact contact,
+                   const udmap_dti_settings *settings, double f_min, double f_max, int n,
+                   const double *F_E, udmap_dti_point *points);
+
 #ifdef __cplusplus
 }
 #endif
