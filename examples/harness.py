@@ -81,14 +81,18 @@ class Harness:
 
     # ------------------------------------------------------------------ reference and checks
 
-    def reference(self, forces: str = FORCES) -> dict:
-        """The CLI of the source tree on blade A (the numbers every example must print)."""
+    def cli(self, *args) -> dict:
+        """The CLI of the source tree on blade A, --json (the numbers examples must print)."""
         env = dict(os.environ)
         env["PYTHONPATH"] = str(SOURCE / "wrappers" / "python")
         env["UDMAP_LIBRARY"] = str(self.build / "kernel" / "libudmap.so")
-        out = run([sys.executable, "-m", "udmap", "backbone", SOURCE / "cases" / "blade_a.json",
-                   "--forces", forces, "--json"], env=env, cwd=SOURCE)
+        env.pop("UDMAP_BUILD_DIR", None)
+        out = run([sys.executable, "-m", "udmap", args[0], SOURCE / "cases" / "blade_a.json",
+                   *args[1:], "--json"], env=env, cwd=SOURCE)
         return json.loads(out)
+
+    def reference(self, forces: str = FORCES) -> dict:
+        return self.cli("backbone", "--forces", forces)
 
     def check_linked_from_prefix(self, exe: Path) -> None:
         """The example must load libudmap from the prefix, never from the build tree."""
@@ -101,7 +105,7 @@ class Harness:
 
     @staticmethod
     def last_digit(token: str) -> float:
-        """One unit in the last printed digit of a number token, e.g. 1.2345E+01 -> 1e-3."""
+        """One unit in the last printed digit of a number token, e.g. 1.2345E+01 -> 1e-4."""
         m = re.fullmatch(r"[-+]?(\d*)(?:\.(\d*))?(?:[eEdD]([-+]?\d+))?", token)
         if not m:
             raise Failure(f"not a number: {token!r}")
@@ -109,25 +113,62 @@ class Harness:
         exponent = int(m.group(3) or 0)
         return 10.0 ** (exponent - decimals)
 
+    @staticmethod
+    def rows(output: str, prefix: str | None, count: int) -> list[list[str]]:
+        """Lines of `count` number tokens, after the word `prefix` (None: no word)."""
+        rows = []
+        for line in output.splitlines():
+            tokens = line.split()
+            if prefix is not None:
+                if not tokens or tokens[0] != prefix:
+                    continue
+                tokens = tokens[1:]
+            if len(tokens) == count and all(re.fullmatch(NUMBER, t) for t in tokens):
+                rows.append(tokens)
+        return rows
+
     def compare_backbone(self, output: str, name: str, forces: str = FORCES) -> None:
-        """Compares the F_lim line and the rows 'F_E gamma_P f_res sigma_a' with the CLI."""
+        """Compares what the example printed with the CLI: the F_lim line and the rows
+        'F_E gamma_P f_res sigma_a' (always), and when printed the lines
+        'table gamma k_re k_im', 'response f_exc F_E gamma_P sigma_a' and
+        'curve F_E points max_gamma_P'."""
         ref = self.reference(forces)
         expected = [(p["F_E"], p["gamma_P"], p["f_res"], p["sigma_a"]) for p in ref["points"]]
         m = re.search(r"^\s*F_lim\s*=?\s*(" + NUMBER + ")", output, re.M)
         if not m:
             raise Failure(f"{name}: no 'F_lim = ...' line in the output")
         checks = [("F_lim", m.group(1), ref["F_lim"])]
-        rows = []
-        for line in output.splitlines():
-            tokens = line.split()
-            if len(tokens) == 4 and all(re.fullmatch(NUMBER, t) for t in tokens):
-                rows.append(tokens)
+        rows = self.rows(output, None, 4)
         if len(rows) != len(expected):
             raise Failure(f"{name}: expected {len(expected)} rows 'F_E gamma_P f_res sigma_a', "
                           f"found {len(rows)}")
         for row, exp in zip(rows, expected):
             for label, token, value in zip(("F_E", "gamma_P", "f_res", "sigma_a"), row, exp):
                 checks.append((f"{label}@{exp[0]:g}", token, value))
+
+        table = self.rows(output, "table", 3)
+        if table:
+            ref = self.cli("table", "--gammas", ",".join(r[0] for r in table))
+            for row, p in zip(table, ref["points"]):
+                for label, token, key in zip(("gamma", "k_re", "k_im"), row,
+                                             ("gamma", "k_re", "k_im")):
+                    checks.append((f"table {label}@{row[0]}", token, p[key]))
+        response = self.rows(output, "response", 4)
+        if response:
+            ref = self.cli("response", "--forces", ",".join(r[1] for r in response),
+                           "--freq", response[0][0])
+            for row, p in zip(response, ref["points"]):
+                for label, token, key in zip(("F_E", "gamma_P", "sigma_a"), row[1:],
+                                             ("F_E", "gamma_P", "sigma_a")):
+                    checks.append((f"response {label}@{row[1]}", token, p[key]))
+        curve = self.rows(output, "curve", 3)
+        for row in curve:
+            c = self.cli("curves", "--forces", row[0])["curves"][0]
+            if int(row[1]) != len(c["f"]):
+                raise Failure(f"{name}: curve at F_E = {row[0]} has {row[1]} points, the CLI's "
+                              f"{len(c['f'])}")
+            checks.append((f"curve max gamma_P@{row[0]}", row[2], max(c["gamma_P"])))
+
         bad = []
         for label, token, value in checks:
             printed = float(token.replace("D", "E").replace("d", "e"))
@@ -138,7 +179,9 @@ class Harness:
                 print(f"ok {label}: {token} vs CLI {value!r}")
         if bad:
             raise Failure(f"{name}: differs from the CLI:\n  " + "\n  ".join(bad))
-        print(f"{name}: {len(checks)} numbers equal the CLI's to the printed precision")
+        print(f"{name}: {len(checks)} numbers equal the CLI's to the printed precision "
+              f"(backbone{', table' if table else ''}{', response' if response else ''}"
+              f"{', curve' if curve else ''})")
 
     # ------------------------------------------------------------------ steps
 
