@@ -8,6 +8,7 @@
 #   lib/cmake/udmap/udmapConfig.cmake, udmapConfigVersion.cmake, udmapTargets*.cmake,
 #                   FindARPACK.cmake (Debian's arpack ships no CMake package)
 #   lib/pkgconfig/udmap.pc
+#   share/udmap/udmap.fmu, udmap-fmi3.fmu (when the build makes them)
 # .mod files are specific to the compiler and its major version (gfortran's module format),
 # hence the versioned directory: programs must be compiled with the same compiler family.
 # Everything is relocatable: `cmake --install build --prefix P` works for any P.
@@ -72,3 +73,14 @@ endif()
 configure_file("${PROJECT_SOURCE_DIR}/cmake/udmap.pc.in" "${PROJECT_BINARY_DIR}/udmap.pc" @ONLY)
 install(FILES "${PROJECT_BINARY_DIR}/udmap.pc"
   DESTINATION "${UDMAP_INSTALL_PKGCONFIGDIR}" COMPONENT udmap)
+
+# The FMUs, when this build makes them (fmu/CMakeLists.txt).
+foreach(_udmap_fmu udmap-fmi2:udmap.fmu udmap-fmi3:udmap-fmi3.fmu)
+  string(REPLACE ":" ";" _udmap_fmu "${_udmap_fmu}")
+  list(GET _udmap_fmu 0 _udmap_fmu_target)
+  list(GET _udmap_fmu 1 _udmap_fmu_file)
+  if(TARGET ${_udmap_fmu_target}-archive)
+    install(FILES "${PROJECT_BINARY_DIR}/${_udmap_fmu_file}"
+      DESTINATION "${CMAKE_INSTALL_DATADIR}/udmap" COMPONENT udmap)
+  endif()
+endforeach()
