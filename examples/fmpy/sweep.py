@@ -22,7 +22,8 @@ args = parser.parse_args()
 forces = 0.5 * np.arange(1, 21)
 signal = np.array(list(zip(np.arange(len(forces), dtype=float), forces)),
                   dtype=[("time", np.float64), ("F_E", np.float64)])
-result = simulate_fmu(args.fmu, stop_time=len(forces) - 1.0, output_interval=1.0,
+# One step more than forces: the outputs recorded at t + 1 belong to the input applied at t.
+result = simulate_fmu(args.fmu, stop_time=float(len(forces)), output_interval=1.0,
                       input=signal, output=["F_E", "gamma_P", "f_res", "sigma_a", "F_lim"])
 
 # Every recorded row holds the F_E its outputs were computed for; keep one row per force.
@@ -41,12 +42,14 @@ fig, ax = plt.subplots(figsize=(6, 4))
 ax.plot(rows["F_E"], rows["sigma_a"] / 1e6, "o-", label="sigma_a at resonance")
 ax.axvline(rows["F_lim"][0], color="k", ls="--", label="F_lim")
 ax.axvline(0.5 * rows["F_lim"][0], color="gray", ls=":", label="0.5 F_lim")
+ax.axhline(80.0, color="tab:red", ls="-.", label="sigma_all (80 MPa)")
 ax.set_xlabel("F_E [N]")
 ax.set_ylabel("sigma_a [MPa]")
 ax2 = ax.twinx()
-ax2.plot(rows["F_E"], rows["gamma_P"], "s--", color="tab:orange", label="gamma_P")
+ax2.plot(rows["F_E"], rows["gamma_P"], "s--", color="tab:orange", label="gamma_P (right)")
 ax2.set_ylabel("gamma_P [rad]")
-ax.legend(loc="upper left")
+handles = ax.get_legend_handles_labels()[0] + ax2.get_legend_handles_labels()[0]
+ax.legend(handles, [h.get_label() for h in handles], loc="lower right", fontsize="small")
 ax.set_title("udmap FMU: damper performance (blade A)")
 fig.tight_layout()
 fig.savefig(args.plot, dpi=120)
