@@ -15,7 +15,7 @@ module udmap_api_hbm
   use udmap_api_damper, only: udmap_asymmetric_params
   use udmap_aft, only: aft_workspace_type, aft_moment
   use udmap_hbm, only: hbm_settings_type, hbm_point_type, hbm_curve_type, hbm_peak, &
-    & hbm_response, HBM_MAX_PEAKS
+    & hbm_peaks, hbm_response, HBM_MAX_PEAKS
   use udmap_newmark, only: dti_settings_type, dti_point_type, dti_response, dti_peak
   implicit none
   private
@@ -42,6 +42,7 @@ module udmap_api_hbm
     real(c_double) :: fd_step, gamma_limit
     integer(c_int) :: full_band, jacobian_reuse
     real(c_double) :: tol_path
+    integer(c_int) :: warm_start
   end type c_hbm_settings
 
   !> udmap_hbm_point.
@@ -210,17 +211,18 @@ contains
     type(structure_type) :: st
     type(c_contact_type), pointer :: c
     type(hbm_settings_type) :: set
-    type(hbm_point_type) :: pt
+    type(hbm_point_type), allocatable :: pts(:)
     integer :: i
     call clear_error(ehandle)
     call prepare(blade, contact, n, st, c, error)
     if (.not.allocated(error)) call settings_from_c(settings, set, error)
     if (.not.allocated(error)) then
+      call hbm_peaks(st, c%element, real(f_min, wp), real(f_max, wp), &
+        & real(F_E(1:n), wp), set, pts, error)
+      ! the points before a failure are returned
       do i = 1, n
-        call hbm_peak(st, c%element, real(f_min, wp), real(f_max, wp), real(F_E(i), wp), set, &
-          & pt, error)
-        if (allocated(error)) exit
-        call point_to_c(pt, points(i))
+        if (.not.allocated(pts(i)%gamma_h)) exit
+        call point_to_c(pts(i), points(i))
       end do
     end if
     stat = set_error(ehandle, error)
@@ -417,6 +419,7 @@ contains
     c%full_band = merge(1, 0, s%full_band)
     c%jacobian_reuse = merge(1, 0, s%jacobian_reuse)
     c%tol_path = s%tol_path
+    c%warm_start = s%warm_start
   end subroutine settings_to_c
 
   subroutine settings_from_c(c, s, error)
@@ -446,6 +449,7 @@ contains
     s%full_band = c%full_band /= 0
     s%jacobian_reuse = c%jacobian_reuse /= 0
     s%tol_path = c%tol_path
+    s%warm_start = c%warm_start
   end subroutine settings_from_c
 
   subroutine point_to_c(p, c)

@@ -114,12 +114,12 @@ def test_blade_a_asymmetric_against_backbone():
     """Acceptance: with H = 1 the standard method's peaks on blade A with its asymmetric damper
     agree with the backbone (amplitude layered mapping, independent code path: stiffness table
     and layer peaks) to 1e-6 in gamma_P, f_res and sigma_a, for both variants; same regime."""
-    from udmap.case import build_blade, load_case
+    from udmap.case import build_blade, build_damper, load_case
     from udmap.model import Model
     case = load_case()
     blade = build_blade(case)
     a = case.analysis
-    damper = hbm._KernelDamper(case.damper)  # the kernel damper (stiffness table) of the case
+    damper = build_damper(case)  # the kernel damper (stiffness table) of the case
     bb = Model(blade, damper, a["f_min"], a["f_max"]).backbone([1.0, 5.0, 10.0])
     for variant in ("condensed", "full"):
         pts = hbm.hbm(blade, case.damper, a["f_min"], a["f_max"], [1.0, 5.0, 10.0],
@@ -132,3 +132,44 @@ def test_blade_a_asymmetric_against_backbone():
     # three harmonics: a different (model-error) answer, near but not equal
     h3 = hbm.hbm(blade, case.damper, a["f_min"], a["f_max"], [5.0], harmonics=3)[0]
     assert 0.02 < abs(h3["gamma_P"] / bb[1]["gamma_P"] - 1) < 0.15
+
+
+@pytest.mark.parametrize("variant", ["condensed", "full"])
+def test_blade_a_warm_start(variant):
+    """Warm starts (each force climbs from the previous force's peak; with 2 the first force
+    from the stuck linear peak) find the same peaks as the band sweep for the GG diagram of
+    blade A (F_E = 1..10 N: partial and full slip), to the Newton tolerance, with far fewer
+    AFT evaluations (the sweep crosses the band for every force)."""
+    from udmap.case import build_blade, load_case
+    case = load_case()
+    blade = build_blade(case)
+    a = case.analysis
+    F = list(range(1, 11))
+    cold = hbm.hbm(blade, case.damper, a["f_min"], a["f_max"], F, variant=variant)
+    for level in (1, 2):
+        warm = hbm.hbm(blade, case.damper, a["f_min"], a["f_max"], F, variant=variant,
+                       warm_start=level)
+        for pw, pc in zip(warm, cold):
+            for key in ("gamma_P", "f_res", "sigma_a", "u_E", "k_re", "k_im"):
+                assert pw[key] == pytest.approx(pc[key], rel=1e-8), (level, key, pw["F_E"])
+            assert pw["regime"] == pc["regime"]
+            assert pw["roots"] == [pw["gamma_P"]]
+        assert sum(p["aft_calls"] for p in warm) < 0.4 * sum(p["aft_calls"] for p in cold)
+        # from the second force on, a few steps instead of a band crossing
+        assert all(p["steps"] < 10 for p in warm[1:])
+
+
+def test_warm_start_oscillator_and_errors(oscillator):
+    """One-DOF oscillator: warm-started peaks equal the published ones (PHYSICS.md 8) also in
+    a descending force order; a band without resonance is still an error (the climb leaves
+    the band, the sweep fallback reports it); warm_start outside 0..2 is an input error."""
+    published = {0.3: (7.279801, 1.007341), 0.1: (1.214018, 1.083677), 0.05: (0.946956, 1.106824)}
+    pts = hbm.hbm(oscillator, JENKINS_OSC, 0.8 * W, 1.3 * W, list(published), warm_start=2)
+    for p, (F, (amp, om)) in zip(pts, published.items()):
+        assert p["F_E"] == F
+        assert p["gamma_P"] == pytest.approx(amp, rel=1e-6)
+        assert 2 * math.pi * p["f_res"] == pytest.approx(om, rel=1e-6)
+    with pytest.raises(PhysicsError, match="no resonance"):
+        hbm.hbm(oscillator, JENKINS_OSC, 1.2 * W, 1.5 * W, [0.05, 0.1], warm_start=2)
+    with pytest.raises(InputError, match="warm_start"):
+        hbm.hbm(oscillator, JENKINS_OSC, 0.8 * W, 1.3 * W, [0.05, 0.1], warm_start=3)

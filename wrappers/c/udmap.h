@@ -262,6 +262,12 @@ typedef struct {
   int full_band;       /* 1: continue to f_max (default); 0: stop once past the peak */
   int jacobian_reuse;  /* 1: keep the damper Jacobian while Newton contracts well (default) */
   double tol_path;     /* Newton: relative step tolerance along the path (default 1e-6) */
+  int warm_start;      /* udmap_hbm_peaks: 0 sweeps the band for every force (default); 1 starts
+                          each force after the first at the previous force's peak (state scaled
+                          by the force ratio) and climbs the new curve to its peak instead of
+                          sweeping the band; 2 also the first force, from the peak of the stuck
+                          linear response. For curves with one peak per force (a climb that
+                          fails falls back to the sweep) */
 } udmap_hbm_settings;
 
 void udmap_hbm_defaults(udmap_hbm_settings *settings);

@@ -55,6 +55,13 @@ module udmap_hbm
     !> Keep the damper Jacobian from one Newton iteration (and step) to the next while Newton
     !> contracts well (chord steps: one AFT per iteration); .false.: new one every iteration.
     logical :: jacobian_reuse = .true.
+    !> hbm_peaks: 0 sweeps the band for every force; 1: from the second force on, start at the
+    !> previous force's peak (its state scaled by the force ratio, Newton at that frequency)
+    !> and climb the new curve to its peak instead of sweeping the band; 2: the first force
+    !> too, from the peak of the linear response with the stuck damper. A climb that fails
+    !> falls back to the sweep. Only the peak reached by climbing is found: for curves with a
+    !> single peak per force.
+    integer :: warm_start = 0
   end type hbm_settings_type
 
   !> The peak of the response for one force (fields as the backbone's, plus statistics).
@@ -109,6 +116,8 @@ module udmap_hbm
     real(wp), allocatable :: Jw_last(:)
     !> p%JM holds a damper Jacobian that may be reused
     logical :: jm_valid = .false.
+    !> full variant: the entries (i, j) of K, M, C inside the band, row by row (j = lo..hi)
+    real(wp), allocatable :: Kij(:), Mij(:), Cij(:)
     integer :: iterations = 0
   end type problem_type
 
@@ -122,7 +131,8 @@ contains
 
   ! ------------------------------------------------------------------ drivers
 
-  !> Peaks of the response for each force F_E(i) over [f_min, f_max] [Hz].
+  !> Peaks of the response for each force F_E(i) over [f_min, f_max] [Hz] (warm-started from
+  !> the previous force's peak with settings%warm_start).
   subroutine hbm_peaks(st, element, f_min, f_max, F_E, settings, points, error)
     type(structure_type), intent(in) :: st
     class(hysteretic_element_type), intent(in) :: element
@@ -130,11 +140,21 @@ contains
     type(hbm_settings_type), intent(in) :: settings
     type(hbm_point_type), allocatable, intent(out) :: points(:)
     type(error_type), allocatable, intent(out) :: error
+    type(curve_point_type) :: last
+    real(wp) :: F_last
     integer :: i
     allocate(points(size(F_E)))
+    F_last = 0.0_wp
     do i = 1, size(F_E)
-      call hbm_peak(st, element, f_min, f_max, F_E(i), settings, points(i), error)
+      if (settings%warm_start >= 2 .or. (settings%warm_start == 1 .and. F_last > 0.0_wp)) &
+        & then
+        call peak_warm(st, element, f_min, f_max, F_E(i), settings, last, F_last, points(i), &
+          & error)
+      else
+        call peak_sweep(st, element, f_min, f_max, F_E(i), settings, points(i), error, last=last)
+      end if
       if (allocated(error)) return
+      F_last = F_E(i)
     end do
   end subroutine hbm_peaks
 
@@ -147,15 +167,151 @@ contains
     type(hbm_point_type), intent(out) :: point
     type(error_type), allocatable, intent(out) :: error
     type(hbm_curve_type), intent(out), optional :: curve
+    call peak_sweep(st, element, f_min, f_max, F_E, settings, point, error, curve=curve)
+  end subroutine hbm_peak
+
+  !> The peak for one force by continuation over the band; `last` receives the peak's state.
+  subroutine peak_sweep(st, element, f_min, f_max, F_E, settings, point, error, curve, last)
+    type(structure_type), intent(in) :: st
+    class(hysteretic_element_type), intent(in) :: element
+    real(wp), intent(in) :: f_min, f_max, F_E
+    type(hbm_settings_type), intent(in) :: settings
+    type(hbm_point_type), intent(out) :: point
+    type(error_type), allocatable, intent(out) :: error
+    type(hbm_curve_type), intent(out), optional :: curve
+    type(curve_point_type), intent(out), optional :: last
     type(problem_type) :: p
     integer(8) :: c0, c1, rate
     call system_clock(c0, rate)
     call setup(p, st, element, f_min, f_max, F_E, settings, error)
     if (allocated(error)) return
-    call continuation(p, st, 2.0_wp*pi*f_min, 2.0_wp*pi*f_max, .false., point, error, curve)
+    call continuation(p, st, 2.0_wp*pi*f_min, 2.0_wp*pi*f_max, .false., point, error, curve, &
+      & last)
     call system_clock(c1)
     point%seconds = real(c1 - c0, wp)/real(rate, wp)
-  end subroutine hbm_peak
+  end subroutine peak_sweep
+
+  !> The peak for force F_E started from the peak `last` of the force F_last: that state scaled
+  !> by F_E/F_last at the same frequency (F_last = 0: the stuck linear response at the peak
+  !> frequency of the stuck linear response), corrected by Newton at fixed frequency, then
+  !> arc-length steps uphill in gamma_1 (gamma_1 is unimodal along a single-peak curve, folds
+  !> or not) until the peak is passed, refined as in the sweep. `last` becomes the new peak.
+  !> A warm start that does not converge or a climb that leaves the band falls back to the
+  !> sweep (the statistics then count both).
+  subroutine peak_warm(st, element, f_min, f_max, F_E, settings, last, F_last, point, error)
+    type(structure_type), intent(in) :: st
+    class(hysteretic_element_type), intent(in) :: element
+    real(wp), intent(in) :: f_min, f_max, F_E, F_last
+    type(hbm_settings_type), intent(in) :: settings
+    type(curve_point_type), intent(inout) :: last
+    type(hbm_point_type), intent(out) :: point
+    type(error_type), allocatable, intent(out) :: error
+    type(problem_type) :: p
+    type(curve_point_type) :: cur, nxt, pk
+    real(wp), allocatable :: tx0(:)
+    real(wp) :: ds, omega_a, omega_b, angle_rejected, fac
+    integer :: steps, it, spent_iter, spent_aft
+    logical :: ok, found
+    integer(8) :: c0, c1, rate
+    call system_clock(c0, rate)
+    call setup(p, st, element, f_min, f_max, F_E, settings, error)
+    if (allocated(error)) return
+    omega_a = 2.0_wp*pi*f_min
+    omega_b = 2.0_wp*pi*f_max
+    found = .false.
+    steps = 0
+    if (F_last > 0.0_wp) then
+      ok = allocated(last%x)
+      if (ok) ok = size(last%x) == p%nx
+      if (ok) then
+        cur%x = last%x*(F_E/F_last)
+        cur%omega = last%omega
+      end if
+    else
+      call stuck_peak(p, st, omega_a, omega_b, cur%omega, error)
+      if (allocated(error)) return
+      allocate(cur%x(p%nx))
+      call stuck_guess(p, st, cur%omega, cur%x, error)
+      if (allocated(error)) return
+      ok = .true.
+    end if
+    if (ok) then
+      call newton_fixed(p, st, cur%x, cur%omega, p%set%tol_path, ok, it, error)
+      if (allocated(error)) return
+    end if
+    if (ok) then
+      allocate(cur%tx(p%nx), tx0(p%nx))
+      tx0 = 0.0_wp
+      call tangent(p, st, cur, tx0, 1.0_wp, error)
+      if (allocated(error)) return
+      ! climb: travel in the direction in which gamma_1 grows
+      if (cur%dA < 0.0_wp) then
+        cur%tx = -cur%tx
+        cur%tw = -cur%tw
+        cur%dA = -cur%dA
+      end if
+      ds = p%set%ds_initial
+      angle_rejected = huge(1.0_wp)
+      do while (steps < p%set%max_steps)
+        call corrector_step(p, st, cur, ds, nxt, ok, it, error)
+        if (allocated(error)) return
+        if (ok) call check_step(p, cur, nxt, ds, angle_rejected, ok)
+        if (.not.ok) then
+          ds = 0.5_wp*ds
+          if (ds < p%set%ds_min) exit
+          cycle
+        end if
+        ! left the band: no peak inside it on this side
+        if (nxt%omega < omega_a .or. nxt%omega > omega_b) exit
+        steps = steps + 1
+        angle_rejected = huge(1.0_wp)
+        if (nxt%A > p%set%gamma_limit) then
+          call fatal_error(error, "hbm: the response exceeds gamma_limit (unbounded: F_E at "// &
+            & "or above the limit force with little damping, or a force far beyond the model)", &
+            & UDMAP_EPHYSICS)
+          return
+        end if
+        if (cur%dA > 0.0_wp .and. nxt%dA <= 0.0_wp) then
+          call refine_peak(p, st, cur, nxt, pk, error)
+          if (allocated(error)) return
+          found = .true.
+          exit
+        end if
+        fac = step_factor(p, it)
+        ds = min(p%set%ds_max, ds*fac)
+        call move_alloc(nxt%x, cur%x)
+        call move_alloc(nxt%tx, cur%tx)
+        cur%omega = nxt%omega
+        cur%tw = nxt%tw
+        cur%A = nxt%A
+        cur%dA = nxt%dA
+        cur%A_s = amplitude_scale(p, cur%x)
+        call renormalise(p, cur)
+      end do
+    end if
+    if (.not.found) then
+      spent_iter = p%iterations
+      spent_aft = p%ws%calls
+      call peak_sweep(st, element, f_min, f_max, F_E, settings, point, error, last=last)
+      if (allocated(error)) return
+      point%iterations = point%iterations + spent_iter
+      point%aft_calls = point%aft_calls + spent_aft
+      point%steps = point%steps + steps
+    else
+      call fill_point(p, st, pk, point, error)
+      if (allocated(error)) return
+      point%F_E = F_E
+      point%npeaks = 1
+      point%peaks(1) = point%gamma_P
+      point%peak_f(1) = point%f_res
+      point%steps = steps
+      point%iterations = p%iterations
+      point%aft_calls = p%ws%calls
+      last = pk
+    end if
+    call system_clock(c1)
+    point%seconds = real(c1 - c0, wp)/real(rate, wp)
+  end subroutine peak_warm
 
   !> The response at the excitation frequency f_exc [Hz], reached by continuation from f_min.
   !> The point's gamma_P, sigma_a, u_E, k are those at f_exc (f_res = f_exc).
@@ -217,9 +373,10 @@ contains
         & .not.(settings%max_angle > 0.0_wp) .or. .not.(settings%gamma_limit > 0.0_wp) .or. &
         & settings%max_iter < 2 .or. settings%max_steps < 1 .or. settings%target_iter < 1 .or. &
         & settings%aft_samples < 0 .or. settings%aft_max_periods < 1 .or. &
+        & settings%warm_start < 0 .or. settings%warm_start > 2 .or. &
         & .not.(settings%aft_loop_rtol > 0.0_wp)) then
       call fatal_error(error, "hbm: invalid numerical settings (tolerances and steps must be "// &
-        & "positive, max_iter >= 2, aft_samples >= 0)", UDMAP_EINPUT)
+        & "positive, max_iter >= 2, aft_samples >= 0, warm_start 0, 1 or 2)", UDMAP_EINPUT)
       return
     end if
     if (settings%aft_samples > 0 .and. settings%aft_samples < 2*settings%harmonics + 1) then
@@ -244,6 +401,7 @@ contains
       if (st%kd >= 0) p%kb = (st%kd + 1)*p%b - 1
       p%banded = st%kd >= 0
     end if
+    if (settings%variant == HBM_FULL) call band_entries(st, p%Kij, p%Mij, p%Cij)
     allocate(p%el, source=element)
     allocate(p%Mh(p%H), p%JM(p%m, p%m), p%rec(p%H))
     call p%el%load(error)
@@ -262,7 +420,7 @@ contains
 
   !> Continues the response from omega_a to omega_b; peaks refined on the way. With
   !> at_end, the result is the response at omega_b instead of the peak.
-  subroutine continuation(p, st, omega_a, omega_b, at_end, point, error, curve)
+  subroutine continuation(p, st, omega_a, omega_b, at_end, point, error, curve, peak_state)
     type(problem_type), intent(inout) :: p
     type(structure_type), intent(in) :: st
     real(wp), intent(in) :: omega_a, omega_b
@@ -270,8 +428,10 @@ contains
     type(hbm_point_type), intent(out) :: point
     type(error_type), allocatable, intent(out) :: error
     type(hbm_curve_type), intent(out), optional :: curve
+    !> The point of the peak (not with at_end), for a warm start of the next force.
+    type(curve_point_type), intent(out), optional :: peak_state
     type(curve_point_type) :: cur, nxt, pk, best_pk
-    real(wp) :: ds, cosang, fac, A_first, A_best, angle, angle_rejected
+    real(wp) :: ds, fac, A_first, A_best, angle_rejected
     integer :: steps, it, npk, k
     logical :: ok, last, have_best
     real(wp) :: pk_A(HBM_MAX_PEAKS), pk_f(HBM_MAX_PEAKS)
@@ -313,24 +473,9 @@ contains
       end if
       call corrector_step(p, st, cur, ds, nxt, ok, it, error)
       if (allocated(error)) return
-      ! jumps to another part of the curve: a corrected point below the start, far from the
-      ! predictor (a corner of angle theta puts it ds tan(theta) away), or an amplitude changed
-      ! threefold in one step
-      if (ok) ok = nxt%omega >= omega_a .and. nxt%A <= 3.0_wp*cur%A .and. 3.0_wp*nxt%A >= cur%A
-      if (ok) ok = sqrt(scaled_dot(p, nxt%x - cur%x - ds*cur%tx, nxt%omega - cur%omega - &
-        & ds*cur%tw, nxt%x - cur%x - ds*cur%tx, nxt%omega - cur%omega - ds*cur%tw, cur%A_s)) &
-        & <= 3.0_wp*ds
-      if (ok) then
-        ! the tangent may turn by at most max_angle per step; a turn that does not shrink with
-        ! a small step is a corner of the curve (stick-slip transition of the damper): accept it
-        cosang = scaled_dot(p, cur%tx, cur%tw, nxt%tx, nxt%tw, cur%A_s)
-        angle = acos(max(-1.0_wp, min(1.0_wp, cosang)))
-        if (angle > p%set%max_angle .and. .not.(angle > 0.7_wp*angle_rejected .and. &
-            & ds <= 0.01_wp .and. angle < 0.5_wp*pi)) then
-          ok = .false.
-          angle_rejected = angle
-        end if
-      end if
+      ! a corrected point below the start has jumped to another part of the curve
+      if (ok) ok = nxt%omega >= omega_a
+      if (ok) call check_step(p, cur, nxt, ds, angle_rejected, ok)
       if (.not.ok) then
         ds = 0.5_wp*ds
         if (ds < p%set%ds_min) then
@@ -373,16 +518,7 @@ contains
       if (.not.at_end .and. .not.p%set%full_band .and. have_best) then
         if (nxt%A < 0.5_wp*A_best .and. nxt%dA < 0.0_wp) last = .true.
       end if
-      ! step control on the Newton iterations of this step
-      if (2*it <= p%set%target_iter) then
-        fac = 2.0_wp
-      else if (it < p%set%target_iter) then
-        fac = 1.5_wp
-      else if (it > p%set%target_iter + 1) then
-        fac = 0.6_wp
-      else
-        fac = 1.0_wp
-      end if
+      fac = step_factor(p, it)
       ds = min(p%set%ds_max, ds*fac)
       call move_alloc(nxt%x, cur%x)
       call move_alloc(nxt%tx, cur%tx)
@@ -403,6 +539,7 @@ contains
         return
       end if
       call fill_point(p, st, best_pk, point, error)
+      if (present(peak_state)) peak_state = best_pk
       ! every local maximum, ascending in amplitude
       point%npeaks = npk
       do k = 1, npk
@@ -414,6 +551,47 @@ contains
     point%iterations = p%iterations
     point%aft_calls = p%ws%calls
   end subroutine continuation
+
+  !> Whether a corrected step from cur to nxt (step ds) is acceptable: no jump to another part
+  !> of the curve (far from the predictor: a corner of angle theta puts it ds tan(theta) away;
+  !> or the amplitude changed threefold) and a turn of the tangent of at most max_angle, unless
+  !> the turn does not shrink with a small step (a corner of the curve: a stick-slip transition
+  !> of the damper). angle_rejected: the turn of the last rejected attempt.
+  subroutine check_step(p, cur, nxt, ds, angle_rejected, ok)
+    type(problem_type), intent(in) :: p
+    type(curve_point_type), intent(in) :: cur, nxt
+    real(wp), intent(in) :: ds
+    real(wp), intent(inout) :: angle_rejected
+    logical, intent(out) :: ok
+    real(wp) :: cosang, angle
+    ok = nxt%A <= 3.0_wp*cur%A .and. 3.0_wp*nxt%A >= cur%A
+    if (ok) ok = sqrt(scaled_dot(p, nxt%x - cur%x - ds*cur%tx, nxt%omega - cur%omega - &
+      & ds*cur%tw, nxt%x - cur%x - ds*cur%tx, nxt%omega - cur%omega - ds*cur%tw, cur%A_s)) &
+      & <= 3.0_wp*ds
+    if (.not.ok) return
+    cosang = scaled_dot(p, cur%tx, cur%tw, nxt%tx, nxt%tw, cur%A_s)
+    angle = acos(max(-1.0_wp, min(1.0_wp, cosang)))
+    if (angle > p%set%max_angle .and. .not.(angle > 0.7_wp*angle_rejected .and. &
+        & ds <= 0.01_wp .and. angle < 0.5_wp*pi)) then
+      ok = .false.
+      angle_rejected = angle
+    end if
+  end subroutine check_step
+
+  !> Step control on the Newton iterations it of the last step: the factor for the next ds.
+  pure real(wp) function step_factor(p, it) result(fac)
+    type(problem_type), intent(in) :: p
+    integer, intent(in) :: it
+    if (2*it <= p%set%target_iter) then
+      fac = 2.0_wp
+    else if (it < p%set%target_iter) then
+      fac = 1.5_wp
+    else if (it > p%set%target_iter + 1) then
+      fac = 0.6_wp
+    else
+      fac = 1.0_wp
+    end if
+  end function step_factor
 
   !> Predictor along the tangent of cur, pseudo-arc-length corrector; nxt gets its tangent.
   subroutine corrector_step(p, st, cur, ds, nxt, ok, it, error)
@@ -856,10 +1034,11 @@ contains
     real(wp), intent(in) :: x(:), omega
     real(wp), intent(out) :: R(:)
     real(wp), intent(out), optional :: Jw(:)
-    integer :: i, j, h, lo, hi, bi, bj, cr
+    integer :: i, j, h, lo, hi, bi, bj, cr, e
     real(wp) :: kij, mij, cij, Om, a, bb, dm
     R = 0.0_wp
     if (present(Jw)) Jw = 0.0_wp
+    e = 0
     do i = 1, p%n
       lo = 1; hi = p%n
       if (st%kd >= 0) then
@@ -867,9 +1046,8 @@ contains
       end if
       bi = (i - 1)*p%b
       do j = lo, hi
-        kij = st%entry('K', i, j)
-        mij = st%entry('M', i, j)
-        cij = st%entry('C', i, j)
+        e = e + 1
+        kij = p%Kij(e); mij = p%Mij(e); cij = p%Cij(e)
         bj = (j - 1)*p%b
         if (p%h0 == 1) R(bi+1) = R(bi+1) + kij*x(bj+1)
         do h = 1, p%H
@@ -899,13 +1077,49 @@ contains
     end do
   end subroutine full_residual
 
+  !> The entries (i, j) of K, M and C that the full variant assembles, in its loop order (rows
+  !> i, then columns j inside the band), so that the Newton loop reads them in sequence.
+  pure subroutine band_entries(st, Kij, Mij, Cij)
+    type(structure_type), intent(in) :: st
+    real(wp), allocatable, intent(out) :: Kij(:), Mij(:), Cij(:)
+    integer :: i, j, lo, hi, r, c, e, n
+    n = st%ndof
+    e = 0
+    do i = 1, n
+      lo = 1; hi = n
+      if (st%kd >= 0) then
+        lo = max(1, i - st%kd); hi = min(n, i + st%kd)
+      end if
+      e = e + hi - lo + 1
+    end do
+    allocate(Kij(e), Mij(e), Cij(e))
+    e = 0
+    do i = 1, n
+      lo = 1; hi = n
+      if (st%kd >= 0) then
+        lo = max(1, i - st%kd); hi = min(n, i + st%kd)
+      end if
+      do j = lo, hi
+        e = e + 1
+        if (st%kd < 0) then
+          Kij(e) = st%K(i, j); Mij(e) = st%M(i, j); Cij(e) = st%C(i, j)
+        else
+          ! symmetric upper band storage: A(r, c) = X(kd + 1 + r - c, c), r <= c
+          r = min(i, j); c = max(i, j)
+          r = st%kd + 1 + r - c
+          Kij(e) = st%K(r, c); Mij(e) = st%M(r, c); Cij(e) = st%C(r, c)
+        end if
+      end do
+    end do
+  end subroutine band_entries
+
   !> Assembles and factorises J_x (dense for condensed, banded or dense LU for full).
   subroutine factor(p, st, omega, error)
     type(problem_type), intent(inout) :: p
     type(structure_type), intent(in) :: st
     real(wp), intent(in) :: omega
     type(error_type), allocatable, intent(out) :: error
-    integer :: i, j, h, c, cc, lo, hi, bi, bj, cr, info, ldab, kb, r0
+    integer :: i, j, h, c, cc, lo, hi, bi, bj, cr, info, ldab, kb, r0, sy, e
     real(wp) :: kij, mij, cij, Om, a, bb, gr, gi
     character(len=12) :: buf
     if (p%set%variant == HBM_CONDENSED) then
@@ -929,13 +1143,17 @@ contains
     if (st%kd >= 0) then
       ldab = 3*kb + 1
       if (.not.allocated(p%LU)) allocate(p%LU(ldab, p%nx), p%ipiv(p%nx))
-      p%LU = 0.0_wp
       r0 = 2*kb + 1
+      sy = 1
     else
       if (.not.allocated(p%LU)) allocate(p%LU(p%nx, p%nx), p%ipiv(p%nx))
-      p%LU = 0.0_wp
       r0 = 0
+      sy = 0
     end if
+    p%LU = 0.0_wp
+    ! entry (row, col) of J_x is stored at LU(r0 + row - col, col) in band storage and at
+    ! LU(row, col) in dense storage: LU(base + row - sy*col, col) with base = r0 or 0
+    e = 0
     do i = 1, p%n
       lo = 1; hi = p%n
       if (st%kd >= 0) then
@@ -943,26 +1161,28 @@ contains
       end if
       bi = (i - 1)*p%b
       do j = lo, hi
-        kij = st%entry('K', i, j)
-        mij = st%entry('M', i, j)
-        cij = st%entry('C', i, j)
+        e = e + 1
+        kij = p%Kij(e); mij = p%Mij(e); cij = p%Cij(e)
         bj = (j - 1)*p%b
-        if (p%h0 == 1) call put(bi+1, bj+1, kij)
+        if (p%h0 == 1) p%LU(r0+bi+1-sy*(bj+1), bj+1) = p%LU(r0+bi+1-sy*(bj+1), bj+1) + kij
         do h = 1, p%H
           cr = p%h0 + 2*h - 1
           Om = h*omega
           a = kij - Om**2*mij
           bb = Om*cij
-          call put(bi+cr, bj+cr, a)
-          call put(bi+cr, bj+cr+1, -bb)
-          call put(bi+cr+1, bj+cr, bb)
-          call put(bi+cr+1, bj+cr+1, a)
+          c = bj + cr
+          p%LU(r0+bi+cr-sy*c, c) = p%LU(r0+bi+cr-sy*c, c) + a
+          p%LU(r0+bi+cr+1-sy*c, c) = p%LU(r0+bi+cr+1-sy*c, c) + bb
+          c = bj + cr + 1
+          p%LU(r0+bi+cr-sy*c, c) = p%LU(r0+bi+cr-sy*c, c) - bb
+          p%LU(r0+bi+cr+1-sy*c, c) = p%LU(r0+bi+cr+1-sy*c, c) + a
         end do
       end do
     end do
-    do c = 1, p%m
-      do cc = 1, p%m
-        call put(p%goff+c, p%goff+cc, p%JM(c, cc))
+    do cc = 1, p%m
+      c = p%goff + cc
+      do i = 1, p%m
+        p%LU(r0+p%goff+i-sy*c, c) = p%LU(r0+p%goff+i-sy*c, c) + p%JM(i, cc)
       end do
     end do
     if (st%kd >= 0) then
@@ -975,16 +1195,6 @@ contains
       call fatal_error(error, "hbm: dgbtrf/dgetrf failed on the full Jacobian (info = "// &
         & trim(buf)//")", UDMAP_ENUMERIC)
     end if
-  contains
-    subroutine put(row, col, val)
-      integer, intent(in) :: row, col
-      real(wp), intent(in) :: val
-      if (r0 > 0) then
-        p%LU(r0+row-col, col) = p%LU(r0+row-col, col) + val
-      else
-        p%LU(row, col) = p%LU(row, col) + val
-      end if
-    end subroutine put
   end subroutine factor
 
   !> Solves [J_x Jw; cx^T cw] [dx; dw] = [rx; rn], cx acting on the gamma unknowns only.
@@ -1082,6 +1292,59 @@ contains
     p%Mh = Msave
     p%M0 = Msave0
   end subroutine stuck_guess
+
+  !> The frequency of the largest linear response |H_gE/(1 + k_stuck H_gg)| with the stuck
+  !> damper on [omega_a, omega_b]: the best of a grid, refined by golden-section search.
+  subroutine stuck_peak(p, st, omega_a, omega_b, omega, error)
+    type(problem_type), intent(in) :: p
+    type(structure_type), intent(in) :: st
+    real(wp), intent(in) :: omega_a, omega_b
+    real(wp), intent(out) :: omega
+    type(error_type), allocatable, intent(out) :: error
+    integer, parameter :: ngrid = 64
+    real(wp), parameter :: golden = 0.6180339887498949_wp
+    real(wp) :: a, b, c, d, fc, fd, v, best
+    integer :: i, ibest
+    best = -1.0_wp
+    ibest = 0
+    do i = 0, ngrid
+      v = response(omega_a + (omega_b - omega_a)*i/ngrid)
+      if (allocated(error)) return
+      if (v > best) then
+        best = v
+        ibest = i
+      end if
+    end do
+    a = omega_a + (omega_b - omega_a)*max(ibest - 1, 0)/ngrid
+    b = omega_a + (omega_b - omega_a)*min(ibest + 1, ngrid)/ngrid
+    c = b - golden*(b - a)
+    d = a + golden*(b - a)
+    fc = response(c)
+    fd = response(d)
+    do i = 1, 40
+      if (allocated(error)) return
+      if (fc >= fd) then
+        b = d; d = c; fd = fc
+        c = b - golden*(b - a)
+        fc = response(c)
+      else
+        a = c; c = d; fc = fd
+        d = a + golden*(b - a)
+        fd = response(d)
+      end if
+      if (b - a <= 1.0e-10_wp*b) exit
+    end do
+    omega = 0.5_wp*(a + b)
+  contains
+    real(wp) function response(w)
+      real(wp), intent(in) :: w
+      type(structure_receptances_type) :: r
+      response = 0.0_wp
+      call structure_receptances(st, w, r, error)
+      if (allocated(error)) return
+      response = abs(r%gE/(1.0_wp + p%k_stuck*r%gg))
+    end function response
+  end subroutine stuck_peak
 
   !> |Gamma_1| of the unknowns.
   pure real(wp) function amplitude(p, x)

@@ -39,7 +39,7 @@ class HbmSettings(ctypes.Structure):
                 ("aft_samples", ctypes.c_int), ("aft_max_periods", ctypes.c_int),
                 ("fd_step", ctypes.c_double), ("gamma_limit", ctypes.c_double),
                 ("full_band", ctypes.c_int), ("jacobian_reuse", ctypes.c_int),
-                ("tol_path", ctypes.c_double)]
+                ("tol_path", ctypes.c_double), ("warm_start", ctypes.c_int)]
 
 
 class HbmPoint(ctypes.Structure):
@@ -254,7 +254,9 @@ def hbm(blade, damper, f_min: float, f_max: float, F_E: Iterable[float], harmoni
 
     blade: a udmap Blade; damper: the case's damper section (dict) or a Contact; band
     [f_min, f_max] in Hz; variant 'condensed' or 'full'; settings: fields of
-    udmap_hbm_settings (tol, tol_path, ds_max, aft_samples, harmonic0, jacobian_reuse, ...).
+    udmap_hbm_settings (tol, tol_path, ds_max, aft_samples, harmonic0, jacobian_reuse,
+    warm_start, ...; with warm_start the forces go to the kernel in one call, in the order
+    given, each started from the previous one's peak).
     Returns per force the backbone fields (F_E, gamma_P, f_res, sigma_a, u_E, k_re, k_im,
     roots: every local maximum of gamma_1, ascending; with classify and a damper dict also
     regime and hcf_ok from F_lim, gamma_s, gamma_b) plus gamma_max, gamma_h (|Gamma_h|),
@@ -266,7 +268,24 @@ def hbm(blade, damper, f_min: float, f_max: float, F_E: Iterable[float], harmoni
     s = hbm_settings(harmonics, variant, **settings)
     arr, _ = _forces(F_E)
     out = []
-    for F in arr:
+    if s.warm_start and len(arr) > 1:
+        # one kernel call: each force starts from the previous one's peak
+        ptr = as_doubles(arr)[1]
+        pts = (HbmPoint * len(arr))()
+        err = ErrorHandle()
+        try:
+            err.check(_hbm_peaks(err.ptr, _blade_ptr(blade), contact.ptr, float(f_min),
+                                 float(f_max), ctypes.byref(s), len(arr), ptr, pts))
+        except PhysicsError as exc:
+            if "unbounded" not in str(exc):
+                raise
+            # an unbounded force stops the chain: the forces one by one, cold
+            s.warm_start = 0
+        else:
+            out = [_hbm_dict(pts[i]) for i in range(len(arr))]
+            if progress is not None:
+                progress(len(arr))
+    for F in (arr if not out else []):
         one, ptr = as_doubles(np.array([F]))
         pts = (HbmPoint * 1)()
         err = ErrorHandle()
@@ -286,55 +305,23 @@ def hbm(blade, damper, f_min: float, f_max: float, F_E: Iterable[float], harmoni
     return out
 
 
-class _DamperInfo(ctypes.Structure):
-    """udmap_damper_info."""
-    _fields_ = [("gamma_b", ctypes.c_double), ("gamma_s", ctypes.c_double),
-                ("M_max", ctypes.c_double), ("M_min", ctypes.c_double),
-                ("k_stuck", ctypes.c_double), ("lift_off", ctypes.c_int)]
-
-
-class _KernelDamper:
-    """A udmap_damper handle of the case's damper section (for F_lim and the regimes only)."""
-
-    def __init__(self, damper: dict):
-        self._err = ErrorHandle()
-        self._handle = _vp()
-        if damper["kind"] == "jenkins":
-            fn = declare("udmap_new_damper_jenkins",
-                         [_vp, ctypes.c_double, ctypes.c_double, ctypes.POINTER(_vp)])
-            self._err.check(fn(self._err.ptr, float(damper["kt"]), float(damper["M_slip"]),
-                               ctypes.byref(self._handle)))
-        else:
-            params = _asymmetric_params(damper)
-            fn = declare("udmap_new_damper_asymmetric",
-                         [_vp, ctypes.POINTER(_AsymmetricParams), ctypes.POINTER(_vp)])
-            self._err.check(fn(self._err.ptr, ctypes.byref(params), ctypes.byref(self._handle)))
-        info = _DamperInfo()
-        fn = declare("udmap_damper_get_info", [_vp, _vp, ctypes.POINTER(_DamperInfo)])
-        self._err.check(fn(self._err.ptr, self._handle, ctypes.byref(info)))
-        self.info = info
-
-    def __del__(self):
-        h = getattr(self, "_handle", None)
-        if h is not None and h.value and lib is not None:
-            declare("udmap_delete_damper", [ctypes.POINTER(_vp)], None)(ctypes.byref(h))
-
-
 def _classify(blade, damper: dict, f_min, f_max, sigma_all, points: list[dict]) -> None:
     """Adds regime (0 stuck, 1 partial slip, 2 full slip, 3 at or above F_lim) and hcf_ok
     (F_E <= 0.5 F_lim and sigma_a <= sigma_all) as the backbone defines them."""
+    from .case import Case, build_damper
     from .model import Model
-    kd = _KernelDamper(damper)
+    kd = build_damper(Case(blade={}, damper=damper, analysis={}))
     F_lim = Model(blade, kd, f_min, f_max, sigma_all=sigma_all).limit_force()
+    gamma_s, gamma_b = kd.gamma_s, kd.gamma_b
     for p in points:
         p["F_lim"] = F_lim
         if p["F_E"] >= F_lim:
             p["regime"] = 3
         elif p.get("unbounded"):
             p["regime"] = 3
-        elif p["gamma_P"] <= kd.info.gamma_s:
+        elif p["gamma_P"] <= gamma_s:
             p["regime"] = 0
-        elif p["gamma_P"] < kd.info.gamma_b:
+        elif p["gamma_P"] < gamma_b:
             p["regime"] = 1
         else:
             p["regime"] = 2
