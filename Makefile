@@ -37,6 +37,8 @@ test: build
 demo: build
 	$(PYTHON) -m udmap demo
 
+# make bench UDMAP_BENCH_DTI=1 also runs the time integration of bench/bench_model_error.py
+# (a few minutes more; its numbers are kept in docs/bench/model_error_dti.json for the README)
 bench: build
 	$(PYTHON) bench/run.py
 

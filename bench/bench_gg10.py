@@ -14,7 +14,8 @@ knobs:
 
 Errors are relative to a tight backbone (rtol 1e-14, 4 times the default amplitude grid): the
 H = 1 harmonic balance and the mapping solve the same equations. Each error is the largest over
-the 10 forces. At equal accuracy: for each method the fastest setting whose three errors are
+the 10 forces. The sweep runs in 5 rounds (the harness 5 times over all settings, the repeats
+of each setting spread over them) and the timing statistics pool the samples of the rounds. At equal accuracy: for each method the fastest setting whose three errors are
 all at or below 1e-4, and the ratios of their median times to the backbone's.
 
 Records (INTERFACES.md "Benchmark output"):
@@ -48,40 +49,40 @@ THRESHOLD = 1e-4
 OUT = ROOT / "out" / "bench"
 
 # (knobs, repeats); labels are built from the knobs
-BACKBONE = [({"rtol": 1e-4, "grid_per_decade": 4}, 51),
-            ({"rtol": 1e-6, "grid_per_decade": 8}, 51),
-            ({"rtol": 1e-8, "grid_per_decade": 12}, 51),
-            ({"rtol": 1e-10, "grid_per_decade": 16}, 51),
-            ({"rtol": 1e-12, "grid_per_decade": 24}, 51),
-            ({"rtol": 1e-14, "grid_per_decade": 48}, 51)]
+BACKBONE = [({"rtol": 1e-4, "grid_per_decade": 4}, 201),
+            ({"rtol": 1e-6, "grid_per_decade": 8}, 201),
+            ({"rtol": 1e-8, "grid_per_decade": 12}, 201),
+            ({"rtol": 1e-10, "grid_per_decade": 16}, 201),
+            ({"rtol": 1e-12, "grid_per_decade": 24}, 201),
+            ({"rtol": 1e-14, "grid_per_decade": 48}, 201)]
 MAPPING = [({"layers": 25, "sweep_points": 400}, 9),
            ({"layers": 100, "sweep_points": 400}, 7),
            ({"layers": 400, "sweep_points": 400}, 5),
            ({"layers": 1600, "sweep_points": 400}, 3),
            ({"layers": 1600, "sweep_points": 100}, 3),
            ({"layers": 1600, "sweep_points": 1600}, 3),
-           ({"layers": 6400, "sweep_points": 400}, 1)]
+           ({"layers": 6400, "sweep_points": 400}, 2)]
 STANDARD = [
     # the band swept for every force (the kernel default: finds every peak in the band)
-    ({"warm_start": 0}, 5),
-    ({"warm_start": 0, "tol": 1e-6, "tol_path": 1e-4, "peak_tol": 1e-6}, 5),
+    ({"warm_start": 0}, 6),
+    ({"warm_start": 0, "tol": 1e-6, "tol_path": 1e-4, "peak_tol": 1e-6}, 6),
     ({"warm_start": 0, "tol": 1e-6, "tol_path": 1e-4, "peak_tol": 1e-6, "ds_max": 1.0,
-      "max_angle": 1.0}, 5),
+      "max_angle": 1.0}, 6),
     ({"warm_start": 0, "tol": 1e-4, "tol_path": 1e-3, "peak_tol": 1e-4, "ds_max": 1.0,
-      "max_angle": 1.0, "full_band": 0}, 5),
+      "max_angle": 1.0, "full_band": 0}, 6),
     # warm starts from the previous force's peak
-    ({"warm_start": 1}, 9),
-    ({"warm_start": 1, "tol": 1e-4, "tol_path": 1e-3, "peak_tol": 1e-4}, 9),
+    ({"warm_start": 1}, 12),
+    ({"warm_start": 1, "tol": 1e-4, "tol_path": 1e-3, "peak_tol": 1e-4}, 12),
     # and the first force from the stuck linear peak
-    ({"warm_start": 2}, 11),
-    ({"warm_start": 2, "tol": 1e-8, "tol_path": 1e-6, "peak_tol": 1e-8}, 11),
-    ({"warm_start": 2, "tol": 1e-6, "tol_path": 1e-4, "peak_tol": 1e-6}, 11),
-    ({"warm_start": 2, "tol": 1e-4, "tol_path": 1e-3, "peak_tol": 1e-4}, 11),
-    ({"warm_start": 2, "tol": 1e-3, "tol_path": 1e-3, "peak_tol": 1e-3}, 11),
-    ({"warm_start": 2, "tol": 1e-2, "tol_path": 1e-2, "peak_tol": 1e-2}, 11),
+    ({"warm_start": 2}, 21),
+    ({"warm_start": 2, "tol": 1e-8, "tol_path": 1e-6, "peak_tol": 1e-8}, 21),
+    ({"warm_start": 2, "tol": 1e-6, "tol_path": 1e-4, "peak_tol": 1e-6}, 21),
+    ({"warm_start": 2, "tol": 1e-4, "tol_path": 1e-3, "peak_tol": 1e-4}, 21),
+    ({"warm_start": 2, "tol": 1e-3, "tol_path": 1e-3, "peak_tol": 1e-3}, 21),
+    ({"warm_start": 2, "tol": 1e-2, "tol_path": 1e-2, "peak_tol": 1e-2}, 21),
     # classical sampled AFT instead of the event-driven one
     ({"warm_start": 2, "tol": 1e-6, "tol_path": 1e-4, "peak_tol": 1e-6, "aft_samples": 32}, 5),
-    ({"warm_start": 2, "tol": 1e-6, "tol_path": 1e-4, "peak_tol": 1e-6, "aft_samples": 128}, 3),
+    ({"warm_start": 2, "tol": 1e-6, "tol_path": 1e-4, "peak_tol": 1e-6, "aft_samples": 128}, 5),
     ({"warm_start": 2, "tol": 1e-6, "tol_path": 1e-4, "peak_tol": 1e-6, "aft_samples": 512}, 3),
 ]
 VARIANTS = {"standard_condensed": 0, "standard_full": 1}
@@ -98,8 +99,12 @@ def label(knobs: dict) -> str:
     return ",".join(parts) or "defaults"
 
 
+ROUNDS = 5
+
+
 def jobs_for(quick: bool) -> list[tuple[str, str, dict, str]]:
-    """(job id, method, knobs, harness line) for every configuration of the sweep."""
+    """(job id, method, knobs, harness line) for every configuration of the sweep (with the
+    total repeats, spread over the rounds)."""
     out = []
     scale = (lambda r: max(1, r // 4)) if quick else (lambda r: r)
     for i, (k, rep) in enumerate(BACKBONE):
@@ -143,10 +148,12 @@ def main() -> int:
     head = "\n".join([harness.beam_line(beam_params(case.blade)),
                       harness.damper_line(case.damper), harness.band_line(case.analysis)])
     jobs = jobs_for(args.quick)
-    lines = ["backbone reference 0 1e-14 96"] + [j[3] for j in jobs]
+    rounds = [[line for line in split if line is not None] for split in zip(
+        *(harness.split_repeats(j[3], ROUNDS) for j in jobs))]
+    rounds[0].insert(0, "backbone reference 0 1e-14 96")
     with tempfile.TemporaryDirectory() as tmp:
         exe = harness.compile_harness(Path(tmp))
-        runs = harness.run_jobs(exe, head, lines)
+        runs = harness.run_jobs(exe, head, rounds)
     ref = runs["reference"]
 
     sweep, failed = [], []

@@ -17,8 +17,9 @@
  *   mapping  LABEL repeats layers sweep_points
  *   standard LABEL repeats variant tol tol_path peak_tol ds_max max_angle aft_samples
  *            warm_start full_band
- * and prints one JSON object per job: {"name", "kind", "seconds_median", "seconds_min",
- * "seconds_max", "repeats", "gamma_P": [...], "f_res": [...], "sigma_a": [...]} (standard:
+ * and prints one JSON object per job: {"name", "kind", "samples": [...], "seconds_median",
+ * "seconds_min", "seconds_max", "repeats", "gamma_P": [...], "f_res": [...], "sigma_a": [...]}
+ * (standard:
  * also "iterations", "aft_calls", "steps", summed over the forces).
  *
  * What is timed, for the 10 forces, from the damper parameters on (the blade and its
@@ -66,12 +67,20 @@ static void print_array(const char *name, const double *v) {
 }
 
 /* timing statistics and results of one job */
+/* the samples (in the order taken) and their statistics */
+static void print_times(const char *kind, const char *name, double *t, int n) {
+  int i;
+  printf("{\"name\": \"%s\", \"kind\": \"%s\", \"samples\": [", name, kind);
+  for (i = 0; i < n; i++) printf("%s%.6e", i ? ", " : "", t[i]);
+  printf("]");
+  qsort(t, n, sizeof *t, cmp);
+  printf(", \"seconds_median\": %.6e, \"seconds_min\": %.6e, \"seconds_max\": %.6e, "
+         "\"repeats\": %d", n ? t[n / 2] : 0.0, n ? t[0] : 0.0, n ? t[n - 1] : 0.0, n);
+}
+
 static void report(const char *kind, const char *name, double *t, int n, const double *g,
                    const double *f, const double *s) {
-  qsort(t, n, sizeof *t, cmp);
-  printf("{\"name\": \"%s\", \"kind\": \"%s\", \"seconds_median\": %.6e, \"seconds_min\": %.6e, "
-         "\"seconds_max\": %.6e, \"repeats\": %d", name, kind, n ? t[n / 2] : 0.0,
-         n ? t[0] : 0.0, n ? t[n - 1] : 0.0, n);
+  print_times(kind, name, t, n);
   print_array("gamma_P", g);
   print_array("f_res", f);
   print_array("sigma_a", s);
@@ -169,10 +178,8 @@ int main(void) {
         udmap_delete_blade(&fresh);
         t[r] = now() - t0;
       }
-      qsort(t, n, sizeof *t, cmp);
-      printf("{\"name\": \"%s\", \"kind\": \"build\", \"seconds_median\": %.6e, "
-             "\"seconds_min\": %.6e, \"seconds_max\": %.6e, \"repeats\": %d}\n", label,
-             t[n / 2], t[0], t[n - 1], n);
+      print_times(tag, label, t, n);
+      printf("}\n");
     } else if (!strcmp(tag, "setup")) {
       udmap_point pts[NF];
       for (r = 0; r < n; r++) {
@@ -202,7 +209,9 @@ int main(void) {
         if (scanf("%lf %d", &an.rtol, &an.grid_per_decade) != 2) return 2;
       }
       if (udmap_new_model(err, blade, damper, &an, &model)) fail(err, "model");
-      /* the bare-blade data (band sweep, eigen start) exist before the clock starts */
+      /* the bare-blade data (band sweep, eigen start) exist before the clock starts (a first
+       * call with the same arguments, as bench_mapping.py does: the first call of the mapping
+       * with many layers also pays for growing its storage) */
       if (mapping) {
         if (udmap_model_curves(err, model, NF, F, layers)) fail(err, "curves");
       } else if (udmap_model_backbone(err, model, NF, F, pts)) {

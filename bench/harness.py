@@ -68,6 +68,18 @@ def band_line(analysis: dict) -> str:
     return f"band {analysis['f_min']!r} {analysis['f_max']!r} {analysis['sigma_all']!r}"
 
 
+def split_repeats(line: str, rounds: int) -> list[str | None]:
+    """A job line with its repeats (third word) spread over `rounds` rounds: per round the
+    job line with that round's share, or None where the share is 0."""
+    words = line.split()
+    total = int(words[2])
+    out = []
+    for k in range(rounds):
+        n = total // rounds + (1 if k < total % rounds else 0)
+        out.append(" ".join(words[:2] + [str(n)] + words[3:]) if n > 0 else None)
+    return out
+
+
 def standard_job(label: str, repeats: int, variant: int, knobs: dict) -> str:
     k = dict(STANDARD_DEFAULTS, **knobs)
     return (f"standard {label} {repeats} {variant} {k['tol']!r} {k['tol_path']!r} "
@@ -75,19 +87,36 @@ def standard_job(label: str, repeats: int, variant: int, knobs: dict) -> str:
             f"{k['warm_start']} {k['full_band']}")
 
 
-def run_jobs(exe: Path, head: str, jobs: list[str], progress: bool = True) -> dict[str, dict]:
-    """Runs the jobs (one harness process, in order) and returns their results by label."""
-    proc = subprocess.Popen([str(exe)], stdin=subprocess.PIPE, stdout=subprocess.PIPE,
-                            stderr=subprocess.PIPE, text=True)
-    out, err = proc.communicate(head + "\n" + "\n".join(jobs) + "\n")
-    if proc.returncode != 0:
-        raise SystemExit(f"gg10_timing failed (status {proc.returncode}):\n{err}")
-    runs = {}
-    for line in out.splitlines():
-        r = json.loads(line)
-        runs[r["name"]] = r
-    if len(runs) != len(jobs):
-        raise SystemExit(f"gg10_timing: {len(jobs)} jobs but {len(runs)} results:\n{err}")
+def run_jobs(exe: Path, head: str, jobs: list[str] | list[list[str]]) -> dict[str, dict]:
+    """Runs the jobs (one harness process, in order) and returns their results by label. Given
+    a list of job lists (rounds), runs the harness once per round and pools the timing samples
+    of each label over the rounds, so that a burst of load from other processes spreads over
+    the settings instead of hitting one."""
+    rounds = jobs if jobs and isinstance(jobs[0], list) else [jobs]
+    runs: dict[str, dict] = {}
+    for lines_in in rounds:
+        proc = subprocess.Popen([str(exe)], stdin=subprocess.PIPE, stdout=subprocess.PIPE,
+                                stderr=subprocess.PIPE, text=True)
+        out, err = proc.communicate(head + "\n" + "\n".join(lines_in) + "\n")
+        if proc.returncode != 0:
+            raise SystemExit(f"gg10_timing failed (status {proc.returncode}):\n{err}")
+        lines = out.splitlines()
+        if len(lines) != len(lines_in):
+            raise SystemExit(f"gg10_timing: {len(lines_in)} jobs but {len(lines)} results:\n"
+                             f"{err}")
+        for line in lines:
+            r = json.loads(line)
+            old = runs.get(r["name"])
+            if old is not None and "failed" in old:
+                continue
+            if old is not None and "samples" in old and "samples" in r:
+                r["samples"] = old["samples"] + r["samples"]
+            runs[r["name"]] = r
+    for r in runs.values():
+        t = sorted(r.get("samples", []))
+        if t:
+            r.update(seconds_median=t[len(t) // 2], seconds_min=t[0], seconds_max=t[-1],
+                     repeats=len(t))
     return runs
 
 
