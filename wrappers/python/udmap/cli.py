@@ -264,6 +264,8 @@ def build_parser() -> argparse.ArgumentParser:
                    help="case file (default: the embedded blade A)")
     p.add_argument("--out", default="out/demo", help="output directory (default out/demo)")
     p.set_defaults(func=cmd_demo)
+    from .doe import add_doe_parser
+    add_doe_parser(sub)
     return parser
 
 

@@ -1,0 +1,260 @@
+"""Design-of-experiments output: columns, row text, ordered chunked streaming, resume, Parquet.
+
+The CSV has one line per design in design order (a leading ``design`` index, then the columns of
+INTERFACES.md "Design of experiments output"). Floats are written with ``repr`` (shortest text that
+reads back to the same double), booleans as ``true``/``false``, missing values (a failed design,
+an unbounded response) as empty cells; a message never contains a line break, so one line is one
+design. Chunks are appended in order, each with a flush and fsync, so an interrupted run loses
+only the chunks in flight; ``FILE.meta.json`` records the run, and a resumed run checks it and
+every complete line before continuing after the last one.
+"""
+from __future__ import annotations
+
+import csv
+import io
+import json
+import math
+import os
+from pathlib import Path
+
+from ._lib import InputError
+
+SUMMARY_COLUMNS = ("F_lim", "gamma_b", "M_max", "M_min", "lift_off")
+FORCE_FIELDS = ("gamma_P", "f_res", "sigma_a", "hcf_ok")
+META_FORMAT = "udmap-doe-1"
+# What a resumed run must share with the one that wrote the file.
+_RUN_KEYS = ("name", "blade", "damper", "analysis", "params", "forces", "labels", "samples",
+             "method", "seed")
+
+
+def columns(spec: dict) -> list[str]:
+    """The header: design, the varied parameters by name, F_lim, gamma_b, M_max, M_min,
+    lift_off, per force F gamma_P@F, f_res@F, sigma_a@F, hcf_ok@F, then F_adm, status, message."""
+    cols = ["design"] + [p["name"] for p in spec["params"]] + list(SUMMARY_COLUMNS)
+    for label in spec["labels"]:
+        cols += [f"{field}@{label}" for field in FORCE_FIELDS]
+    return cols + ["F_adm", "status", "message"]
+
+
+def cell(value) -> str:
+    """One CSV cell: repr for floats (exact round trip), true/false, '' for missing/non-finite."""
+    if value is None:
+        return ""
+    if isinstance(value, bool):
+        return "true" if value else "false"
+    if isinstance(value, int):
+        return str(value)
+    if isinstance(value, float):
+        return repr(value) if math.isfinite(value) else ""
+    if isinstance(value, str):
+        return " ".join(value.splitlines())
+    try:  # numpy scalars
+        return cell(value.item())
+    except AttributeError:
+        return cell(str(value))
+
+
+def _csv_line(cells: list[str]) -> str:
+    buf = io.StringIO()
+    csv.writer(buf, lineterminator="\n").writerow(cells)
+    return buf.getvalue()
+
+
+def row_cells(spec: dict, design: int, values, row: dict) -> list[str]:
+    """The cells of one design's line."""
+    cells = [str(design)] + [cell(v) for v in values]
+    cells += [cell(row.get(k)) for k in SUMMARY_COLUMNS]
+    points = row.get("points") or []
+    for i in range(len(spec["labels"])):
+        p = points[i] if i < len(points) else None
+        if p is None:
+            cells += ["", "", "", ""]
+        elif p.get("unbounded"):
+            cells += ["", "", "", cell(False)]
+        else:
+            cells += [cell(p["gamma_P"]), cell(p["f_res"]), cell(p["sigma_a"]),
+                      cell(bool(p["hcf_ok"]))]
+    cells += [cell(row.get("F_adm")), row["status"], cell(row.get("message", ""))]
+    return cells
+
+
+def tally(spec: dict, cells: list[str], counts: dict) -> None:
+    """Adds one line to the counts: designs per status and passing designs per force
+    (keys ``hcf_ok@F``)."""
+    status = cells[-2]
+    counts[status] = counts.get(status, 0) + 1
+    base = 1 + len(spec["params"]) + len(SUMMARY_COLUMNS)
+    for i, label in enumerate(spec["labels"]):
+        if cells[base + 4 * i + 3] == "true":
+            key = f"hcf_ok@{label}"
+            counts[key] = counts.get(key, 0) + 1
+
+
+def format_rows(spec: dict, start: int, values, rows) -> tuple[str, dict]:
+    """The text of a chunk of designs ``start, start + 1, ...`` and its counts."""
+    buf = io.StringIO()
+    writer = csv.writer(buf, lineterminator="\n")
+    counts: dict = {}
+    for i, (v, row) in enumerate(zip(values, rows)):
+        cells = row_cells(spec, start + i, v, row)
+        tally(spec, cells, counts)
+        writer.writerow(cells)
+    return buf.getvalue(), counts
+
+
+def split_counts(counts: dict) -> tuple[dict, dict]:
+    """(designs per status, passing designs per force label) from a tally."""
+    status = {k: v for k, v in counts.items() if not k.startswith("hcf_ok@")}
+    passing = {k[len("hcf_ok@"):]: v for k, v in counts.items() if k.startswith("hcf_ok@")}
+    return status, passing
+
+
+def _jsonable(spec: dict) -> dict:
+    return json.loads(json.dumps({k: spec[k] for k in _RUN_KEYS}, default=str))
+
+
+class Output:
+    """The CSV file of a run (and its meta file and Parquet copy), written in design order."""
+
+    def __init__(self, out, spec: dict, values):
+        out = Path(out)
+        if out.suffix == ".parquet":
+            self.path, self.parquet_path = out.with_suffix(".csv"), out
+        else:
+            self.path = out
+            self.parquet_path = out.with_suffix(".parquet") if out.suffix else \
+                out.with_name(out.name + ".parquet")
+        if self.path == self.parquet_path:
+            raise InputError(f"--out {out}: choose a name ending in .csv")
+        self.meta_path = self.path.with_name(self.path.name + ".meta.json")
+        self.spec = spec
+        self.values = values
+        self.header = columns(spec)
+        self.counts: dict = {}
+        self.written = 0
+        self._file = None
+        self._pending: dict = {}
+
+    # -- opening
+    def open(self, resume: bool = False, overwrite: bool = False) -> int:
+        """Creates the file, or on ``resume`` checks it against this run and truncates it after
+        its last complete line. Returns the first design still to compute. Raises InputError
+        (before writing anything) when the file exists without ``resume``/``overwrite`` or
+        belongs to another run."""
+        if self.path.exists() and resume:
+            first = self._scan()
+        else:
+            if self.path.exists() and not overwrite:
+                raise InputError(f"--out {self.path} exists: pass --resume to continue that run "
+                                 "or --force to overwrite it")
+            if self.path.is_dir():
+                raise InputError(f"--out {self.path} is a directory")
+            try:
+                self.path.parent.mkdir(parents=True, exist_ok=True)
+                meta = {"format": META_FORMAT, "columns": self.header, **_jsonable(self.spec)}
+                tmp = self.meta_path.with_name(self.meta_path.name + ".tmp")
+                tmp.write_text(json.dumps(meta, indent=1))
+                os.replace(tmp, self.meta_path)
+                with open(self.path, "w", newline="") as f:
+                    f.write(_csv_line(self.header))
+            except OSError as exc:
+                raise InputError(f"--out {self.path}: {exc.strerror}") from None
+            first = 0
+        self.written = first
+        self._file = open(self.path, "a", newline="")
+        return first
+
+    def _scan(self) -> int:
+        """Checks an existing file against this run; truncates a partial last line."""
+        try:
+            meta = json.loads(self.meta_path.read_text())
+        except (OSError, ValueError):
+            raise InputError(f"--resume: {self.meta_path} is missing or unreadable, so "
+                             f"{self.path} cannot be continued safely (use --force)") from None
+        mine = _jsonable(self.spec)
+        diff = [k for k in _RUN_KEYS if meta.get(k) != mine[k]]
+        if meta.get("format") != META_FORMAT or diff:
+            raise InputError(f"--resume: {self.path} was written by a different run (differs in: "
+                             f"{', '.join(diff) or 'format'}); use --force to start again")
+        data = self.path.read_bytes()
+        lines = data.split(b"\n")
+        header = _csv_line(self.header).encode()
+        if not data.startswith(header):
+            raise InputError(f"--resume: {self.path} does not start with the expected header")
+        offset = len(header)
+        design = 0
+        nparam = len(self.spec["params"])
+        # Every line but the last ends with '\n' and is complete; the last one may be cut.
+        for raw in lines[1:-1]:
+            cells = next(csv.reader([raw.decode("utf-8", "replace")]))
+            expect = [str(design)] + [cell(v) for v in self.values[design]] \
+                if design < len(self.values) else None
+            if expect is None or len(cells) != len(self.header) or \
+                    cells[:1 + nparam] != expect:
+                raise InputError(f"--resume: line {design + 2} of {self.path} does not belong "
+                                 "to this run; use --force to start again")
+            tally(self.spec, cells, self.counts)
+            offset += len(raw) + 1
+            design += 1
+        if offset != len(data):
+            with open(self.path, "r+b") as f:
+                f.truncate(offset)
+        return design
+
+    # -- writing
+    def put(self, start: int, count: int, text: str) -> None:
+        """Accepts a finished chunk; appends every chunk that is next in design order."""
+        self._pending[start] = (count, text)
+        while self.written in self._pending:
+            count, text = self._pending.pop(self.written)
+            self._file.write(text)
+            self._file.flush()
+            os.fsync(self._file.fileno())
+            self.written += count
+
+    def close(self) -> None:
+        if self._file is not None:
+            self._file.close()
+            self._file = None
+
+    def finish(self) -> str | None:
+        """After a complete run: the Parquet copy when pyarrow is installed (its path)."""
+        try:
+            import pyarrow.csv as pacsv
+            import pyarrow.parquet as pq
+            import pyarrow as pa
+        except ImportError:
+            return None
+        cols = self.header
+        types = {c: pa.float64() for c in cols}
+        types.update({"design": pa.int64(), "lift_off": pa.bool_(), "status": pa.string(),
+                      "message": pa.string()})
+        for p, path in zip(self.spec["params"], self.spec["paths"]):
+            if p["integer"]:
+                types[p["name"]] = pa.int64()
+        for label in self.spec["labels"]:
+            types[f"hcf_ok@{label}"] = pa.bool_()
+        table = pacsv.read_csv(
+            self.path, convert_options=pacsv.ConvertOptions(
+                column_types=types, strings_can_be_null=False,
+                true_values=["true"], false_values=["false"]))
+        tmp = self.parquet_path.with_name(self.parquet_path.name + ".tmp")
+        pq.write_table(table, tmp)
+        os.replace(tmp, self.parquet_path)
+        return str(self.parquet_path)
+
+
+def read_csv(path) -> tuple[list[str], list[list[str]]]:
+    """The header and the rows (as strings) of a doe CSV."""
+    with open(path, newline="") as f:
+        reader = csv.reader(f)
+        header = next(reader)
+        return header, list(reader)
+
+
+def pass_shares(counts: dict, designs: int, labels) -> dict:
+    """Designs per status, and the shares of all designs that are computed without error and
+    that pass the HCF criterion at each force."""
+    status, passing = split_counts(counts)
+    return {"status": status, "ok_share": status.get("ok", 0) / designs,
+            "hcf_share": {label: passing.get(label, 0) / designs for label in labels}}
