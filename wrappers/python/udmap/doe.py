@@ -67,9 +67,9 @@ class Parameter:
     def cast(self, x: float):
         """The value a design uses for the sample ``x`` (rounded for integer parameters)."""
         if self.integer == 2:
-            return max(2, 2 * int(round(x / 2.0)))
+            return 2 * int(round(x / 2.0))
         if self.integer == 1:
-            return max(1, int(round(x)))
+            return int(round(x))
         return float(x)
 
 

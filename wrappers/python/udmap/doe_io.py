@@ -45,7 +45,7 @@ def cell(value) -> str:
     if isinstance(value, int):
         return str(value)
     if isinstance(value, float):
-        return repr(value) if math.isfinite(value) else ""
+        return repr(float(value)) if math.isfinite(value) else ""
     if isinstance(value, str):
         return " ".join(value.splitlines())
     try:  # numpy scalars
