@@ -43,9 +43,8 @@ class SerialExecutor:
 
 
 class PoolExecutor:
-    """A pool of ``workers`` processes (spawned, so nothing inherited from the parent's state
-    matters) or threads (the kernel releases the GIL in every call; each thread has its own
-    objects)."""
+    """A pool of ``workers`` processes or threads (the kernel releases the GIL in every call;
+    each thread has its own objects)."""
 
     def __init__(self, workers: int, threads: bool = False):
         self.workers = workers
@@ -59,8 +58,11 @@ class PoolExecutor:
         if self.threads:
             self.pool = ThreadPoolExecutor(max_workers=self.workers)
         else:
+            # fork where there is one: fast start, and a user's script is not run again in
+            # every worker (spawn imports __main__); the kernel starts no threads of its own.
+            method = "fork" if "fork" in multiprocessing.get_all_start_methods() else "spawn"
             self.pool = ProcessPoolExecutor(max_workers=self.workers,
-                                            mp_context=multiprocessing.get_context("spawn"),
+                                            mp_context=multiprocessing.get_context(method),
                                             initializer=_ignore_sigint)
         return self
 
