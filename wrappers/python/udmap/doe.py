@@ -529,7 +529,7 @@ def run_doe(case, vary, samples: int, out, *, method: str = "sobol", forces=None
     seconds = time.perf_counter() - t0
     summary = {"out": str(output.path), "designs": samples, "written": output.written,
                "computed": output.written - first, "resumed_at": first,
-               "status": counts, "seconds": seconds,
+               "status": doe_io.split_counts(counts)[0], "seconds": seconds,
                "designs_per_second": (output.written - first) / seconds if seconds > 0 else None,
                "workers": executor.workers, "executor": executor.kind,
                "interrupted": interrupted}
@@ -612,8 +612,8 @@ def cmd_doe(args) -> None:
     rate = summary["designs_per_second"]
     print(f"{summary['designs']} designs in {summary['out']} "
           f"({summary['computed']} computed in {summary['seconds']:.2f} s"
-          + (f", {rate:.0f} designs/s on {summary['workers']} {summary['executor']} workers"
-             if rate else "") + ")")
+          + (f", {rate:.0f} designs/s, {summary['workers']} {summary['executor']} worker"
+             + ("s" if summary["workers"] > 1 else "") if rate else "") + ")")
     print("status: " + ", ".join(f"{k} {v}" for k, v in sorted(summary["status"].items())))
     for label, share in summary.get("hcf_share", {}).items():
         print(f"hcf_ok at F_E = {label} N: {100 * share:.1f} % of the designs")

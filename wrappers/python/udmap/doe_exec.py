@@ -8,7 +8,9 @@ context (the nominal case, the shared blade) for the whole run: the pool stays w
 from __future__ import annotations
 
 import math
+import os
 import signal
+import time
 from concurrent.futures import FIRST_COMPLETED, wait
 
 from ._lib import InputError
@@ -20,9 +22,19 @@ def default_chunk(samples: int, workers: int) -> int:
     return max(1, min(256, math.ceil(samples / (8 * max(workers, 1)))))
 
 
-def _ignore_sigint() -> None:
-    # Ctrl-C is handled by the parent, which stops the pool; workers must not die noisily.
+def _init_worker(parent: int) -> None:
+    """Worker process set-up: Ctrl-C is handled by the parent, which stops the pool (workers
+    must not die noisily), and a worker whose parent was killed exits instead of lingering."""
+    import os
+    import threading
     signal.signal(signal.SIGINT, signal.SIG_IGN)
+
+    def watch():
+        while os.getppid() == parent:
+            time.sleep(0.5)
+        os._exit(1)
+
+    threading.Thread(target=watch, name="udmap-doe-parent-watch", daemon=True).start()
 
 
 class SerialExecutor:
@@ -63,7 +75,8 @@ class PoolExecutor:
             method = "fork" if "fork" in multiprocessing.get_all_start_methods() else "spawn"
             self.pool = ProcessPoolExecutor(max_workers=self.workers,
                                             mp_context=multiprocessing.get_context(method),
-                                            initializer=_ignore_sigint)
+                                            initializer=_init_worker,
+                                            initargs=(os.getpid(),))
         return self
 
     def __exit__(self, *exc):

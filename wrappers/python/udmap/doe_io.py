@@ -38,6 +38,9 @@ def columns(spec: dict) -> list[str]:
 
 def cell(value) -> str:
     """One CSV cell: repr for floats (exact round trip), true/false, '' for missing/non-finite."""
+    t = type(value)
+    if t is float:  # the common case first
+        return repr(value) if value - value == 0.0 else ""
     if value is None:
         return ""
     if isinstance(value, bool):
