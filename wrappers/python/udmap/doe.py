@@ -363,6 +363,7 @@ class DesignContext:
         """One design: a dict with the output fields (see :func:`udmap.doe_io.columns`)."""
         from .case import build_damper, build_model
         row: dict = {"status": STATUS_OK, "message": ""}
+        stage = ""
         try:
             case = with_values(self.case, self.paths, values)
             a = case.analysis
@@ -383,6 +384,7 @@ class DesignContext:
                 for p in points:
                     if p.get("unbounded"):
                         notes.append(f"F_E = {p['F_E']:g} N >= F_lim: unbounded")
+            stage = "F_adm: "
             row["F_adm"] = admissible_force(
                 lambda F: [p["sigma_a"] for p in model.backbone(F)], F_lim, a["sigma_all"],
                 rtol=a["rtol"])
@@ -390,8 +392,8 @@ class DesignContext:
         except Exception as exc:  # recorded per design; the run goes on
             row["status"] = _status_of(exc)
             text = str(exc) or type(exc).__name__
-            row["message"] = text if isinstance(exc, UdmapError) else \
-                f"{type(exc).__name__}: {text}"
+            row["message"] = stage + (text if isinstance(exc, UdmapError) else
+                                      f"{type(exc).__name__}: {text}")
         return row
 
 
@@ -412,8 +414,9 @@ def context_for(spec: dict) -> DesignContext:
 
 def run_chunk(spec: dict, start: int, values: Sequence[tuple]) -> tuple:
     """Evaluates designs ``start, start + 1, ...`` with the given parameter values and returns
-    ``(start, count, csv_text, counts)`` (counts: see :func:`udmap.doe_io.tally`): the chunk's rows already formatted, so that the
-    writer only appends text and the result is independent of where it was computed."""
+    ``(start, count, csv_text, counts)`` (counts: see :func:`udmap.doe_io.tally`): the chunk's
+    rows already formatted, so that the writer only appends text and the result is independent
+    of where it was computed."""
     from .doe_io import format_rows
     ctx = context_for(spec)
     rows = [ctx.evaluate(v) for v in values]
