@@ -39,6 +39,7 @@ typedef enum {
 #define NOLIMIT 1e300 /* bound marker: no min / max */
 #define POSITIVE 1    /* flag: the value must be > 0 */
 #define EVEN 2        /* flag: the integer must be even */
+#define OPEN 4        /* flag: min and max are excluded */
 
 typedef enum {
 #define UDMAP_X_ENUM(name, type, caus, group, unit, start, min, max, flags, desc) vr_##name,

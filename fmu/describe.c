@@ -254,8 +254,9 @@ static void html_table(FILE *f, Causality causality, const char *title) {
     fputs("</td><td>", f);
     if (v->type != BOOLEAN && (v->min > -NOLIMIT || v->max < NOLIMIT)) {
       fputs(v->min > -NOLIMIT ? value_text(v, v->min, b) : "-inf", f);
-      fputs(v->flags & POSITIVE ? " &lt; x" : " &le; x", f);
-      if (v->max < NOLIMIT) fprintf(f, " &le; %s", value_text(v, v->max, b));
+      fputs(v->flags & (POSITIVE | OPEN) ? " &lt; x" : " &le; x", f);
+      if (v->max < NOLIMIT)
+        fprintf(f, " %s %s", v->flags & OPEN ? "&lt;" : "&le;", value_text(v, v->max, b));
       if (v->flags & EVEN) fputs(", even", f);
     }
     fputs("</td><td>", f);

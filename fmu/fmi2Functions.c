@@ -14,17 +14,21 @@
 #define MASK_SET (Instantiated | InitializationMode | StepMode)
 #define MASK_GET (Instantiated | InitializationMode | StepMode | Terminated)
 
-/* The FMI 2 logger takes a printf format: pass the message with '%' doubled. */
-static void emit2(ModelInstance *m, Status status, const char *category, const char *message) {
-  fmi2CallbackLogger logger = (fmi2CallbackLogger)m->logger;
-  if (!logger) return;
-  char buf[2048];
+/* The FMI 2 logger takes a printf format: pass messages with '%' doubled. */
+static void escape_percent(const char *message, char *buf, size_t n) {
   size_t j = 0;
-  for (size_t i = 0; message[i] && j + 2 < sizeof buf; i++) {
+  for (size_t i = 0; message[i] && j + 2 < n; i++) {
     if (message[i] == '%') buf[j++] = '%';
     buf[j++] = message[i];
   }
   buf[j] = '\0';
+}
+
+static void emit2(ModelInstance *m, Status status, const char *category, const char *message) {
+  fmi2CallbackLogger logger = (fmi2CallbackLogger)m->logger;
+  if (!logger) return;
+  char buf[2048];
+  escape_percent(message, buf, sizeof buf);
   logger(m->environment, m->instanceName, (fmi2Status)status, category, buf);
 }
 
@@ -56,20 +60,19 @@ UDMAP_FMI_EXPORT fmi2Component fmi2Instantiate(fmi2String instanceName, fmi2Type
   fmi2CallbackLogger logger = functions ? functions->logger : NULL;
   void *env = functions ? functions->componentEnvironment : NULL;
   const char *name = instanceName ? instanceName : "udmap";
-  char token[40];
+  char token[40], msg[256];
   udmap_fmu_token(token, sizeof token);
-  if (fmuType != fmi2CoSimulation) {
-    if (logger)
-      logger(env, name, fmi2Error, "logStatusError",
-             "fmi2Instantiate: udmap is a co-simulation FMU only (fmuType must be "
-             "fmi2CoSimulation)");
-    return NULL;
-  }
-  if (!fmuGUID || strcmp(fmuGUID, token) != 0) {
-    if (logger)
-      logger(env, name, fmi2Error, "logStatusError",
-             "fmi2Instantiate: GUID '%s' does not match this binary's '%s'",
+  msg[0] = '\0';
+  if (fmuType != fmi2CoSimulation)
+    snprintf(msg, sizeof msg, "fmi2Instantiate: udmap is a co-simulation FMU only (fmuType "
+             "must be fmi2CoSimulation)");
+  else if (!fmuGUID || strcmp(fmuGUID, token) != 0)
+    snprintf(msg, sizeof msg, "fmi2Instantiate: GUID '%s' does not match this binary's '%s'",
              fmuGUID ? fmuGUID : "(null)", token);
+  if (msg[0]) {
+    char buf[512];
+    escape_percent(msg, buf, sizeof buf);
+    if (logger) logger(env, name, fmi2Error, "logStatusError", buf);
     return NULL;
   }
   ModelInstance *m = model_new(name, 2, emit2, (void *)logger, env, loggingOn != fmi2False);

@@ -387,6 +387,10 @@ static const char *invalid_reason(const VariableInfo *v, double x, char *buf, si
   if (v->type == BOOLEAN && x != 0.0 && x != 1.0) return "not a Boolean";
   if (v->type == INTEGER && x != floor(x)) return "not an integer";
   if ((v->flags & POSITIVE) && !(x > 0.0)) return "must be positive";
+  if ((v->flags & OPEN) && !(x > v->min && x < v->max)) {
+    snprintf(buf, n, "must lie strictly between %g and %g", v->min, v->max);
+    return buf;
+  }
   if (x < v->min) {
     snprintf(buf, n, "below its minimum %g", v->min);
     return buf;

@@ -10,7 +10,9 @@
  *   causality  INDEPENDENT, INPUT, PARAMETER (tunable) or OUTPUT
  *   group      what a change invalidates (inputs, parameters) or what computes it (outputs)
  *   unit       a unit of UDMAP_UNITS, or "" for dimensionless
- *   min, max   inclusive bounds (NOLIMIT for none); POSITIVE additionally excludes zero
+ *   min, max   inclusive bounds (NOLIMIT for none); POSITIVE additionally excludes zero,
+ *              OPEN excludes both bounds, EVEN asks for an even integer; the bounds follow
+ *              the case-file validation of the Python package (wrappers/python/udmap/case.py)
  * The value reference of a variable is its position in the table.
  */
 #ifndef UDMAP_FMU_VARIABLES_H
@@ -25,7 +27,7 @@
   X(f_exc, REAL, INPUT, FORCE, "Hz", 0.0, 0.0, NOLIMIT, 0, \
     "Excitation frequency; 0 means at resonance (the peak of the response), otherwise it " \
     "must lie in [f_min, f_max]") \
-  X(mu, REAL, INPUT, DAMPER, "", 0.3, 0.0, NOLIMIT, 0, \
+  X(mu, REAL, INPUT, DAMPER, "", 0.3, 0.0, NOLIMIT, POSITIVE, \
     "Friction coefficient of the damper contacts") \
   X(CF, REAL, INPUT, CF, "N", 900.0, 0.0, NOLIMIT, POSITIVE, \
     "Centrifugal load on the damper") \
@@ -64,16 +66,16 @@
     "Young's modulus of the blade") \
   X(rho, REAL, PARAMETER, BLADE, "kg/m3", 8200.0, 0.0, NOLIMIT, POSITIVE, \
     "Density of the blade") \
-  X(zeta, REAL, PARAMETER, BLADE, "", 0.002, 0.0, 1.0, 0, \
+  X(zeta, REAL, PARAMETER, BLADE, "", 0.002, 0.0, NOLIMIT, 0, \
     "Damping ratio of the first bare-blade mode (stiffness-proportional damping C = beta K)") \
   /* ---------------------------------------------------------------- damper parameters */ \
   X(pitch, REAL, PARAMETER, DAMPER, "m", 0.026, 0.0, NOLIMIT, POSITIVE, \
     "Circumferential distance between the platform centres P_L and P_R") \
   X(y_P, REAL, PARAMETER, DAMPER, "m", 0.006, NOLIMIT, NOLIMIT, 0, \
     "Radial coordinate of the platform centres, from the damper centre of gravity G") \
-  X(beta_L_deg, REAL, PARAMETER, DAMPER, "deg", 45.0, 0.0, 90.0, 0, \
+  X(beta_L_deg, REAL, PARAMETER, DAMPER, "deg", 45.0, 0.0, 90.0, OPEN, \
     "Inclination of the left (flat-side) platform face") \
-  X(beta_R_deg, REAL, PARAMETER, DAMPER, "deg", 45.0, 0.0, 90.0, 0, \
+  X(beta_R_deg, REAL, PARAMETER, DAMPER, "deg", 45.0, 0.0, 90.0, OPEN, \
     "Inclination of the right (curved-side) platform face") \
   X(flat1_x, REAL, PARAMETER, DAMPER, "m", -6.724e-3, NOLIMIT, NOLIMIT, 0, \
     "First flat-side contact point, x (circumferential, from G towards the curved side)") \
