@@ -40,9 +40,15 @@ def binary(version: int) -> Path:
     return extract(version) / "binaries" / PLATFORM[version] / "udmap.so"
 
 
+_descriptions: dict = {}
+
+
 def description(version: int):
-    from fmpy import read_model_description
-    return read_model_description(str(FMUS[version]))
+    """fmpy's reading of the FMU's modelDescription.xml (parsed once per process)."""
+    if version not in _descriptions:
+        from fmpy import read_model_description
+        _descriptions[version] = read_model_description(str(FMUS[version]))
+    return _descriptions[version]
 
 
 class _Fmi2Callbacks(ctypes.Structure):
@@ -231,7 +237,10 @@ class Instance:
         return s
 
     def set_state(self, s) -> int:
-        return self.f_set_state(self.c, s)
+        st = self.f_set_state(self.c, s)
+        if st == OK:
+            self.time = self.get("time")[1][0]
+        return st
 
     def free_state(self, s) -> int:
         return self.f_free_state(self.c, ctypes.byref(s))
