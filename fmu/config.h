@@ -36,7 +36,7 @@ typedef enum {
   GROUP_RATIO     /* F_ratio: F_E over the limit force */
 } Group;
 
-#define NOLIMIT 1e300 /* bound marker: no min / max */
+#define NOLIMIT __builtin_inf() /* bound marker: no min / max */
 #define POSITIVE 1    /* flag: the value must be > 0 */
 #define EVEN 2        /* flag: the integer must be even */
 #define OPEN 4        /* flag: min and max are excluded */

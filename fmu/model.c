@@ -486,6 +486,12 @@ Status model_get(ModelInstance *m, const char *fn, ValueReference vr, VariableTy
     *logged |= BIT(stage);
     model_log(m, st, "%s: %s", fn, m->stage_message[stage]);
   }
+  if (st == OK && !isfinite(*value)) {
+    /* e.g. F_E / F_lim overflowing for absurd inputs: never a non-finite OK value */
+    model_log(m, Error, "%s: %s = %g is not finite (F_E = %g N, F_lim = %g N)", fn, v->name,
+              *value, V(F_E), m->F_lim);
+    return Error;
+  }
   return st;
 }
 
