@@ -176,5 +176,13 @@ int main(int argc, char **argv) {
            damper ? (k ? 0.31 : 0.30) : 0.3, table[k][0], table[k][1], table[k][3]);
   printf("]}\n");
   free(times);
+  if (version == 2) {
+    LOAD(f.h, fmi2FreeInstance);
+    p_fmi2FreeInstance(f.inst);
+  } else {
+    LOAD(f.h, fmi3FreeInstance);
+    p_fmi3FreeInstance(f.inst);
+  }
+  dlclose(f.h);
   return 0;
 }
