@@ -75,10 +75,12 @@ def close(a, b, rel=1e-8):
 
 def test_outputs_equal_the_command_line(results, tmp_path):
     r = results[2]
+    # the exact values the FMU held (fmpy's interpolation of the table may round them)
     groups: dict = {}
     for row in r:
         groups.setdefault((row["CF"], row["mu"], row["f_exc"]), set()).add(float(row["F_E"]))
-    assert len(groups) == len(SEGMENTS)
+    assert ({(round(CF, 9), round(mu, 9), round(f, 9)) for CF, mu, f in groups}
+            == {(CF, mu, f) for CF, mu, f, _ in SEGMENTS})
     checked = 0
     for (CF, mu, f_exc), forces in groups.items():
         data, points = reference(tmp_path, float(CF), float(mu), float(f_exc), sorted(forces))
@@ -95,6 +97,6 @@ def test_outputs_equal_the_command_line(results, tmp_path):
             assert bool(row["hcf_ok"]) == p["hcf_ok"], where
             checked += 1
     assert checked == len(r)
-    # the table really went through the regimes and past the limit force
-    assert {int(x) for x in r["regime"]} >= {1, 2, 3} or {int(x) for x in r["regime"]} >= {0, 1, 3}
-    assert r["F_ratio"].max() > 1.0 and r["F_ratio"].min() < 0.5
+    # the table went through every regime (stuck to above F_lim) and past the limit force
+    assert {int(x) for x in r["regime"]} == {0, 1, 2, 3}
+    assert r["F_ratio"].max() > 1.0 and r["F_ratio"].min() < 0.05
