@@ -35,3 +35,4 @@ def test_instantiate_free_cycles_do_not_grow_memory(version):
     growth = rss_kib() - before
     # one leaked blade or damper per cycle would be hundreds of kB per cycle
     assert growth < 2048, f"RSS grew by {growth} kB over 1000 cycles"
+
