@@ -312,7 +312,21 @@ static Status compute_point(ModelInstance *m) {
   static const Stage deps[] = {STAGE_MODEL, STAGE_CF};
   Status st = need(m, STAGE_POINT, deps, 2);
   if (st >= Discard) return st;
-  const double F_E = V(F_E), f_exc = V(f_exc);
+  const double f_exc = V(f_exc);
+  /* F_E = 0 (e.g. an engine model starting from rest) is the limit F_E -> 0+: the kernel
+   * answers at a force far inside the stuck range, where the response is linear in F_E, and
+   * the amplitudes are scaled to exactly zero; f_res, k, regime and hcf_ok are the limits. */
+  const bool at_rest = V(F_E) == 0.0;
+  double F_E = V(F_E);
+  if (at_rest) {
+    st = run(m, STAGE_LIMIT);
+    if (st >= Discard) {
+      memcpy(m->stage_message[STAGE_POINT], m->stage_message[STAGE_LIMIT],
+             sizeof m->stage_message[STAGE_POINT]);
+      return st;
+    }
+    F_E = m->F_lim > 0.0 ? 1e-12 * m->F_lim : 1e-12;
+  }
   int stat;
   memset(&m->point, 0, sizeof m->point);
   if (f_exc == 0.0) {
@@ -327,8 +341,13 @@ static Status compute_point(ModelInstance *m) {
     if (stat != UDMAP_OK) return kernel_failure(m, STAGE_POINT, stat, "udmap_model_response");
   }
   udmap_point *p = &m->point;
+  if (at_rest && !p->unbounded) {
+    p->F_E = 0.0;
+    p->gamma_P = p->sigma_a = p->u_E = 0.0;
+    for (int i = 0; i < p->nroots && i < UDMAP_MAX_ROOTS; i++) p->roots[i] = 0.0;
+  }
   model_log_category(m, LOG_EVENTS, OK, "response point computed for F_E = %.17g N, f_exc = "
-                     "%.17g Hz", F_E, f_exc);
+                     "%.17g Hz", V(F_E), f_exc);
   if (p->unbounded) {
     /* zeta = 0 at or above F_lim: no finite response. Report the limits instead of
      * numbers that look like a valid answer. */
@@ -346,7 +365,7 @@ static Status compute_point(ModelInstance *m) {
     snprintf(m->stage_message[STAGE_POINT], sizeof m->stage_message[STAGE_POINT],
              "%s: F_E = %g N is at or above the limit force with zeta = 0: the response is "
              "unbounded (gamma_P = sigma_a = u_E = +inf, regime = 3)",
-             stage_names[STAGE_POINT], F_E);
+             stage_names[STAGE_POINT], V(F_E));
     return Warning;
   }
   const double fields[] = {p->gamma_P, p->f_res, p->sigma_a, p->u_E, p->k_re, p->k_im};
@@ -354,7 +373,7 @@ static Status compute_point(ModelInstance *m) {
   for (int i = 0; i < 6; i++)
     if (!isfinite(fields[i]))
       return failure(m, STAGE_POINT, "the kernel returned %s = %g for F_E = %g N", names[i],
-                     fields[i], F_E);
+                     fields[i], V(F_E));
   return OK;
 }
 

@@ -195,3 +195,22 @@ def test_random_input_vectors(version, count):
     assert inst.set(**NOMINAL) == OK
     assert_usable(inst)
     inst.free()
+
+
+@pytest.mark.parametrize("version", VERSIONS)
+def test_zero_force_is_the_limit_of_small_forces(version, tmp_path):
+    # an engine model may start from rest: F_E = 0 gives the exact F_E -> 0+ limit
+    from fmu_harness import CASE, cli
+    inst = ready(version, F_E=0.0)
+    out = assert_usable(inst)
+    assert out["gamma_P"] == out["sigma_a"] == out["u_E"] == out["F_ratio"] == 0.0
+    assert out["regime"] == 0 and out["hcf_ok"] is True
+    small = {p["F_E"]: p for p in cli("backbone", CASE, "--forces", "1e-6")["points"]}[1e-6]
+    for key in ("f_res", "k_re"):
+        assert math.isclose(out[key], small[key], rel_tol=1e-9), (key, out[key], small[key])
+    assert abs(out["k_im"]) <= 1e-9 * out["k_re"]
+    # and at a given frequency
+    assert inst.set(f_exc=190.0) == OK
+    out = assert_usable(inst)
+    assert out["gamma_P"] == 0.0 and math.isclose(out["f_res"], 190.0, rel_tol=1e-12)
+    inst.free()
