@@ -28,8 +28,8 @@ def events(inst: Instance, since: int) -> list[str]:
     for _, category, message in inst.logs[since:]:
         if category != "logEvents":
             continue
-        for key in ("blade built", "damper traced", "rescaled", "model built",
-                    "limit force computed", "response point computed"):
+        for key in ("blade built", "damper traced", "damper coupled", "rescaled",
+                    "model built", "limit force computed", "response point computed"):
             if key in message:
                 kinds.append(key)
     return kinds
@@ -68,11 +68,12 @@ def test_only_what_changed_is_recomputed(version):
     # a new CF: the damper table is rescaled, not traced; the model is kept
     assert work(inst, lambda: (inst.set(CF=1100.0), read_all(inst))) == sorted([
         "rescaled", "limit force computed", "response point computed"])
-    # a new mu or contact stiffness: the damper is traced again (at the reference CF, then
-    # rescaled to the current one), the blade is kept
+    # a new mu, contact stiffness or damper geometry: the damper is traced again (at the
+    # reference CF, then rescaled to the current one) and coupled to the model, which keeps the
+    # bare-blade data; the blade is kept
     for change in ({"mu": 0.25}, {"kt_flat": 45e6}, {"flat1_y": -1.8e-3}):
         assert work(inst, lambda: (inst.set(**change), read_all(inst))) == sorted([
-            "damper traced", "rescaled", "model built", "limit force computed",
+            "damper traced", "damper coupled", "rescaled", "limit force computed",
             "response point computed"]), change
     # a new blade parameter: the blade is rebuilt, the damper kept
     assert work(inst, lambda: (inst.set(neck_h=0.0085), read_all(inst))) == sorted([
