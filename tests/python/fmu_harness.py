@@ -282,3 +282,104 @@ def case_with(tmp_path: Path, name: str = "case", **damper) -> Path:
     path = tmp_path / f"{name}.json"
     path.write_text(json.dumps(data))
     return path
+
+
+# A C importer that runs N cycles of: instantiate, compute, save the state, change mu, CF, a
+# blade parameter and F_E, have a value rejected, restore the state, reset, free. It prints the
+# growth of its resident memory from cycle 20 to the end ("rss_growth_kib N").
+_CYCLES = r"""
+/* instantiate, compute, save state, change everything, reject a value, restore, reset, free */
+#include <dlfcn.h>
+#include <stdbool.h>
+#include <stdio.h>
+#include <stdlib.h>
+#define S(name) void *name = dlsym(h, #name); if (!name) return 3;
+typedef int (*f_v)(void *);
+typedef int (*f_rw)(void *, const unsigned *, size_t, double *);
+typedef int (*f_rw3)(void *, const unsigned *, size_t, double *, size_t);
+typedef int (*f_st)(void *, void **);
+typedef int (*f_st1)(void *, void *);
+static long resident_kib(void) {
+  long pages = 0, resident = 0;
+  FILE *f = fopen("/proc/self/statm", "r");
+  if (!f || fscanf(f, "%%ld %%ld", &pages, &resident) != 2) resident = -1;
+  if (f) fclose(f);
+  return resident * 4;
+}
+static void log2_(void *e, const char *n, int s, const char *c, const char *m, ...) {
+  (void)e; (void)n; (void)c; (void)s; (void)m; }
+static void log3_(void *e, int s, const char *c, const char *m) {
+  (void)e; (void)s; (void)c; (void)m; }
+int main(int argc, char **argv) {
+  void *h = dlopen(argv[1], RTLD_NOW | RTLD_LOCAL);
+  if (!h) return 2;
+  int v3 = argv[3][0] == '3', n = atoi(argv[4]);
+  unsigned out[] = {%(out)s}, in[] = {%(in)s};
+  double x[] = {0.25, 1000.0, 0.009, 40.0}, bad[] = {0.3, 900.0, 0.008, -1.0}, y[3];
+  long rss0 = resident_kib();
+  for (int i = 0; i < n; i++) {
+    void *c;
+    if (i == 20) rss0 = resident_kib();
+    if (v3) {
+      S(fmi3InstantiateCoSimulation) S(fmi3EnterInitializationMode) S(fmi3ExitInitializationMode)
+      c = ((void *(*)(const char *, const char *, const char *, bool, bool, bool, bool,
+                      const unsigned *, size_t, void *, void *, void *))
+           fmi3InstantiateCoSimulation)("x", argv[2], "", 0, 0, 0, 0, NULL, 0, NULL,
+                                        (void *)log3_, NULL);
+      if (!c) return 4;
+      ((int (*)(void *, bool, double, double, bool, double))fmi3EnterInitializationMode)(
+          c, 0, 0, 0, 0, 0);
+      ((f_v)fmi3ExitInitializationMode)(c);
+    } else {
+      S(fmi2Instantiate) S(fmi2SetupExperiment) S(fmi2EnterInitializationMode)
+      S(fmi2ExitInitializationMode)
+      void *cb[5] = {(void *)log2_, NULL, NULL, NULL, NULL};
+      c = ((void *(*)(const char *, int, const char *, const char *, void *, int, int))
+           fmi2Instantiate)("x", 1, argv[2], "", cb, 0, 0);
+      if (!c) return 4;
+      ((int (*)(void *, int, double, double, int, double))fmi2SetupExperiment)(c, 0, 0, 0, 0, 0);
+      ((f_v)fmi2EnterInitializationMode)(c);
+      ((f_v)fmi2ExitInitializationMode)(c);
+    }
+    void *get = dlsym(h, v3 ? "fmi3GetFloat64" : "fmi2GetReal");
+    void *set = dlsym(h, v3 ? "fmi3SetFloat64" : "fmi2SetReal");
+    void *gs = dlsym(h, v3 ? "fmi3GetFMUState" : "fmi2GetFMUstate");
+    void *ss = dlsym(h, v3 ? "fmi3SetFMUState" : "fmi2SetFMUstate");
+    void *fs = dlsym(h, v3 ? "fmi3FreeFMUState" : "fmi2FreeFMUstate");
+    void *rs = dlsym(h, v3 ? "fmi3Reset" : "fmi2Reset");
+    void *fr = dlsym(h, v3 ? "fmi3FreeInstance" : "fmi2FreeInstance");
+#define GET() (v3 ? ((f_rw3)get)(c, out, 3, y, 3) : ((f_rw)get)(c, out, 3, y))
+#define SET(a) (v3 ? ((f_rw3)set)(c, in, 4, a, 4) : ((f_rw)set)(c, in, 4, a))
+    void *state = NULL;
+    if (GET() || ((f_st)gs)(c, &state)) return 5;
+    if (SET(x) || GET() > 1 || SET(bad) != 2) return 6;
+    if (((f_st1)ss)(c, state) || GET() || ((f_st)fs)(c, &state)) return 7;
+    if (((f_v)rs)(c) || GET()) return 8;
+    ((void (*)(void *))fr)(c);
+  }
+  printf("rss_growth_kib %%ld\n", resident_kib() - rss0);
+  dlclose(h);
+  return 0;
+}
+"""
+
+
+def cycles_program(version: int, directory: Path) -> Path:
+    """Compiles the cycle program for the FMU `version`; returns the executable."""
+    import shutil
+    md = description(version)
+    vr = {v.name: v.valueReference for v in md.modelVariables}
+    src = _CYCLES % {"out": ", ".join(str(vr[n]) for n in ("gamma_P", "F_lim", "sigma_a")),
+                     "in": ", ".join(str(vr[n]) for n in ("mu", "CF", "neck_h", "F_E"))}
+    (directory / "cycles.c").write_text(src)
+    cc = shutil.which("cc") or shutil.which("gcc")
+    assert cc, "a C compiler is needed (the build needs one too)"
+    exe = directory / "cycles"
+    subprocess.run([cc, "-O1", "-g", "-o", str(exe), str(directory / "cycles.c"), "-ldl"],
+                   check=True)
+    return exe
+
+
+def token(version: int) -> str:
+    md = description(version)
+    return md.guid if version == 2 else md.instantiationToken
