@@ -117,9 +117,15 @@ typedef struct {
 
 int udmap_damper_get_info(udmap_error error, udmap_damper damper, udmap_damper_info *info);
 
-/* k(gamma) = k_re + i k_im for n amplitudes [rad]. */
+/* k(gamma) = k_re + i k_im for n amplitudes [rad] (each > 0; a table without delta_M only up to
+ * its last row). */
 int udmap_damper_stiffness(udmap_error error, udmap_damper damper, int n, const double *gamma,
                            double *k_re, double *k_im);
+
+/* dk/dgamma for n amplitudes [N m/rad^2] (closed forms of the base cycle and the traced loops;
+ * the PCHIP derivative for a table). */
+int udmap_damper_stiffness_derivative(udmap_error error, udmap_damper damper, int n,
+                                      const double *gamma, double *dk_re, double *dk_im);
 
 /* The steady loop M_r(tau) at amplitude gamma_a, gamma = gamma_a cos(tau), at n equally spaced
  * tau in [0, 2 pi) (asymmetric and jenkins kinds). */
@@ -137,6 +143,11 @@ typedef struct {
   double sigma_all;     /* allowable alternating stress [Pa], default 80e6 */
   double rtol;          /* relative tolerance of peak and root refinement, default 1e-12 */
   int grid_per_decade;  /* backbone amplitude grid density for root bracketing, default 24 */
+  int eigen_method;     /* eigenvalue start: 0 auto (a direct solve once per model, then the
+                           secular equation), 1 direct for every layer, 2 secular only */
+  int dense_max;        /* largest ndof for the dense eigen-solver (zggev); larger banded models
+                           use ARPACK shift-invert, default 200 */
+  int sweep_points;     /* bare-blade samples over the band for the response curves, default 400 */
 } udmap_analysis;
 
 void udmap_analysis_defaults(udmap_analysis *analysis);
@@ -148,6 +159,11 @@ int udmap_new_model(udmap_error error, udmap_blade blade, udmap_damper damper,
                     const udmap_analysis *analysis, udmap_model *model);
 void udmap_delete_model(udmap_model *model);
 
+/* Couples another damper to the model (borrowed like the first; the old one may then be
+ * deleted). The bare-blade data are kept and the backbone table is rebuilt on next use: the
+ * cheap path after a change of damper parameters. */
+int udmap_model_set_damper(udmap_error error, udmap_model model, udmap_damper damper);
+
 /* One point of the non-linear response (at resonance or at a given frequency). */
 typedef struct {
   double F_E;      /* excitation force amplitude [N] */
@@ -158,8 +174,10 @@ typedef struct {
   double k_re, k_im; /* damper stiffness at gamma_P [N m/rad] */
   int regime;      /* 0 stuck, 1 partial slip, 2 full slip, 3 at or above F_lim */
   int hcf_ok;      /* F_E <= 0.5 F_lim and sigma_a <= sigma_all */
-  int unbounded;   /* zeta = 0 and F_E >= F_lim: no finite response; numbers are 0 */
-  int nroots;      /* number of gamma_P roots (all in roots[], ascending) */
+  int unbounded;   /* zeta = 0 and F_E >= F_lim (or above the backbone's asymptote, if that is
+                      lower, e.g. with lift-off): no finite response; numbers are 0, regime 3 */
+  int nroots;      /* number of gamma_P roots (all in roots[], ascending; beyond
+                      UDMAP_MAX_ROOTS the largest ones) */
   double roots[UDMAP_MAX_ROOTS];
 } udmap_point;
 
@@ -173,9 +191,153 @@ int udmap_model_backbone_curve(udmap_error error, udmap_model model, int n, cons
 int udmap_model_backbone(udmap_error error, udmap_model model, int n, const double *F_E,
                          udmap_point *points);
 
-/* Response at the excitation frequency f_exc [Hz] for n forces (PHYSICS.md 4, last paragraph). */
+/* Response at the excitation frequency f_exc [Hz] for n forces (PHYSICS.md 4, last paragraph).
+ * f_exc must lie in the band. The response at a fixed frequency is finite even above F_lim, so
+ * unbounded is never set here (regime is still 3). */
 int udmap_model_response(udmap_error error, udmap_model model, double f_exc, int n,
                          const double *F_E, udmap_point *points);
+
+/* Response curves by amplitude layered force mapping (PHYSICS.md 3) for n forces, starting
+ * from `layers` log-spaced amplitude layers (more are added where the curves bend). The curves
+ * are kept in the model until the next call; read curve i (0-based, in the order of F_E) with
+ * udmap_model_curve_size and udmap_model_curve_get. Points come in path order: per connected
+ * part, the lower-frequency branch by rising gamma_P, the peak, the upper-frequency branch by
+ * falling gamma_P (a detached part starts and ends at its bottom turning point). branch: 0
+ * below the peak frequency of the point's layer, 1 above, 2 a turning point on the backbone;
+ * part: 1 the main curve, 2, 3, ... detached parts. */
+#define UDMAP_BRANCH_LOWER 0
+#define UDMAP_BRANCH_UPPER 1
+#define UDMAP_BRANCH_TURNING 2
+int udmap_model_curves(udmap_error error, udmap_model model, int n, const double *F_E,
+                       int layers);
+int udmap_model_curve_size(udmap_error error, udmap_model model, int i, int *npoints);
+/* Copies curve i into arrays of at least npoints entries (f in Hz, gamma_P in rad, sigma_a in
+ * Pa). */
+int udmap_model_curve_get(udmap_error error, udmap_model model, int i, int npoints, double *f_hz,
+                          double *gamma_P, double *sigma_a, int *branch, int *part);
+
+/* ---------------------------------------------------------------- standard method, time integration */
+
+/* The standard convergence-based method (PHYSICS.md 6) and the time-domain ground truth
+ * (PHYSICS.md 7). The damper enters as its contact law in time (udmap_contact): the steady
+ * moment for a periodic gamma(t) is traced with the loading history of PHYSICS.md 2.1, exactly
+ * (event-driven) unless a number of AFT samples is set. */
+typedef struct _udmap_contact *udmap_contact;
+
+#define UDMAP_HBM_CONDENSED 0 /* harmonic balance on the damper DOF after condensation */
+#define UDMAP_HBM_FULL 1      /* harmonic balance on all DOFs */
+#define UDMAP_HBM_MAX_HARMONICS 64
+
+/* Rotational Jenkins element (PHYSICS.md 2.4): kt [N m/rad], M_slip [N m]. */
+int udmap_new_contact_jenkins(udmap_error error, double kt, double M_slip, udmap_contact *contact);
+/* Asymmetric flat/curved damper (PHYSICS.md 2.1), with its CF ramp. */
+int udmap_new_contact_asymmetric(udmap_error error, const udmap_asymmetric_params *params,
+                                 udmap_contact *contact);
+void udmap_delete_contact(udmap_contact *contact);
+
+/* One AFT evaluation: gamma(tau) = G0 + Re(sum_h G_h e^{i h tau}), h = 1..H, G as H (re, im)
+ * pairs; returns the steady M_r = M0 + Re(sum_h M_h e^{i h tau}) (M as H pairs) and the largest
+ * gamma. samples = 0: exact event-driven integration; >= 2H+1: classical sampled AFT. */
+int udmap_contact_aft(udmap_error error, udmap_contact contact, int H, double G0, const double *G,
+                      int samples, double *M0, double *M, double *gamma_max);
+
+/* Settings of the standard method; fill with udmap_hbm_defaults, then change what is needed. */
+typedef struct {
+  int harmonics;       /* H: harmonics 1..H (default 1) */
+  int harmonic0;       /* 1: also balance the static harmonic 0 (default 0) */
+  int variant;         /* UDMAP_HBM_CONDENSED (default) or UDMAP_HBM_FULL */
+  double tol;          /* Newton: relative step tolerance at the peak (default 1e-10) */
+  int max_iter;        /* Newton iterations per corrector (default 30) */
+  double ds_initial;   /* arc-length steps in relative amplitude/frequency units: */
+  double ds_min;       /*   first 0.05, smallest 1e-9, largest 0.3 */
+  double ds_max;
+  int target_iter;     /* step control: Newton iterations aimed at per step (default 4) */
+  double max_angle;    /* largest turn of the tangent per step [rad] (default 0.35) */
+  int max_steps;       /* continuation steps per force (default 20000) */
+  double peak_tol;     /* peak refinement tolerance on the arc length (default 1e-10) */
+  int aft_samples;     /* 0: exact event-driven AFT (default); N >= 2H+1: N samples per period */
+  int aft_max_periods; /* periods until the damper loop repeats, at most (default 8) */
+  double fd_step;      /* relative finite-difference step of the damper Jacobian (1e-7) */
+  double gamma_limit;  /* amplitude [rad] beyond which the response is unbounded (10) */
+  int full_band;       /* 1: continue to f_max (default); 0: stop once past the peak */
+  int jacobian_reuse;  /* 1: keep the damper Jacobian while Newton contracts well (default) */
+  double tol_path;     /* Newton: relative step tolerance along the path (default 1e-6) */
+} udmap_hbm_settings;
+
+void udmap_hbm_defaults(udmap_hbm_settings *settings);
+
+/* The peak of the first harmonic of gamma_P on the continued response curve of one force. */
+typedef struct {
+  double F_E;        /* excitation force amplitude [N] */
+  double gamma_P;    /* first-harmonic amplitude of gamma_P at the peak [rad] */
+  double f_res;      /* frequency of the peak [Hz] (or the given frequency) */
+  double sigma_a;    /* first-harmonic stress amplitude [Pa] (0 without stress rows) */
+  double u_E;        /* first-harmonic displacement amplitude at E [m] */
+  double k_re, k_im; /* M_1/Gamma_1 at the peak [N m/rad] */
+  double gamma_max;  /* largest gamma_P(t) over the period [rad] */
+  int npeaks;        /* local maxima of gamma_1 on the curve (peaks[], peak_f[], ascending) */
+  double peaks[UDMAP_MAX_ROOTS];
+  double peak_f[UDMAP_MAX_ROOTS];
+  int harmonics;     /* number of entries of gamma_h */
+  double gamma_h[UDMAP_HBM_MAX_HARMONICS]; /* |Gamma_h|, h = 1..harmonics [rad] */
+  int steps;         /* accepted continuation steps */
+  int iterations;    /* Newton iterations */
+  int aft_calls;     /* AFT evaluations (Jacobians included) */
+  double seconds;    /* wall time of this force [s] */
+  int lift_off;      /* 1 if a damper contact opens during the cycle at the peak */
+} udmap_hbm_point;
+
+/* Peaks for n forces over [f_min, f_max] [Hz]: continuation from f_min upwards from the stuck
+ * linear response, the peak located on the curve. No peak inside the band: UDMAP_EPHYSICS. */
+int udmap_hbm_peaks(udmap_error error, udmap_blade blade, udmap_contact contact, double f_min,
+                    double f_max, const udmap_hbm_settings *settings, int n, const double *F_E,
+                    udmap_hbm_point *points);
+/* Response at f_exc [Hz] for n forces, reached by continuation from f_min. */
+int udmap_hbm_response(udmap_error error, udmap_blade blade, udmap_contact contact, double f_min,
+                       double f_exc, const udmap_hbm_settings *settings, int n, const double *F_E,
+                       udmap_hbm_point *points);
+/* The continued curve of one force: *npoints points (only the first `capacity` written) of f
+ * [Hz], |Gamma_1| [rad], first-harmonic stress [Pa] and the largest gamma(t) [rad]. */
+int udmap_hbm_curve(udmap_error error, udmap_blade blade, udmap_contact contact, double f_min,
+                    double f_max, const udmap_hbm_settings *settings, double F_E, int capacity,
+                    int *npoints, double *f, double *gamma_1, double *sigma_1, double *gamma_max);
+
+/* Settings of the time integration; fill with udmap_dti_defaults. */
+typedef struct {
+  int steps_per_period; /* Newmark steps per excitation period (default 1024, >= 8) */
+  double ss_tol;        /* steady state: estimated remaining relative error of gamma_1 (1e-8) */
+  int min_periods;      /* least periods (default 20) */
+  int max_periods;      /* most periods before giving up (default 200000) */
+  double peak_rtol;     /* peak search: relative frequency tolerance (default 1e-6) */
+  double peak_window;   /* peak search: first bracket half-width, relative (default 0.01) */
+  double gamma_limit;   /* |gamma_P| [rad] beyond which the response is unbounded (10) */
+} udmap_dti_settings;
+
+void udmap_dti_defaults(udmap_dti_settings *settings);
+
+/* Steady state reached from rest under F_E sin(2 pi f t) at E. */
+typedef struct {
+  double F_E;       /* excitation force amplitude [N] */
+  double f;         /* excitation frequency [Hz] */
+  double gamma_1;   /* first-harmonic amplitude of gamma_P [rad] */
+  double sigma_1;   /* first-harmonic amplitude of the stress [Pa] */
+  double gamma_max; /* largest gamma_P(t) over the last period [rad] */
+  double gamma_0;   /* mean of gamma_P(t) over the last period [rad] */
+  double ss_error;  /* estimated remaining relative error of gamma_1 */
+  int periods;      /* periods integrated (last run) */
+  int runs;         /* time integrations (several for the peak search) */
+  double seconds;   /* wall time [s] */
+  int lift_off;     /* 1 if a damper contact opened during the last period */
+} udmap_dti_point;
+
+/* Newmark (average acceleration) on the whole blade to steady state at f_exc [Hz]. */
+int udmap_dti_response(udmap_error error, udmap_blade blade, udmap_contact contact,
+                       const udmap_dti_settings *settings, double f_exc, int n,
+                       const double *F_E, udmap_dti_point *points);
+/* The frequency of the largest gamma_1 near the single-harmonic peak in [f_min, f_max]. */
+int udmap_dti_peak(udmap_error error, udmap_blade blade, udmap_contact contact,
+                   const udmap_dti_settings *settings, double f_min, double f_max, int n,
+                   const double *F_E, udmap_dti_point *points);
 
 #ifdef __cplusplus
 }

@@ -1,0 +1,352 @@
+!> C API, mapping and backbone (wrappers/c/udmap.h, section "mapping, backbone").
+!> A udmap_model handle points to a c_model_type allocated here: the model (which borrows the
+!> blade and damper the handles point to) and the last response curves computed with it.
+module udmap_api_model
+  use, intrinsic :: iso_c_binding, only: c_ptr, c_null_ptr, c_associated, c_f_pointer, &
+    & c_loc, c_int, c_double
+  use udmap_kinds, only: wp
+  use udmap_error, only: error_type, fatal_error, UDMAP_EINPUT
+  use udmap_api, only: set_error, clear_error, error_from_handle
+  use udmap_blade, only: blade_type
+  use udmap_damper, only: damper_type
+  use udmap_model, only: model_type, analysis_type, point_type, curve_type, new_model, &
+    & set_damper, limit_force, backbone_curve, backbone, response, response_curves
+  implicit none
+  private
+  public :: c_analysis_type, c_point_type, c_model_type
+
+  !> Largest number of roots a udmap_point carries (UDMAP_MAX_ROOTS).
+  integer, parameter :: max_roots = 8
+
+  !> struct udmap_analysis.
+  type, bind(C) :: c_analysis_type
+    real(c_double) :: f_min, f_max, sigma_all, rtol
+    integer(c_int) :: grid_per_decade
+    integer(c_int) :: eigen_method, dense_max, sweep_points
+  end type c_analysis_type
+
+  !> struct udmap_point.
+  type, bind(C) :: c_point_type
+    real(c_double) :: F_E, gamma_P, f_res, sigma_a, u_E, k_re, k_im
+    integer(c_int) :: regime, hcf_ok, unbounded, nroots
+    real(c_double) :: roots(max_roots)
+  end type c_point_type
+
+  !> What a udmap_model handle points to.
+  type :: c_model_type
+    type(model_type) :: model
+    type(curve_type), allocatable :: curves(:)
+  end type c_model_type
+
+contains
+
+  !> Default analysis settings (the band is left 0: it must be set).
+  subroutine udmap_analysis_defaults(analysis) bind(C, name="udmap_analysis_defaults")
+    type(c_analysis_type), intent(out) :: analysis
+    type(analysis_type) :: a
+    analysis%f_min = 0
+    analysis%f_max = 0
+    analysis%sigma_all = a%sigma_all
+    analysis%rtol = a%rtol
+    analysis%grid_per_decade = a%grid_per_decade
+    analysis%eigen_method = a%eigen_method
+    analysis%dense_max = a%dense_max
+    analysis%sweep_points = a%sweep_points
+  end subroutine udmap_analysis_defaults
+
+  !> int udmap_new_model(error, blade, damper, const udmap_analysis *, udmap_model *): couples the
+  !> blade and damper handles (borrowed) over the band.
+  function udmap_new_model(errh, bladeh, damperh, analysis, modelh) result(stat) &
+      & bind(C, name="udmap_new_model")
+    type(c_ptr), value :: errh, bladeh, damperh
+    type(c_analysis_type), intent(in) :: analysis
+    type(c_ptr), intent(out) :: modelh
+    integer(c_int) :: stat
+    type(error_type), allocatable :: error
+    type(blade_type), pointer :: blade
+    type(damper_type), pointer :: damper
+    type(c_model_type), pointer :: m
+    type(analysis_type) :: a
+    call clear_error(errh)
+    modelh = c_null_ptr
+    if (.not.c_associated(bladeh)) then
+      error = error_from_handle("blade")
+    else if (.not.c_associated(damperh)) then
+      error = error_from_handle("damper")
+    else
+      call c_f_pointer(bladeh, blade)
+      call c_f_pointer(damperh, damper)
+      a%f_min = analysis%f_min
+      a%f_max = analysis%f_max
+      a%sigma_all = analysis%sigma_all
+      a%rtol = analysis%rtol
+      a%grid_per_decade = analysis%grid_per_decade
+      a%eigen_method = analysis%eigen_method
+      a%dense_max = analysis%dense_max
+      a%sweep_points = analysis%sweep_points
+      allocate(m)
+      call new_model(m%model, blade, damper, a, error)
+      if (allocated(error)) then
+        deallocate(m)
+      else
+        modelh = c_loc(m)
+      end if
+    end if
+    stat = set_error(errh, error)
+  end function udmap_new_model
+
+  !> void udmap_delete_model(udmap_model *): frees the model (not the blade or damper).
+  subroutine udmap_delete_model(modelh) bind(C, name="udmap_delete_model")
+    type(c_ptr), intent(inout) :: modelh
+    type(c_model_type), pointer :: m
+    if (c_associated(modelh)) then
+      call c_f_pointer(modelh, m)
+      deallocate(m)
+      modelh = c_null_ptr
+    end if
+  end subroutine udmap_delete_model
+
+  !> int udmap_model_set_damper(error, model, damper): couples another damper.
+  function udmap_model_set_damper(errh, modelh, damperh) result(stat) &
+      & bind(C, name="udmap_model_set_damper")
+    type(c_ptr), value :: errh, modelh, damperh
+    integer(c_int) :: stat
+    type(error_type), allocatable :: error
+    type(c_model_type), pointer :: m
+    type(damper_type), pointer :: damper
+    call clear_error(errh)
+    if (.not.c_associated(modelh)) then
+      error = error_from_handle("model")
+    else if (.not.c_associated(damperh)) then
+      error = error_from_handle("damper")
+    else
+      call c_f_pointer(modelh, m)
+      call c_f_pointer(damperh, damper)
+      call set_damper(m%model, damper, error)
+      if (allocated(m%curves)) deallocate(m%curves)
+    end if
+    stat = set_error(errh, error)
+  end function udmap_model_set_damper
+
+  !> int udmap_model_limit_force(error, model, double *F_lim) [N].
+  function udmap_model_limit_force(errh, modelh, F_lim) result(stat) &
+      & bind(C, name="udmap_model_limit_force")
+    type(c_ptr), value :: errh, modelh
+    real(c_double), intent(out) :: F_lim
+    integer(c_int) :: stat
+    type(error_type), allocatable :: error
+    type(c_model_type), pointer :: m
+    real(wp) :: value
+    call clear_error(errh)
+    F_lim = 0
+    if (.not.c_associated(modelh)) then
+      error = error_from_handle("model")
+    else
+      call c_f_pointer(modelh, m)
+      call limit_force(m%model, value, error)
+      if (.not.allocated(error)) F_lim = value
+    end if
+    stat = set_error(errh, error)
+  end function udmap_model_limit_force
+
+  !> int udmap_model_backbone_curve(error, model, n, gamma, F_bb, f_res): F_bb [N] and the
+  !> peak frequency [Hz] at n amplitudes [rad].
+  function udmap_model_backbone_curve(errh, modelh, n, gamma, F_bb, f_res) result(stat) &
+      & bind(C, name="udmap_model_backbone_curve")
+    type(c_ptr), value :: errh, modelh
+    integer(c_int), value :: n
+    real(c_double), intent(in) :: gamma(*)
+    real(c_double), intent(out) :: F_bb(*), f_res(*)
+    integer(c_int) :: stat
+    type(error_type), allocatable :: error
+    type(c_model_type), pointer :: m
+    real(wp), allocatable :: Fb(:), fr(:)
+    call clear_error(errh)
+    if (.not.c_associated(modelh)) then
+      error = error_from_handle("model")
+    else if (n < 0) then
+      call fatal_error(error, "backbone_curve: n must not be negative", UDMAP_EINPUT)
+    else
+      call c_f_pointer(modelh, m)
+      allocate(Fb(n), fr(n))
+      call backbone_curve(m%model, gamma(1:n), Fb, fr, error)
+      if (.not.allocated(error)) then
+        F_bb(1:n) = Fb
+        f_res(1:n) = fr
+      end if
+    end if
+    stat = set_error(errh, error)
+  end function udmap_model_backbone_curve
+
+  !> Copies a result point into the C struct (at most max_roots roots: the largest ones).
+  subroutine to_c_point(p, c)
+    type(point_type), intent(in) :: p
+    type(c_point_type), intent(out) :: c
+    integer :: nr
+    c%F_E = p%F_E
+    c%gamma_P = p%gamma_P
+    c%f_res = p%f_res
+    c%sigma_a = p%sigma_a
+    c%u_E = p%u_E
+    c%k_re = real(p%k, wp)
+    c%k_im = aimag(p%k)
+    c%regime = p%regime
+    c%hcf_ok = merge(1, 0, p%hcf_ok)
+    c%unbounded = merge(1, 0, p%unbounded)
+    c%roots = 0
+    nr = 0
+    if (allocated(p%roots)) nr = min(size(p%roots), max_roots)
+    c%nroots = nr
+    if (nr > 0) c%roots(1:nr) = p%roots(size(p%roots) - nr + 1:)
+  end subroutine to_c_point
+
+  !> int udmap_model_backbone(error, model, n, F_E, udmap_point *): the n resonance peaks.
+  function udmap_model_backbone(errh, modelh, n, F_E, points) result(stat) &
+      & bind(C, name="udmap_model_backbone")
+    type(c_ptr), value :: errh, modelh
+    integer(c_int), value :: n
+    real(c_double), intent(in) :: F_E(*)
+    type(c_point_type), intent(out) :: points(*)
+    integer(c_int) :: stat
+    type(error_type), allocatable :: error
+    type(c_model_type), pointer :: m
+    type(point_type), allocatable :: p(:)
+    integer :: i
+    call clear_error(errh)
+    if (.not.c_associated(modelh)) then
+      error = error_from_handle("model")
+    else if (n < 0) then
+      call fatal_error(error, "backbone: n must not be negative", UDMAP_EINPUT)
+    else
+      call c_f_pointer(modelh, m)
+      call backbone(m%model, F_E(1:n), p, error)
+      if (.not.allocated(error)) then
+        do i = 1, n
+          call to_c_point(p(i), points(i))
+        end do
+      end if
+    end if
+    stat = set_error(errh, error)
+  end function udmap_model_backbone
+
+  !> int udmap_model_response(error, model, f_exc, n, F_E, udmap_point *): the response at
+  !> f_exc [Hz].
+  function udmap_model_response(errh, modelh, f_exc, n, F_E, points) result(stat) &
+      & bind(C, name="udmap_model_response")
+    type(c_ptr), value :: errh, modelh
+    real(c_double), value :: f_exc
+    integer(c_int), value :: n
+    real(c_double), intent(in) :: F_E(*)
+    type(c_point_type), intent(out) :: points(*)
+    integer(c_int) :: stat
+    type(error_type), allocatable :: error
+    type(c_model_type), pointer :: m
+    type(point_type), allocatable :: p(:)
+    integer :: i
+    call clear_error(errh)
+    if (.not.c_associated(modelh)) then
+      error = error_from_handle("model")
+    else if (n < 0) then
+      call fatal_error(error, "response: n must not be negative", UDMAP_EINPUT)
+    else
+      call c_f_pointer(modelh, m)
+      call response(m%model, f_exc, F_E(1:n), p, error)
+      if (.not.allocated(error)) then
+        do i = 1, n
+          call to_c_point(p(i), points(i))
+        end do
+      end if
+    end if
+    stat = set_error(errh, error)
+  end function udmap_model_response
+
+  !> int udmap_model_curves(error, model, n, F_E, layers): computes and keeps the response
+  !> curves of n forces.
+  function udmap_model_curves(errh, modelh, n, F_E, layers) result(stat) &
+      & bind(C, name="udmap_model_curves")
+    type(c_ptr), value :: errh, modelh
+    integer(c_int), value :: n, layers
+    real(c_double), intent(in) :: F_E(*)
+    integer(c_int) :: stat
+    type(error_type), allocatable :: error
+    type(c_model_type), pointer :: m
+    call clear_error(errh)
+    if (.not.c_associated(modelh)) then
+      error = error_from_handle("model")
+    else if (n < 0) then
+      call fatal_error(error, "curves: n must not be negative", UDMAP_EINPUT)
+    else
+      call c_f_pointer(modelh, m)
+      if (allocated(m%curves)) deallocate(m%curves)
+      call response_curves(m%model, F_E(1:n), int(layers), m%curves, error)
+      if (allocated(error) .and. allocated(m%curves)) deallocate(m%curves)
+    end if
+    stat = set_error(errh, error)
+  end function udmap_model_curves
+
+  !> The stored curve i (0-based), or an error.
+  subroutine get_curve(errh, modelh, i, m, error)
+    type(c_ptr), intent(in) :: errh, modelh
+    integer(c_int), intent(in) :: i
+    type(c_model_type), pointer, intent(out) :: m
+    type(error_type), allocatable, intent(out) :: error
+    call clear_error(errh)
+    m => null()
+    if (.not.c_associated(modelh)) then
+      error = error_from_handle("model")
+      return
+    end if
+    call c_f_pointer(modelh, m)
+    if (.not.allocated(m%curves)) then
+      call fatal_error(error, "curves: none computed yet (call udmap_model_curves)", UDMAP_EINPUT)
+    else if (i < 0 .or. i >= size(m%curves)) then
+      call fatal_error(error, "curves: index out of range", UDMAP_EINPUT)
+    end if
+  end subroutine get_curve
+
+  !> int udmap_model_curve_size(error, model, i, int *npoints): points of kept curve i (0-based).
+  function udmap_model_curve_size(errh, modelh, i, npoints) result(stat) &
+      & bind(C, name="udmap_model_curve_size")
+    type(c_ptr), value :: errh, modelh
+    integer(c_int), value :: i
+    integer(c_int), intent(out) :: npoints
+    integer(c_int) :: stat
+    type(error_type), allocatable :: error
+    type(c_model_type), pointer :: m
+    npoints = 0
+    call get_curve(errh, modelh, i, m, error)
+    if (.not.allocated(error)) npoints = int(size(m%curves(i + 1)%f), c_int)
+    stat = set_error(errh, error)
+  end function udmap_model_curve_size
+
+  !> int udmap_model_curve_get(error, model, i, npoints, f_hz, gamma_P, sigma_a, branch, part):
+  !> copies kept curve i (0-based).
+  function udmap_model_curve_get(errh, modelh, i, npoints, f_hz, gamma_P, sigma_a, branch, &
+      & part) result(stat) bind(C, name="udmap_model_curve_get")
+    type(c_ptr), value :: errh, modelh
+    integer(c_int), value :: i, npoints
+    real(c_double), intent(out) :: f_hz(*), gamma_P(*), sigma_a(*)
+    integer(c_int), intent(out) :: branch(*), part(*)
+    integer(c_int) :: stat
+    type(error_type), allocatable :: error
+    type(c_model_type), pointer :: m
+    integer :: n
+    call get_curve(errh, modelh, i, m, error)
+    if (.not.allocated(error)) then
+      n = size(m%curves(i + 1)%f)
+      if (npoints < n) then
+        call fatal_error(error, "curves: npoints is smaller than the curve "// &
+          & "(udmap_model_curve_size)", UDMAP_EINPUT)
+      else
+        associate(c => m%curves(i + 1))
+          f_hz(1:n) = c%f
+          gamma_P(1:n) = c%gamma_P
+          sigma_a(1:n) = c%sigma_a
+          branch(1:n) = c%branch
+          part(1:n) = c%part
+        end associate
+      end if
+    end if
+    stat = set_error(errh, error)
+  end function udmap_model_curve_get
+end module udmap_api_model

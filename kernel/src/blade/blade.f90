@@ -1,0 +1,1115 @@
+!> The linear blade (PHYSICS.md 1 and 3): matrices, bare modes and the receptances
+!> H_ab(omega) = e_a^T D(omega)^-1 e_b, D = K - omega^2 M + i omega C, between the platform
+!> rotation gamma_P (g), the excitation DOF (E) and the root stress functional (s), plus the
+!> Sherman-Morrison layer response for a damper stiffness k on gamma_P.
+!>
+!> How the receptances are evaluated (the hot path of the mapping, millions of calls):
+!> - C = beta K (no explicit C): modal sums, exact for this damping,
+!>     H_ab = sum_r c_ab,r / (w_r^2 f - omega^2),  f = 1 + i omega beta,
+!>   with the products c_ab,r = phi_a,r phi_b,r (and (s_K.phi_r) phi_b,r, (s_M.phi_r) phi_b,r for
+!>   the stress sigma = (s_K - omega^2 s_M)^T q) stored per mode. The lowest `nfast` modes are
+!>   summed term by term; the modes above enter through the series
+!>     sum_dropped c_r/(w_r^2 f - omega^2) = (1/f) sum_n R_n z^n,  z = omega^2/f,
+!>     R_n = sum_dropped c_r / w_r^(2(n+1)),
+!>   valid for omega <= omega_d/2 (omega_d = w_(nfast+1), so |z|/omega_d^2 <= 1/4). Each call
+!>   takes as many terms as the actual |z| needs for 1e-17 relative (a handful in the band of a
+!>   resonance; at most blade_residual_terms = 28), so the sum is exact to rounding, without
+!>   allocation or LAPACK. Above omega_d/2: the direct solve below (a modal sum far above the
+!>   first modes cancels digits between its terms).
+!>   * ndof <= blade_full_modal_limit, or dense storage only: all modes by dsygvd on the
+!>     inverted pencil (the lowest blade_polish_modes polished in double-double);
+!>     nfast = min(ndof, blade_fast_modes) and the moments R_n are sums over the computed
+!>     modes. (kept_modes >= ndof: every mode summed term by term, no series.)
+!>   * larger banded models (or kept_modes < ndof): the lowest kept_modes (default
+!>     blade_kept_modes) by subspace iteration; the moments come from refined solves with K,
+!>     projected off the kept modes, R_n = a^T K^-1 (M K^-1)^n b - sum_kept c_r/w_r^(2(n+1)),
+!>     without that cancellation.
+!>   The stress products use s_K^T q = r_K^T K q, r_K = K^-1 s_K, where that is better
+!>   conditioned (s_K holds element stiffnesses: stress from displacements cancels digits).
+!> - explicit C: a direct complex solve of D(omega) for e_E and e_g per frequency (zgetrf for
+!>   dense storage, zgbtrf for band), refined in double-double; derivatives from
+!>   dD/domega = -2 omega M + i C. This path allocates and costs ~1 ms for 64 DOFs.
+!> Accuracy (tests/fortran/test_blade_receptances.f90, test_blade_large.f90): 1e-12 or better
+!> against quadruple-precision direct solves in the band of the first mode.
+!> Storage: dense M, K (and C) when ndof <= blade_dense_limit; band storage (uplo = 'U') for the
+!> beam and for large or narrow-banded imported models.
+module udmap_blade
+  use udmap_kinds, only: wp, pi
+  use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+  use udmap_error, only: error_type, fatal_error, UDMAP_EINPUT, UDMAP_EPHYSICS
+  use udmap_beam, only: beam_params_type, assemble_beam, beam_kd
+  use udmap_mmio, only: mtx_type, read_mtx, write_mtx, mtx_to_dense, mtx_bandwidth
+  use udmap_dd, only: dot_dd
+  use udmap_band, only: band_to_dense, dense_to_band, dense_bandwidth, sym_matvec, sym_entry
+  use udmap_linear_solve, only: spd_factor_type, spd_factor, spd_solve, dynamic_solve
+  use udmap_modes, only: all_modes, lowest_modes
+  implicit none
+  private
+  public :: receptances_type, blade_type
+  public :: new_beam_blade, new_matrices_blade, read_matrices_blade, layer_response, export_blade
+  public :: blade_dense_limit, blade_full_modal_limit, blade_kept_modes, blade_fast_modes
+  public :: blade_residual_terms
+
+  !> Largest ndof held in dense storage (larger models are held in band storage only).
+  integer, parameter :: blade_dense_limit = 2000
+  !> Largest ndof for which all modes are computed (dsygvd) by default when band storage is
+  !> available; dense-only models (no narrow band) always compute all modes.
+  integer, parameter :: blade_full_modal_limit = 128
+  !> Modes polished (double-double products with K) when all modes are computed.
+  integer, parameter :: blade_polish_modes = 64
+  !> Modes computed and summed term by term in larger models (the rest enter the series).
+  integer, parameter :: blade_kept_modes = 20
+  !> Modes summed term by term in models with every mode computed (the rest enter the series).
+  integer, parameter :: blade_fast_modes = 8
+  !> Most terms of the series of the dropped modes: (1/4)^28/(3/4) < 1e-16.
+  integer, parameter :: blade_residual_terms = 28
+  !> Relative truncation tolerance of the series.
+  real(wp), parameter :: series_tol = 1.0e-17_wp
+  !> Relative tolerance of the symmetry check of imported matrices (per entry pair, plus
+  !> 1e-14 of the largest entry); the accepted matrix is symmetrised.
+  real(wp), parameter :: symmetry_rtol = 1.0e-7_wp
+
+  !> Receptances at one frequency and, when requested, their derivatives d/d omega
+  !> (omega in rad/s). g: gamma_P, E: excitation DOF, s: root stress functional.
+  type :: receptances_type
+    complex(wp) :: gE = 0, gg = 0, EE = 0, sE = 0, sg = 0
+    complex(wp) :: dgE = 0, dgg = 0, dEE = 0, dsE = 0, dsg = 0
+  end type receptances_type
+
+  !> A linear blade with its bare modes and what the receptances need.
+  type :: blade_type
+    !> Number of DOFs; gamma_P and excitation DOF (1-based).
+    integer :: ndof = 0, gamma_dof = 0, exc_dof = 0
+    !> Stress rows present.
+    logical :: has_stress = .false.
+    !> Damping is the explicit matrix C (else C = beta K).
+    logical :: explicit_C = .false.
+    !> Modal damping ratio of mode 1 and the stiffness-proportional factor beta = 2 zeta/omega_1.
+    real(wp) :: zeta = 0, beta = 0
+    !> First bare natural circular frequency [rad/s].
+    real(wp) :: omega1 = 0
+    !> Half-bandwidth of the band storage, or -1 if dense only.
+    integer :: kd = -1
+    !> Dense matrices (ndof <= blade_dense_limit); C only with explicit damping.
+    real(wp), allocatable :: M(:, :), K(:, :), C(:, :)
+    !> Symmetric band storage (kd+1, ndof), uplo = 'U'; Cb only with explicit damping.
+    real(wp), allocatable :: Mb(:, :), Kb(:, :), Cb(:, :)
+    !> Stress rows: sigma = (s_K - omega^2 s_M)^T q.
+    real(wp), allocatable :: s_K(:), s_M(:)
+    !> r_K = K^-1 s_K, so that s_K^T q = r_K^T K q: the stress from displacements cancels
+    !> digits (s_K holds element stiffnesses), from forces it does not.
+    real(wp), allocatable :: r_K(:)
+    !> Computed bare natural circular frequencies [rad/s], ascending (all of them for
+    !> ndof <= blade_full_modal_limit, else the lowest kept_modes).
+    real(wp), allocatable :: omega(:)
+    !> Computed mass-normalised mode shapes (ndof, nmodes).
+    real(wp), allocatable :: phi(:, :)
+    !> Number of computed modes.
+    integer :: nmodes = 0
+    !> Modes summed term by term on the fast path; the rest enter the series.
+    integer :: nfast = 0
+    !> Stored terms of the series (0 when nfast = ndof).
+    integer :: nres = 0
+    !> First mode of the series, w_(nfast+1) [rad/s] (0 when nfast = ndof).
+    real(wp) :: omega_d = 0
+    !> The modal path (and its series) is used up to this circular frequency, the direct solve
+    !> above.
+    real(wp) :: omega_fast_max = huge(1.0_wp)
+    !> omega_r^2 of the computed modes.
+    real(wp), allocatable :: w2(:)
+    !> Modal products per mode (8, nmodes): phi_g phi_E, phi_g^2, phi_E^2, (s_K.phi) phi_E,
+    !> (s_M.phi) phi_E, (s_K.phi) phi_g, (s_M.phi) phi_g, 0.
+    real(wp), allocatable :: coef(:, :)
+    !> Scaled moments of the series (8, nres): column n+1 is R_n omega_d^(2n).
+    real(wp), allocatable :: res(:, :)
+  contains
+    !> Receptances (and optionally their derivatives) at omega [rad/s].
+    procedure :: receptances
+    !> The lowest size(f_hz) bare natural frequencies [Hz].
+    procedure :: natural_frequencies
+    !> Entries phi_g and phi_E of the bare first mode (mass-normalised).
+    procedure :: first_mode
+  end type blade_type
+
+  character(len=*), parameter :: fmt_i = '(i0)'
+
+contains
+
+  ! ------------------------------------------------------------------ constructors
+
+  !> The built-in beam blade (PHYSICS.md 1.1).
+  subroutine new_beam_blade(blade, params, error, kept_modes)
+    !> The blade to build.
+    type(blade_type), intent(out) :: blade
+    !> Beam parameters.
+    type(beam_params_type), intent(in) :: params
+    type(error_type), allocatable, intent(out) :: error
+    !> Modes computed and summed term by term, the rest entering the series (default: every
+    !> mode computed when ndof <= blade_full_modal_limit, of which blade_fast_modes summed term
+    !> by term; else blade_kept_modes). A value < ndof takes the path of large models (subspace
+    !> iteration and solves with K); a value >= ndof sums every mode term by term (needs
+    !> ndof <= blade_dense_limit).
+    integer, intent(in), optional :: kept_modes
+    call assemble_beam(params, blade%Kb, blade%Mb, blade%s_K, blade%s_M, blade%gamma_dof, &
+      & blade%exc_dof, error)
+    if (allocated(error)) return
+    blade%ndof = size(blade%Kb, 2)
+    blade%kd = beam_kd
+    blade%zeta = params%zeta
+    blade%has_stress = .true.
+    if (blade%ndof <= blade_dense_limit) then
+      call band_to_dense(blade%Kb, blade%kd, blade%K)
+      call band_to_dense(blade%Mb, blade%kd, blade%M)
+    end if
+    call setup(blade, error, kept_modes)
+  end subroutine new_beam_blade
+
+  !> An imported blade from dense matrices (PHYSICS.md 1.2). gamma_dof, exc_dof are 1-based;
+  !> without C the damping is beta K with beta = 2 zeta/omega_1 (zeta is then ignored if C is
+  !> given). Stress rows are optional (an absent one of the two is zero).
+  subroutine new_matrices_blade(blade, M, K, gamma_dof, exc_dof, zeta, error, C, s_K, s_M, &
+      & kept_modes)
+    type(blade_type), intent(out) :: blade
+    real(wp), intent(in) :: M(:, :), K(:, :)
+    integer, intent(in) :: gamma_dof, exc_dof
+    real(wp), intent(in) :: zeta
+    type(error_type), allocatable, intent(out) :: error
+    real(wp), intent(in), optional :: C(:, :), s_K(:), s_M(:)
+    !> As for new_beam_blade.
+    integer, intent(in), optional :: kept_modes
+    real(wp), allocatable :: mm(:, :), kk(:, :), cc(:, :)
+    integer :: n
+    n = size(M, 1)
+    if (n < 1 .or. size(M, 2) /= n) then
+      call fatal_error(error, "M must be a non-empty square matrix", UDMAP_EINPUT)
+      return
+    end if
+    if (size(K, 1) /= n .or. size(K, 2) /= n) then
+      call fatal_error(error, "K must be a square matrix of the size of M ("//itoa(n)//" x "// &
+        & itoa(n)//")", UDMAP_EINPUT)
+      return
+    end if
+    if (present(C)) then
+      if (size(C, 1) /= n .or. size(C, 2) /= n) then
+        call fatal_error(error, "C must be a square matrix of the size of M ("//itoa(n)// &
+          & " x "//itoa(n)//")", UDMAP_EINPUT)
+        return
+      end if
+    end if
+    mm = M
+    call check_symmetric(mm, "M", error)
+    if (allocated(error)) return
+    kk = K
+    call check_symmetric(kk, "K", error)
+    if (allocated(error)) return
+    if (present(C)) then
+      cc = C
+      call check_symmetric(cc, "C", error)
+      if (allocated(error)) return
+    end if
+    call common_checks(n, gamma_dof, exc_dof, zeta, error, s_K, s_M)
+    if (allocated(error)) return
+    call store_dense(blade, mm, kk, cc)
+    call finish_import(blade, gamma_dof, exc_dof, zeta, error, s_K, s_M, kept_modes)
+  end subroutine new_matrices_blade
+
+  !> An imported blade from Matrix Market files (real symmetric M, K and optional C; stress rows
+  !> as 1 x n or n x 1 matrices). Paths are used as given.
+  subroutine read_matrices_blade(blade, M_path, K_path, gamma_dof, exc_dof, zeta, error, &
+      & C_path, sK_path, sM_path, kept_modes)
+    type(blade_type), intent(out) :: blade
+    character(len=*), intent(in) :: M_path, K_path
+    integer, intent(in) :: gamma_dof, exc_dof
+    real(wp), intent(in) :: zeta
+    type(error_type), allocatable, intent(out) :: error
+    character(len=*), intent(in), optional :: C_path, sK_path, sM_path
+    !> As for new_beam_blade.
+    integer, intent(in), optional :: kept_modes
+    type(mtx_type) :: am, ak, ac
+    real(wp), allocatable :: sk(:), sm(:), mm(:, :), kk(:, :), cc(:, :)
+    integer :: n, kd
+    logical :: with_c
+
+    call read_mtx(M_path, am, error)
+    if (allocated(error)) return
+    n = am%nrows
+    if (am%ncols /= n) then
+      call fatal_error(error, "M ('"//M_path//"') must be square, got "//itoa(am%nrows)//" x "// &
+        & itoa(am%ncols), UDMAP_EINPUT)
+      return
+    end if
+    call read_mtx(K_path, ak, error)
+    if (allocated(error)) return
+    if (ak%nrows /= n .or. ak%ncols /= n) then
+      call fatal_error(error, "K ('"//K_path//"') must be "//itoa(n)//" x "//itoa(n)// &
+        & " like M, got "//itoa(ak%nrows)//" x "//itoa(ak%ncols), UDMAP_EINPUT)
+      return
+    end if
+    with_c = .false.
+    if (present(C_path)) then
+      with_c = .true.
+      call read_mtx(C_path, ac, error)
+      if (allocated(error)) return
+      if (ac%nrows /= n .or. ac%ncols /= n) then
+        call fatal_error(error, "C ('"//C_path//"') must be "//itoa(n)//" x "//itoa(n)// &
+          & " like M, got "//itoa(ac%nrows)//" x "//itoa(ac%ncols), UDMAP_EINPUT)
+        return
+      end if
+    end if
+    if (present(sK_path)) then
+      call read_row(sK_path, "stress_K", sk)
+      if (allocated(error)) return
+    end if
+    if (present(sM_path)) then
+      call read_row(sM_path, "stress_M", sm)
+      if (allocated(error)) return
+    end if
+    call common_checks(n, gamma_dof, exc_dof, zeta, error, sk, sm)
+    if (allocated(error)) return
+
+    if (n <= blade_dense_limit) then
+      call mtx_to_dense(am, mm)
+      call check_symmetric(mm, "M ('"//M_path//"')", error)
+      if (allocated(error)) return
+      call mtx_to_dense(ak, kk)
+      call check_symmetric(kk, "K ('"//K_path//"')", error)
+      if (allocated(error)) return
+      if (with_c) then
+        call mtx_to_dense(ac, cc)
+        call check_symmetric(cc, "C ('"//C_path//"')", error)
+        if (allocated(error)) return
+      end if
+      call store_dense(blade, mm, kk, cc)
+    else
+      kd = max(mtx_bandwidth(am), mtx_bandwidth(ak))
+      if (with_c) kd = max(kd, mtx_bandwidth(ac))
+      blade%ndof = n
+      blade%kd = kd
+      call mtx_to_sym_band(am, kd, "M ('"//M_path//"')", blade%Mb, error)
+      if (allocated(error)) return
+      call mtx_to_sym_band(ak, kd, "K ('"//K_path//"')", blade%Kb, error)
+      if (allocated(error)) return
+      if (with_c) then
+        call mtx_to_sym_band(ac, kd, "C ('"//C_path//"')", blade%Cb, error)
+        if (allocated(error)) return
+      end if
+    end if
+    call finish_import(blade, gamma_dof, exc_dof, zeta, error, sk, sm, kept_modes)
+
+  contains
+
+    subroutine read_row(path, name, s)
+      character(len=*), intent(in) :: path, name
+      real(wp), allocatable, intent(out) :: s(:)
+      type(mtx_type) :: a
+      real(wp), allocatable :: d(:, :)
+      call read_mtx(path, a, error)
+      if (allocated(error)) return
+      if (min(a%nrows, a%ncols) /= 1 .or. max(a%nrows, a%ncols) /= n) then
+        call fatal_error(error, name//" ('"//path//"') must be a 1 x "//itoa(n)//" or "// &
+          & itoa(n)//" x 1 matrix, got "//itoa(a%nrows)//" x "//itoa(a%ncols), UDMAP_EINPUT)
+        return
+      end if
+      call mtx_to_dense(a, d)
+      s = reshape(d, [n])
+    end subroutine read_row
+  end subroutine read_matrices_blade
+
+  !> Writes M.mtx, K.mtx (symmetric coordinate), C.mtx with explicit damping, stress_K.mtx and
+  !> stress_M.mtx (1 x ndof) with stress rows, and blade.json (the case-file blade section that
+  !> reads them back) into the existing directory `dir`.
+  subroutine export_blade(blade, dir, error)
+    type(blade_type), intent(in) :: blade
+    character(len=*), intent(in) :: dir
+    type(error_type), allocatable, intent(out) :: error
+    character(len=:), allocatable :: base
+    type(mtx_type) :: a
+    integer :: unit, ios
+    character(len=32) :: zbuf
+    logical :: exists
+    if (blade%ndof < 1) then
+      call fatal_error(error, "export of an empty blade", UDMAP_EINPUT)
+      return
+    end if
+    base = trim(dir)
+    do while (len(base) > 1 .and. base(len(base):len(base)) == '/')
+      base = base(1:len(base)-1)
+    end do
+    inquire(file=base//"/.", exist=exists)
+    if (.not.exists) then
+      call fatal_error(error, "export directory '"//dir//"' does not exist", UDMAP_EINPUT)
+      return
+    end if
+    call sym_to_mtx(blade%M, blade%Mb, blade%kd, blade%ndof, a)
+    call write_mtx(base//"/M.mtx", a, error, "udmap blade mass matrix")
+    if (allocated(error)) return
+    call sym_to_mtx(blade%K, blade%Kb, blade%kd, blade%ndof, a)
+    call write_mtx(base//"/K.mtx", a, error, "udmap blade stiffness matrix")
+    if (allocated(error)) return
+    if (blade%explicit_C) then
+      call sym_to_mtx(blade%C, blade%Cb, blade%kd, blade%ndof, a)
+      call write_mtx(base//"/C.mtx", a, error, "udmap blade damping matrix")
+      if (allocated(error)) return
+    end if
+    if (blade%has_stress) then
+      call row_to_mtx(blade%s_K, a)
+      call write_mtx(base//"/stress_K.mtx", a, error, "udmap root stress row, stiffness part")
+      if (allocated(error)) return
+      call row_to_mtx(blade%s_M, a)
+      call write_mtx(base//"/stress_M.mtx", a, error, "udmap root stress row, mass part")
+      if (allocated(error)) return
+    end if
+    open(newunit=unit, file=base//"/blade.json", status='replace', action='write', iostat=ios)
+    if (ios /= 0) then
+      call fatal_error(error, "cannot write '"//base//"/blade.json'", UDMAP_EINPUT)
+      return
+    end if
+    write(zbuf, '(es24.16e3)') blade%zeta
+    write(unit, '(a)') '{"kind": "matrices", "M": "M.mtx", "K": "K.mtx",'
+    if (blade%explicit_C) write(unit, '(a)') ' "C": "C.mtx",'
+    if (blade%has_stress) write(unit, '(a)') ' "stress_K": "stress_K.mtx", "stress_M": "stress_M.mtx",'
+    write(unit, '(a)') ' "gamma_dof": '//itoa(blade%gamma_dof)//', "exc_dof": '// &
+      & itoa(blade%exc_dof)//', "zeta": '//trim(adjustl(zbuf))//'}'
+    close(unit)
+
+  contains
+
+    !> Lower triangle (nonzeros, column by column) of a symmetric matrix.
+    subroutine sym_to_mtx(d, b, kd, n, a)
+      real(wp), allocatable, intent(in) :: d(:, :), b(:, :)
+      integer, intent(in) :: kd, n
+      type(mtx_type), intent(out) :: a
+      integer :: i, j, cnt, pass, hi
+      real(wp) :: v
+      a%nrows = n
+      a%ncols = n
+      a%symmetric = .true.
+      do pass = 1, 2
+        cnt = 0
+        do j = 1, n
+          hi = n
+          if (allocated(b)) hi = min(n, j + kd)
+          do i = j, hi
+            v = sym_entry(d, b, kd, i, j)
+            if (v == 0.0_wp) cycle
+            cnt = cnt + 1
+            if (pass == 2) then
+              a%row(cnt) = i
+              a%col(cnt) = j
+              a%val(cnt) = v
+            end if
+          end do
+        end do
+        if (pass == 1) allocate(a%row(cnt), a%col(cnt), a%val(cnt))
+      end do
+    end subroutine sym_to_mtx
+
+    subroutine row_to_mtx(s, a)
+      real(wp), intent(in) :: s(:)
+      type(mtx_type), intent(out) :: a
+      integer :: j, k
+      a%nrows = 1
+      a%ncols = size(s)
+      a%symmetric = .false.
+      allocate(a%row(count(s /= 0.0_wp)), a%col(count(s /= 0.0_wp)), a%val(count(s /= 0.0_wp)))
+      k = 0
+      do j = 1, size(s)
+        if (s(j) /= 0.0_wp) then
+          k = k + 1
+          a%row(k) = 1
+          a%col(k) = j
+          a%val(k) = s(j)
+        end if
+      end do
+    end subroutine row_to_mtx
+  end subroutine export_blade
+
+  ! ------------------------------------------------------------------ evaluation
+
+  !> Receptances at circular frequency omega [rad/s] (see the module documentation for the
+  !> method); with `derivatives`, also d/d omega. Allocation-free in the modal path.
+  subroutine receptances(self, omega, r, error, derivatives)
+    class(blade_type), intent(in) :: self
+    real(wp), intent(in) :: omega
+    type(receptances_type), intent(out) :: r
+    type(error_type), allocatable, intent(out) :: error
+    logical, intent(in), optional :: derivatives
+    logical :: deriv
+    deriv = .false.
+    if (present(derivatives)) deriv = derivatives
+    if (.not.ieee_is_finite(omega)) then
+      call fatal_error(error, "the frequency must be a non-negative finite number", UDMAP_EINPUT)
+      return
+    end if
+    if (omega < 0.0_wp) then
+      call fatal_error(error, "the frequency must be a non-negative finite number", UDMAP_EINPUT)
+      return
+    end if
+    if (self%nmodes < 1) then
+      call fatal_error(error, "the blade has not been built", UDMAP_EINPUT)
+      return
+    end if
+    if (self%explicit_C .or. omega > self%omega_fast_max) then
+      call direct_receptances(self, omega, deriv, r, error)
+      if (allocated(error)) return
+    else if (deriv) then
+      call modal_receptances_deriv(self, omega, self%nfast, r)
+    else
+      call modal_receptances(self, omega, self%nfast, r)
+    end if
+    if (.not.(finite(r%gE) .and. finite(r%gg) .and. finite(r%EE) .and. finite(r%sE) &
+        & .and. finite(r%sg) .and. finite(r%dgE) .and. finite(r%dgg) .and. finite(r%dEE) &
+        & .and. finite(r%dsE) .and. finite(r%dsg))) then
+      r = receptances_type()
+      call fatal_error(error, "the receptances are unbounded at "//ftoa(omega/(2*pi))// &
+        & " Hz (an undamped natural frequency)", UDMAP_EPHYSICS)
+    end if
+  end subroutine receptances
+
+  !> The modal sum, hot path. The seven products are accumulated in scalars (kept in registers;
+  !> arrays would go through memory at every mode), then the series of the dropped modes.
+  pure subroutine modal_receptances(self, omega, nsum, r)
+    class(blade_type), intent(in) :: self
+    real(wp), intent(in) :: omega
+    integer, intent(in) :: nsum
+    type(receptances_type), intent(out) :: r
+    real(wp) :: om2, wb, a, b, t, tr, ti
+    real(wp) :: r1, r2, r3, r4, r5, r6, r7, i1, i2, i3, i4, i5, i6, i7
+    complex(wp) :: h(7)
+    integer :: m
+    om2 = omega*omega
+    wb = omega*self%beta
+    r1 = 0; r2 = 0; r3 = 0; r4 = 0; r5 = 0; r6 = 0; r7 = 0
+    i1 = 0; i2 = 0; i3 = 0; i4 = 0; i5 = 0; i6 = 0; i7 = 0
+    do m = 1, nsum
+      ! 1/(w^2 (1 + i omega beta) - omega^2) = (a - i b)/(a^2 + b^2)
+      a = self%w2(m) - om2
+      b = wb*self%w2(m)
+      t = 1.0_wp/(a*a + b*b)
+      tr = a*t
+      ti = -b*t
+      r1 = r1 + self%coef(1, m)*tr; i1 = i1 + self%coef(1, m)*ti
+      r2 = r2 + self%coef(2, m)*tr; i2 = i2 + self%coef(2, m)*ti
+      r3 = r3 + self%coef(3, m)*tr; i3 = i3 + self%coef(3, m)*ti
+      r4 = r4 + self%coef(4, m)*tr; i4 = i4 + self%coef(4, m)*ti
+      r5 = r5 + self%coef(5, m)*tr; i5 = i5 + self%coef(5, m)*ti
+      r6 = r6 + self%coef(6, m)*tr; i6 = i6 + self%coef(6, m)*ti
+      r7 = r7 + self%coef(7, m)*tr; i7 = i7 + self%coef(7, m)*ti
+    end do
+    h = [cmplx(r1, i1, wp), cmplx(r2, i2, wp), cmplx(r3, i3, wp), cmplx(r4, i4, wp), &
+      & cmplx(r5, i5, wp), cmplx(r6, i6, wp), cmplx(r7, i7, wp)]
+    if (nsum < self%ndof) call add_series(self, omega, h)
+    r%gE = h(1)
+    r%gg = h(2)
+    r%EE = h(3)
+    r%sE = h(4) - om2*h(5)
+    r%sg = h(6) - om2*h(7)
+  end subroutine modal_receptances
+
+  !> Adds the series of the modes above nfast (see add_residual), without derivatives.
+  pure subroutine add_series(self, omega, h)
+    class(blade_type), intent(in) :: self
+    real(wp), intent(in) :: omega
+    complex(wp), intent(inout) :: h(7)
+    complex(wp) :: f, finv, zeta, p1, p2, p3, p4, p5, p6, p7
+    integer :: n, nterms
+    f = cmplx(1.0_wp, omega*self%beta, wp)
+    finv = conjg(f)/(1.0_wp + (omega*self%beta)**2)
+    zeta = (omega/self%omega_d)**2*finv
+    nterms = series_terms(self, zeta)
+    p1 = self%res(1, nterms); p2 = self%res(2, nterms); p3 = self%res(3, nterms)
+    p4 = self%res(4, nterms); p5 = self%res(5, nterms); p6 = self%res(6, nterms)
+    p7 = self%res(7, nterms)
+    do n = nterms - 1, 1, -1
+      p1 = p1*zeta + self%res(1, n); p2 = p2*zeta + self%res(2, n)
+      p3 = p3*zeta + self%res(3, n); p4 = p4*zeta + self%res(4, n)
+      p5 = p5*zeta + self%res(5, n); p6 = p6*zeta + self%res(6, n)
+      p7 = p7*zeta + self%res(7, n)
+    end do
+    h = h + [p1, p2, p3, p4, p5, p6, p7]*finv
+  end subroutine add_series
+
+  !> Terms of the series for zeta: the tail after N terms is below |zeta|^N/(1 - |zeta|) of the
+  !> dropped modes' part; N is the first with that below series_tol (|zeta| <= 1/4 on the modal
+  !> path, so N <= blade_residual_terms).
+  pure integer function series_terms(self, zeta) result(nterms)
+    class(blade_type), intent(in) :: self
+    complex(wp), intent(in) :: zeta
+    real(wp) :: az, t, bound
+    az = sqrt(zeta%re**2 + zeta%im**2)
+    bound = series_tol*(1.0_wp - az)
+    t = az
+    nterms = 1
+    do while (t > bound .and. nterms < self%nres)
+      t = t*az
+      nterms = nterms + 1
+    end do
+  end function series_terms
+
+  !> The modal sum with derivatives: d/d omega of 1/d_m is -d_m'/d_m^2, d_m' = i beta w^2 - 2 omega.
+  pure subroutine modal_receptances_deriv(self, omega, nsum, r)
+    class(blade_type), intent(in) :: self
+    real(wp), intent(in) :: omega
+    integer, intent(in) :: nsum
+    type(receptances_type), intent(out) :: r
+    real(wp) :: om2, wb, a, b, t, tr, ti, sr, si, pr, pi_, dr, di
+    real(wp) :: acc_re(8), acc_im(8), dacc_re(8), dacc_im(8)
+    complex(wp) :: h(8), dh(8)
+    integer :: m
+    om2 = omega*omega
+    wb = omega*self%beta
+    acc_re = 0.0_wp
+    acc_im = 0.0_wp
+    dacc_re = 0.0_wp
+    dacc_im = 0.0_wp
+    do m = 1, nsum
+      a = self%w2(m) - om2
+      b = wb*self%w2(m)
+      t = 1.0_wp/(a*a + b*b)
+      tr = a*t
+      ti = -b*t
+      ! (1/d)^2
+      sr = tr*tr - ti*ti
+      si = 2*tr*ti
+      ! d' = -2 omega + i beta w^2; derivative = -d' (1/d)^2
+      pr = -2*omega
+      pi_ = self%beta*self%w2(m)
+      dr = -(pr*sr - pi_*si)
+      di = -(pr*si + pi_*sr)
+      acc_re = acc_re + self%coef(:, m)*tr
+      acc_im = acc_im + self%coef(:, m)*ti
+      dacc_re = dacc_re + self%coef(:, m)*dr
+      dacc_im = dacc_im + self%coef(:, m)*di
+    end do
+    h = cmplx(acc_re, acc_im, wp)
+    dh = cmplx(dacc_re, dacc_im, wp)
+    if (nsum < self%ndof) call add_residual(self, omega, h, dh)
+    r%gE = h(1)
+    r%gg = h(2)
+    r%EE = h(3)
+    r%sE = h(4) - om2*h(5)
+    r%sg = h(6) - om2*h(7)
+    r%dgE = dh(1)
+    r%dgg = dh(2)
+    r%dEE = dh(3)
+    r%dsE = dh(4) - 2*omega*h(5) - om2*dh(5)
+    r%dsg = dh(6) - 2*omega*h(7) - om2*dh(7)
+  end subroutine modal_receptances_deriv
+
+  !> Adds the series of the modes above nfast, (1/f) sum_n Rt_n zeta^n with f = 1 + i omega beta,
+  !> zeta = omega^2/(f omega_d^2) and the scaled moments Rt_n = res(:, n+1), and its derivative,
+  !> taking the terms that |zeta| needs for series_tol (|zeta| <= 1/4 on the modal path).
+  pure subroutine add_residual(self, omega, h, dh)
+    class(blade_type), intent(in) :: self
+    real(wp), intent(in) :: omega
+    complex(wp), intent(inout) :: h(8), dh(8)
+    complex(wp) :: f, zeta, p(8), dp(8), dzeta
+    integer :: n, nterms
+    f = cmplx(1.0_wp, omega*self%beta, wp)
+    zeta = omega**2/(f*self%omega_d**2)
+    nterms = series_terms(self, zeta)
+    p = self%res(:, nterms)
+    dp = 0.0_wp
+    do n = nterms - 1, 1, -1
+      dp = dp*zeta + p
+      p = p*zeta + self%res(:, n)
+    end do
+    h = h + p/f
+    dzeta = omega*cmplx(2.0_wp, omega*self%beta, wp)/(f*f*self%omega_d**2)
+    dh = dh + dp*dzeta/f - p*cmplx(0.0_wp, self%beta, wp)/(f*f)
+  end subroutine add_residual
+
+  !> Direct solves of D(omega) q = e_E, e_g (and s for the stress derivative).
+  subroutine direct_receptances(self, omega, deriv, r, error)
+    class(blade_type), intent(in) :: self
+    real(wp), intent(in) :: omega
+    logical, intent(in) :: deriv
+    type(receptances_type), intent(out) :: r
+    type(error_type), allocatable, intent(out) :: error
+    complex(wp), allocatable :: b(:, :), q(:, :), s(:)
+    integer :: n, nrhs, g, e
+    n = self%ndof
+    g = self%gamma_dof
+    e = self%exc_dof
+    nrhs = 2
+    if (deriv .and. self%has_stress) nrhs = 3
+    allocate(b(n, nrhs), q(n, nrhs), source=(0.0_wp, 0.0_wp))
+    b(e, 1) = 1.0_wp
+    b(g, 2) = 1.0_wp
+    if (self%has_stress) then
+      s = cmplx(self%s_K - omega**2*self%s_M, 0.0_wp, wp)
+      if (nrhs == 3) b(:, 3) = s
+    end if
+    call dynamic_solve(omega, self%beta, self%K, self%Kb, self%M, self%Mb, self%C, self%Cb, &
+      & self%kd, b, q, error)
+    if (allocated(error)) then
+      error%message = error%message//" at "//ftoa(omega/(2*pi))//" Hz"
+      return
+    end if
+    r%gE = q(g, 1)
+    r%gg = q(g, 2)
+    r%EE = q(e, 1)
+    if (self%has_stress) then
+      r%sE = stress_of(q(:, 1), b(:, 1))
+      r%sg = stress_of(q(:, 2), b(:, 2))
+    end if
+    if (deriv) then
+      ! dH_ab = -q_a^T D' q_b with D' = -2 omega M + i C (D symmetric).
+      block
+        complex(wp), allocatable :: dq_e(:), dq_g(:)
+        dq_e = dprime(q(:, 1))
+        dq_g = dprime(q(:, 2))
+        r%dgE = -sum(q(:, 2)*dq_e)
+        r%dgg = -sum(q(:, 2)*dq_g)
+        r%dEE = -sum(q(:, 1)*dq_e)
+        if (self%has_stress) then
+          ! d(s^T D^-1 e_b) = s'^T q_b - (D^-1 s)^T D' q_b, s' = -2 omega s_M
+          r%dsE = -2*omega*sum(self%s_M*q(:, 1)) - sum(q(:, 3)*dq_e)
+          r%dsg = -2*omega*sum(self%s_M*q(:, 2)) - sum(q(:, 3)*dq_g)
+        end if
+      end block
+    end if
+
+  contains
+
+    !> (s_K - omega^2 s_M)^T q with s_K^T q = r_K^T K q and K q = (b + omega^2 M q - i omega C q)
+    !> (C explicit) or (b + omega^2 M q)/(1 + i omega beta).
+    complex(wp) function stress_of(x, rhs) result(sigma)
+      complex(wp), intent(in) :: x(:), rhs(:)
+      real(wp), allocatable :: xr(:), xi(:), mr(:), mi(:), cr(:), ci(:)
+      complex(wp), allocatable :: kx(:)
+      allocate(xr(n), xi(n), mr(n), mi(n))
+      xr = x%re
+      xi = x%im
+      call sym_matvec(self%M, self%Mb, self%kd, xr, mr)
+      call sym_matvec(self%M, self%Mb, self%kd, xi, mi)
+      kx = rhs + omega**2*cmplx(mr, mi, wp)
+      if (self%explicit_C) then
+        allocate(cr(n), ci(n))
+        call sym_matvec(self%C, self%Cb, self%kd, xr, cr)
+        call sym_matvec(self%C, self%Cb, self%kd, xi, ci)
+        kx = kx - cmplx(0.0_wp, omega, wp)*cmplx(cr, ci, wp)
+      else
+        kx = kx/cmplx(1.0_wp, omega*self%beta, wp)
+      end if
+      sigma = sum(self%r_K*kx) - omega**2*sum(self%s_M*x)
+    end function stress_of
+
+    function dprime(x) result(y)
+      complex(wp), intent(in) :: x(:)
+      complex(wp), allocatable :: y(:)
+      real(wp), allocatable :: xr(:), xi(:), mr(:), mi(:), cr(:), ci(:)
+      allocate(xr(n), xi(n), mr(n), mi(n), cr(n), ci(n))
+      xr = x%re
+      xi = x%im
+      call sym_matvec(self%M, self%Mb, self%kd, xr, mr)
+      call sym_matvec(self%M, self%Mb, self%kd, xi, mi)
+      if (self%explicit_C) then
+        call sym_matvec(self%C, self%Cb, self%kd, xr, cr)
+        call sym_matvec(self%C, self%Cb, self%kd, xi, ci)
+      else
+        call sym_matvec(self%K, self%Kb, self%kd, xr, cr)
+        call sym_matvec(self%K, self%Kb, self%kd, xi, ci)
+        cr = self%beta*cr
+        ci = self%beta*ci
+      end if
+      ! (-2 omega M + i C)(xr + i xi)
+      y = cmplx(-2*omega*mr - ci, -2*omega*mi + cr, wp)
+    end function dprime
+  end subroutine direct_receptances
+
+  !> The lowest size(f_hz) bare natural frequencies [Hz]; an error if more are asked than kept.
+  subroutine natural_frequencies(self, f_hz, error)
+    class(blade_type), intent(in) :: self
+    real(wp), intent(out) :: f_hz(:)
+    type(error_type), allocatable, intent(out) :: error
+    if (size(f_hz) < 1 .or. size(f_hz) > self%nmodes) then
+      call fatal_error(error, "the number of natural frequencies must be from 1 to "// &
+        & itoa(self%nmodes)//" (the modes computed)", UDMAP_EINPUT)
+      return
+    end if
+    f_hz = self%omega(1:size(f_hz))/(2*pi)
+  end subroutine natural_frequencies
+
+  !> Entries phi_g = phi(gamma_dof, 1) and phi_E = phi(exc_dof, 1) of the mass-normalised bare
+  !> first mode (the limit force needs |phi_E/phi_g|).
+  pure subroutine first_mode(self, phi_g, phi_E)
+    class(blade_type), intent(in) :: self
+    real(wp), intent(out) :: phi_g, phi_E
+    phi_g = self%phi(self%gamma_dof, 1)
+    phi_E = self%phi(self%exc_dof, 1)
+  end subroutine first_mode
+
+  !> Layer response to a unit force at E with damper stiffness k on gamma_P (Sherman-Morrison):
+  !> g~ = H_gE/(1 + k H_gg), s~ = H_sE - k H_sg g~, u~_E = H_EE - k H_gE g~.
+  !> The caller checks 1 + k H_gg /= 0 (zero only at an undamped natural frequency of the
+  !> blade with a real damper stiffness).
+  elemental subroutine layer_response(r, k, g, s, uE)
+    type(receptances_type), intent(in) :: r
+    complex(wp), intent(in) :: k
+    complex(wp), intent(out) :: g, s, uE
+    g = r%gE/(1.0_wp + k*r%gg)
+    s = r%sE - k*r%sg*g
+    uE = r%EE - k*r%gE*g
+  end subroutine layer_response
+
+  ! ------------------------------------------------------------------ setup
+
+  !> Bare modes, modal products and the moments of the series (matrices stored and checked).
+  subroutine setup(blade, error, kept_modes)
+    type(blade_type), intent(inout) :: blade
+    type(error_type), allocatable, intent(out) :: error
+    integer, intent(in), optional :: kept_modes
+    type(spd_factor_type) :: kf, mf
+    real(wp), allocatable :: lambda(:), phi(:, :), mrk(:), rk(:, :)
+    real(wp) :: sk, sm, pg, pe
+    integer :: n, nkeep, m
+
+    n = blade%ndof
+    nkeep = blade_kept_modes
+    if (n <= blade_full_modal_limit .or. .not.allocated(blade%Kb)) nkeep = n
+    if (present(kept_modes)) then
+      if (kept_modes < 1) then
+        call fatal_error(error, "kept_modes must be at least 1", UDMAP_EINPUT)
+        return
+      end if
+      nkeep = min(kept_modes, n)
+    end if
+    if (nkeep == n .and. .not.allocated(blade%K)) then
+      call fatal_error(error, "computing all modes needs ndof <= "//itoa(blade_dense_limit)// &
+        & " (kept_modes)", UDMAP_EINPUT)
+      return
+    end if
+
+    call spd_factor(blade%M, blade%Mb, blade%kd, "M", mf, error)
+    if (allocated(error)) return
+    call spd_factor(blade%K, blade%Kb, blade%kd, "K", kf, error)
+    if (allocated(error)) return
+
+    if (nkeep == n) then
+      call all_modes(blade%K, blade%M, blade_polish_modes, lambda, phi, error)
+      if (allocated(error)) return
+      blade%nfast = min(n, blade_fast_modes)
+      if (present(kept_modes)) blade%nfast = n
+    else
+      call lowest_modes(blade%K, blade%Kb, blade%M, blade%Mb, max(blade%kd, 0), kf, nkeep + 1, &
+        & lambda, phi, error)
+      if (allocated(error)) return
+      blade%nfast = nkeep
+    end if
+    if (.not.(lambda(1) > 0.0_wp)) then
+      call fatal_error(error, "the first natural frequency is not positive (K or M singular)", &
+        & UDMAP_EINPUT)
+      return
+    end if
+    blade%nmodes = nkeep
+    blade%w2 = lambda(1:nkeep)
+    blade%omega = sqrt(blade%w2)
+    blade%phi = phi(:, 1:nkeep)
+    blade%omega1 = blade%omega(1)
+    if (blade%explicit_C) then
+      blade%beta = 0.0_wp
+    else
+      blade%beta = 2*blade%zeta/blade%omega1
+    end if
+
+    if (blade%has_stress) then
+      allocate(blade%r_K(n), mrk(n), rk(n, 1))
+      call spd_solve(kf, blade%K, blade%Kb, reshape(blade%s_K, [n, 1]), rk, .true.)
+      blade%r_K = rk(:, 1)
+      call sym_matvec(blade%M, blade%Mb, max(blade%kd, 0), blade%r_K, mrk)
+    end if
+    allocate(blade%coef(8, nkeep))
+    do m = 1, nkeep
+      pg = blade%phi(blade%gamma_dof, m)
+      pe = blade%phi(blade%exc_dof, m)
+      sk = 0.0_wp
+      sm = 0.0_wp
+      if (blade%has_stress) then
+        sk = stress_dot(blade%s_K, blade%phi(:, m), mrk, blade%w2(m))
+        sm = dot_dd(blade%s_M, blade%phi(:, m))
+      end if
+      blade%coef(:, m) = [pg*pe, pg*pg, pe*pe, sk*pe, sm*pe, sk*pg, sm*pg, 0.0_wp]
+    end do
+
+    blade%nres = 0
+    blade%omega_d = 0.0_wp
+    blade%omega_fast_max = huge(1.0_wp)
+    if (blade%nfast < n .and. .not.blade%explicit_C) then
+      blade%nres = blade_residual_terms
+      if (blade%nmodes == n) then
+        blade%omega_d = blade%omega(blade%nfast+1)
+        call modal_moments(blade)
+      else
+        blade%omega_d = sqrt(lambda(nkeep+1))
+        call residual_moments(blade, kf)
+      end if
+      blade%omega_fast_max = 0.5_wp*blade%omega_d
+    end if
+  end subroutine setup
+
+  !> Scaled moments Rt_n = omega_d^(2n) R_n = sum_(r > nfast) c_r (w_d^2/w_r^2)^n / w_r^2 over the
+  !> computed modes (models with every mode computed; all terms positive-weighted, no cancellation).
+  subroutine modal_moments(blade)
+    type(blade_type), intent(inout) :: blade
+    real(wp) :: q, wd2
+    integer :: m, nn
+    wd2 = blade%omega_d**2
+    allocate(blade%res(8, blade%nres), source=0.0_wp)
+    do m = blade%nfast + 1, blade%nmodes
+      q = wd2/blade%w2(m)
+      do nn = 1, blade%nres
+        blade%res(:, nn) = blade%res(:, nn) + blade%coef(:, m)*(q**(nn-1)/blade%w2(m))
+      end do
+    end do
+  end subroutine modal_moments
+
+  !> Scaled moments Rt_n = omega_d^(2n) R_n of the dropped modes,
+  !> R_n,ab = a^T K^-1 (M K^-1)^n b - sum_kept (a.phi)(b.phi)/w^(2(n+1)), computed without the
+  !> cancellation of that difference: u_b^(0) = P K^-1 b, u_b^(k) = omega_d^2 P K^-1 M u_b^(k-1)
+  !> with P = I - Phi Phi^T M (projection off the kept modes, reapplied at every step), then
+  !> Rt_0 = a^T u_b^(0) and Rt_n = omega_d^2 u_a^(j)T M u_b^(k), j + k = n - 1.
+  subroutine residual_moments(blade, kf)
+    type(blade_type), intent(inout) :: blade
+    type(spd_factor_type), intent(in) :: kf
+    integer, parameter :: pair_a(7) = [1, 1, 2, 3, 4, 3, 4], pair_b(7) = [2, 1, 2, 2, 2, 1, 1]
+    real(wp), allocatable :: loads(:, :), u(:, :, :), w(:, :), mu(:)
+    real(wp) :: wd2
+    integer :: n, nl, kmax, k, l, c, nn, j, kk, ibdof(2)
+    n = blade%ndof
+    nl = 2
+    if (blade%has_stress) nl = 4
+    kmax = (blade%nres - 1)/2
+    ibdof = [blade%gamma_dof, blade%exc_dof]
+    wd2 = blade%omega_d**2
+    allocate(loads(n, nl), source=0.0_wp)
+    loads(blade%gamma_dof, 1) = 1.0_wp
+    loads(blade%exc_dof, 2) = 1.0_wp
+    if (blade%has_stress) then
+      loads(:, 3) = blade%s_K
+      loads(:, 4) = blade%s_M
+    end if
+    allocate(u(n, nl, 0:kmax), w(n, nl), mu(n))
+    call spd_solve(kf, blade%K, blade%Kb, loads, u(:, :, 0), .true.)
+    call project(u(:, :, 0))
+    do k = 1, kmax
+      do l = 1, nl
+        call sym_matvec(blade%M, blade%Mb, max(blade%kd, 0), u(:, l, k-1), w(:, l))
+      end do
+      call spd_solve(kf, blade%K, blade%Kb, w, u(:, :, k), .true.)
+      u(:, :, k) = wd2*u(:, :, k)
+      call project(u(:, :, k))
+    end do
+    allocate(blade%res(8, blade%nres), source=0.0_wp)
+    do c = 1, 7
+      if (pair_a(c) > nl) cycle
+      ! R_0 = b^T P K^-1 a: a component, not a product with the stiff stress row.
+      blade%res(c, 1) = u(ibdof(pair_b(c)), pair_a(c), 0)
+      do nn = 1, blade%nres - 1
+        j = (nn - 1)/2
+        kk = nn - 1 - j
+        call sym_matvec(blade%M, blade%Mb, max(blade%kd, 0), u(:, pair_b(c), kk), mu)
+        blade%res(c, nn+1) = wd2*dot_product(u(:, pair_a(c), j), mu)
+      end do
+    end do
+
+  contains
+
+    subroutine project(x)
+      real(wp), intent(inout) :: x(:, :)
+      real(wp), allocatable :: mx(:)
+      integer :: col
+      allocate(mx(n))
+      do col = 1, size(x, 2)
+        call sym_matvec(blade%M, blade%Mb, max(blade%kd, 0), x(:, col), mx)
+        x(:, col) = x(:, col) - matmul(blade%phi, matmul(mx, blade%phi))
+      end do
+    end subroutine project
+  end subroutine residual_moments
+
+  !> s_K^T phi for a mode (K phi = w2 M phi) in the better conditioned of two exact forms:
+  !> directly, or w2 phi^T M r_K with r_K = K^-1 s_K (low modes: s_K^T phi cancels digits).
+  !> Products in double-double; the form with the smaller sum of |terms| is taken.
+  pure function stress_dot(s_k, phi, mrk, w2) result(v)
+    real(wp), intent(in) :: s_k(:), phi(:), mrk(:), w2
+    real(wp) :: v
+    real(wp) :: a, b, ca, cb
+    a = dot_dd(s_k, phi)
+    ca = sum(abs(s_k*phi))
+    b = w2*dot_dd(mrk, phi)
+    cb = w2*sum(abs(mrk*phi))
+    ! Compare the conditioning sum |terms| / |sum|.
+    if (ca*abs(b) <= cb*abs(a)) then
+      v = a
+    else
+      v = b
+    end if
+  end function stress_dot
+
+  ! ------------------------------------------------------------------ import helpers
+
+  subroutine common_checks(n, gamma_dof, exc_dof, zeta, error, s_K, s_M)
+    integer, intent(in) :: n, gamma_dof, exc_dof
+    real(wp), intent(in) :: zeta
+    type(error_type), allocatable, intent(out) :: error
+    real(wp), intent(in), optional :: s_K(:), s_M(:)
+    if (gamma_dof < 1 .or. gamma_dof > n) then
+      call fatal_error(error, "gamma_dof must be a DOF number from 1 to "//itoa(n)//", got "// &
+        & itoa(gamma_dof), UDMAP_EINPUT)
+    else if (exc_dof < 1 .or. exc_dof > n) then
+      call fatal_error(error, "exc_dof must be a DOF number from 1 to "//itoa(n)//", got "// &
+        & itoa(exc_dof), UDMAP_EINPUT)
+    else if (.not.ieee_is_finite(zeta)) then
+      call fatal_error(error, "zeta must be a non-negative finite number", UDMAP_EINPUT)
+    else if (zeta < 0.0_wp) then
+      call fatal_error(error, "zeta must be a non-negative finite number", UDMAP_EINPUT)
+    end if
+    if (allocated(error)) return
+    if (present(s_K)) call check_row(s_K, "stress_K")
+    if (allocated(error)) return
+    if (present(s_M)) call check_row(s_M, "stress_M")
+
+  contains
+
+    subroutine check_row(s, name)
+      real(wp), intent(in) :: s(:)
+      character(len=*), intent(in) :: name
+      if (size(s) /= n) then
+        call fatal_error(error, name//" must have "//itoa(n)//" entries (one per DOF), got "// &
+          & itoa(size(s)), UDMAP_EINPUT)
+      else if (.not.all(ieee_is_finite(s))) then
+        call fatal_error(error, name//" has a non-finite entry", UDMAP_EINPUT)
+      end if
+    end subroutine check_row
+  end subroutine common_checks
+
+  !> Checks that `a` is finite and symmetric to symmetry_rtol, then symmetrises it.
+  subroutine check_symmetric(a, name, error)
+    real(wp), intent(inout) :: a(:, :)
+    character(len=*), intent(in) :: name
+    type(error_type), allocatable, intent(out) :: error
+    real(wp) :: amax
+    integer :: i, j
+    if (.not.all(ieee_is_finite(a))) then
+      call fatal_error(error, name//" has a non-finite entry", UDMAP_EINPUT)
+      return
+    end if
+    amax = maxval(abs(a))
+    do j = 1, size(a, 2)
+      do i = j + 1, size(a, 1)
+        if (abs(a(i, j) - a(j, i)) > symmetry_rtol*max(abs(a(i, j)), abs(a(j, i))) &
+            & + 1.0e-14_wp*amax) then
+          call fatal_error(error, name//" is not symmetric: entry ("//itoa(i)//", "//itoa(j)// &
+            & ") = "//ftoa(a(i, j))//" but ("//itoa(j)//", "//itoa(i)//") = "//ftoa(a(j, i)), &
+            & UDMAP_EINPUT)
+          return
+        end if
+        a(i, j) = 0.5_wp*(a(i, j) + a(j, i))
+        a(j, i) = a(i, j)
+      end do
+    end do
+  end subroutine check_symmetric
+
+  !> Symmetric band storage (kd+1, n) of a Matrix Market matrix, with the symmetry check.
+  subroutine mtx_to_sym_band(a, kd, name, ab, error)
+    type(mtx_type), intent(in) :: a
+    integer, intent(in) :: kd
+    character(len=*), intent(in) :: name
+    real(wp), allocatable, intent(out) :: ab(:, :)
+    type(error_type), allocatable, intent(out) :: error
+    real(wp), allocatable :: full(:, :)
+    real(wp) :: amax, up, lo
+    integer :: n, k, i, j
+    n = a%nrows
+    ! General band (2 kd + 1, n): full(kd+1+i-j, j) = a(i, j).
+    allocate(full(2*kd+1, n), source=0.0_wp)
+    do k = 1, size(a%val)
+      i = a%row(k)
+      j = a%col(k)
+      if (a%val(k) == 0.0_wp) cycle
+      full(kd+1+i-j, j) = full(kd+1+i-j, j) + a%val(k)
+      if (a%symmetric .and. i /= j) full(kd+1+j-i, i) = full(kd+1+j-i, i) + a%val(k)
+    end do
+    amax = maxval(abs(full))
+    allocate(ab(kd+1, n))
+    do j = 1, n
+      do i = max(1, j-kd), j
+        up = full(kd+1+i-j, j)
+        lo = full(kd+1+j-i, i)
+        if (abs(up - lo) > symmetry_rtol*max(abs(up), abs(lo)) + 1.0e-14_wp*amax) then
+          call fatal_error(error, name//" is not symmetric: entry ("//itoa(i)//", "//itoa(j)// &
+            & ") = "//ftoa(up)//" but ("//itoa(j)//", "//itoa(i)//") = "//ftoa(lo), UDMAP_EINPUT)
+          return
+        end if
+        ab(kd+1+i-j, j) = 0.5_wp*(up + lo)
+      end do
+    end do
+  end subroutine mtx_to_sym_band
+
+  !> Stores dense matrices, adding band storage when the bandwidth is narrow or ndof large.
+  subroutine store_dense(blade, mm, kk, cc)
+    type(blade_type), intent(inout) :: blade
+    real(wp), allocatable, intent(inout) :: mm(:, :), kk(:, :), cc(:, :)
+    integer :: n, kd
+    n = size(mm, 1)
+    blade%ndof = n
+    kd = max(dense_bandwidth(mm), dense_bandwidth(kk))
+    if (allocated(cc)) kd = max(kd, dense_bandwidth(cc))
+    if (4*(kd + 1) <= n .or. n > blade_dense_limit) then
+      blade%kd = kd
+      call dense_to_band(mm, kd, blade%Mb)
+      call dense_to_band(kk, kd, blade%Kb)
+      if (allocated(cc)) call dense_to_band(cc, kd, blade%Cb)
+    else
+      blade%kd = -1
+    end if
+    if (n <= blade_dense_limit) then
+      call move_alloc(mm, blade%M)
+      call move_alloc(kk, blade%K)
+      if (allocated(cc)) call move_alloc(cc, blade%C)
+    end if
+  end subroutine store_dense
+
+  subroutine finish_import(blade, gamma_dof, exc_dof, zeta, error, s_K, s_M, kept_modes)
+    type(blade_type), intent(inout) :: blade
+    integer, intent(in) :: gamma_dof, exc_dof
+    real(wp), intent(in) :: zeta
+    type(error_type), allocatable, intent(out) :: error
+    real(wp), intent(in), optional :: s_K(:), s_M(:)
+    integer, intent(in), optional :: kept_modes
+    blade%gamma_dof = gamma_dof
+    blade%exc_dof = exc_dof
+    blade%zeta = zeta
+    blade%explicit_C = allocated(blade%C) .or. allocated(blade%Cb)
+    blade%has_stress = present(s_K) .or. present(s_M)
+    if (blade%has_stress) then
+      allocate(blade%s_K(blade%ndof), blade%s_M(blade%ndof), source=0.0_wp)
+      if (present(s_K)) blade%s_K = s_K
+      if (present(s_M)) blade%s_M = s_M
+    end if
+    call setup(blade, error, kept_modes)
+  end subroutine finish_import
+
+  ! ------------------------------------------------------------------ small utilities
+
+  elemental logical function finite(z)
+    complex(wp), intent(in) :: z
+    finite = ieee_is_finite(z%re) .and. ieee_is_finite(z%im)
+  end function finite
+
+  pure function itoa(i) result(s)
+    integer, intent(in) :: i
+    character(len=:), allocatable :: s
+    character(len=24) :: buf
+    write(buf, fmt_i) i
+    s = trim(buf)
+  end function itoa
+
+  pure function ftoa(x) result(s)
+    real(wp), intent(in) :: x
+    character(len=:), allocatable :: s
+    character(len=32) :: buf
+    write(buf, '(g0.10)') x
+    s = trim(adjustl(buf))
+  end function ftoa
+end module udmap_blade

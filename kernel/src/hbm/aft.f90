@@ -1,0 +1,451 @@
+!> Alternating frequency-time evaluation of the damper moment (PHYSICS.md 6).
+!>
+!> gamma(tau) = Gamma_0 + Re(sum_h Gamma_h e^{i h tau}), tau = omega t. The element is driven
+!> along gamma(tau) with the loading history of PHYSICS.md 2.1 (virgin state, CF ramp, ramp to
+!> the waveform's maximum, then periods until the state repeats) and the Fourier coefficients of
+!> the steady M_r(tau) are returned: M_r = M_0 + Re(sum_h M_h e^{i h tau}).
+!>
+!> Two integrations of the last period:
+!> - exact (samples = 0): the path is split at the extrema of gamma(tau) (found as roots of
+!>   gamma'), every monotone stretch is traced in one call with its events; M_r is linear in
+!>   gamma between events, so the Fourier integral is done in closed form. No time step, no
+!>   sampling error: the result is exact to rounding for any H.
+!> - sampled (samples = N > 0): the classical AFT, N equally spaced instants, the element
+!>   advanced from sample to sample and a discrete Fourier transform (error O(1/N^2)).
+module udmap_aft
+  use udmap_kinds, only: wp, pi
+  use udmap_error, only: error_type, fatal_error, UDMAP_EINPUT
+  use udmap_hysteretic, only: hysteretic_element_type, event_list_type
+  implicit none
+  private
+  public :: aft_workspace_type, aft_moment, waveform_value, waveform_slope, waveform_extrema
+
+  !> Scratch storage reused between calls (one per caller; not shared between threads).
+  type :: aft_workspace_type
+    type(event_list_type) :: events
+    real(wp), allocatable :: bp_gamma(:), bp_M(:)   !< breakpoints of the current period
+    integer, allocatable :: bp_seg(:)               !< segment of each breakpoint
+    integer :: nbp = 0
+    class(hysteretic_element_type), allocatable :: start   !< state at the start of a period
+    integer :: calls = 0                            !< number of aft_moment calls (statistics)
+    logical :: lift_off = .false.                   !< a contact opened in the last call
+  end type aft_workspace_type
+
+  real(wp), parameter :: two_pi = 2.0_wp*pi
+
+contains
+
+  !> gamma(tau) for the coefficients G0 (static) and G(1:H).
+  pure real(wp) function waveform_value(G0, G, tau) result(val)
+    real(wp), intent(in) :: G0, tau
+    complex(wp), intent(in) :: G(:)
+    complex(wp) :: z, zh
+    integer :: h
+    z = cmplx(cos(tau), sin(tau), wp)
+    zh = (1.0_wp, 0.0_wp)
+    val = G0
+    do h = 1, size(G)
+      zh = zh*z
+      val = val + real(G(h)*zh, wp)
+    end do
+  end function waveform_value
+
+  !> d^order gamma / dtau^order at tau (order 1 or 2).
+  pure real(wp) function waveform_slope(G, tau, order) result(val)
+    complex(wp), intent(in) :: G(:)
+    real(wp), intent(in) :: tau
+    integer, intent(in) :: order
+    complex(wp) :: z, zh
+    integer :: h
+    z = cmplx(cos(tau), sin(tau), wp)
+    zh = (1.0_wp, 0.0_wp)
+    val = 0.0_wp
+    do h = 1, size(G)
+      zh = zh*z
+      val = val + real(G(h)*zh*cmplx(0.0_wp, real(h, wp), wp)**order, wp)
+    end do
+  end function waveform_slope
+
+  !> The extrema of gamma(tau) over one period, in order, starting at the global maximum:
+  !> tau(1) is the maximum, tau(2), ... alternate minimum/maximum, tau(n+1) = tau(1) + 2 pi.
+  !> n = 0 for a constant waveform.
+  pure subroutine waveform_extrema(G, tau, n)
+    complex(wp), intent(in) :: G(:)
+    real(wp), allocatable, intent(out) :: tau(:)
+    integer, intent(out) :: n
+    integer :: H, ns, j, k, imax, h1
+    real(wp), allocatable :: ts(:), ds(:), roots(:)
+    real(wp) :: a, b, fa, fb, x, fx, d2, best, v, scale, xn
+    H = size(G)
+    n = 0
+    scale = sum(abs(G))
+    if (scale <= 0.0_wp) then
+      allocate(tau(1))
+      tau = 0.0_wp
+      return
+    end if
+    ! only one harmonic present: extrema in closed form
+    h1 = 0
+    do k = 1, H
+      if (abs(G(k)) > 0.0_wp) then
+        if (h1 /= 0) then
+          h1 = -1
+          exit
+        end if
+        h1 = k
+      end if
+    end do
+    if (h1 > 0) then
+      n = 2*h1
+      allocate(tau(n+1))
+      do k = 1, n
+        tau(k) = (-atan2(aimag(G(h1)), real(G(h1), wp)) + (k - 1)*pi)/h1
+      end do
+      tau(n+1) = tau(1) + two_pi
+      return
+    end if
+    ! general waveform: sign changes of gamma' on a grid fine enough for H harmonics
+    ns = max(64, 16*H)
+    allocate(ts(0:ns), ds(0:ns), roots(ns))
+    do j = 0, ns
+      ts(j) = two_pi*j/ns
+      ds(j) = waveform_slope(G, ts(j), 1)
+    end do
+    ! zero counts as positive, so a touching zero (inflection) is not an extremum
+    do j = 0, ns - 1
+      if ((ds(j) >= 0.0_wp) .eqv. (ds(j+1) >= 0.0_wp)) cycle
+      a = ts(j); b = ts(j+1); fa = ds(j); fb = ds(j+1)
+      if (fa == 0.0_wp) then
+        x = a
+      else if (fb == 0.0_wp) then
+        x = b
+      else
+        ! safeguarded Newton on gamma' inside the bracket
+        x = a - fa*(b - a)/(fb - fa)
+        do k = 1, 100
+          fx = waveform_slope(G, x, 1)
+          if (abs(fx) <= 8.0_wp*epsilon(1.0_wp)*scale*H) exit
+          if ((fx > 0.0_wp) .eqv. (fa > 0.0_wp)) then
+            a = x; fa = fx
+          else
+            b = x; fb = fx
+          end if
+          d2 = waveform_slope(G, x, 2)
+          xn = 0.5_wp*(a + b)
+          if (d2 /= 0.0_wp) xn = x - fx/d2
+          if (.not.(xn > a .and. xn < b)) xn = 0.5_wp*(a + b)
+          if (xn == x .or. b - a <= 4.0_wp*epsilon(1.0_wp)*two_pi) exit
+          x = xn
+        end do
+      end if
+      if (x >= two_pi) x = x - two_pi
+      if (n > 0) then
+        if (abs(x - roots(n)) <= 4.0_wp*epsilon(1.0_wp)*two_pi .or. &
+            & abs(x - roots(1)) <= 4.0_wp*epsilon(1.0_wp)*two_pi) cycle
+      end if
+      n = n + 1
+      roots(n) = x
+    end do
+    if (n < 2) then
+      ! degenerate (extrema closer than the grid resolves): grid maximum and minimum
+      n = 2
+      roots(1) = ts(maxloc(waveform_grid(G, ts(0:ns-1)), 1) - 1)
+      roots(2) = ts(minloc(waveform_grid(G, ts(0:ns-1)), 1) - 1)
+    end if
+    call sort(roots(1:n))
+    ! start at the global maximum
+    imax = 1
+    best = -huge(1.0_wp)
+    do k = 1, n
+      v = waveform_value(0.0_wp, G, roots(k))
+      if (v > best) then
+        best = v
+        imax = k
+      end if
+    end do
+    allocate(tau(n+1))
+    do k = 1, n
+      j = imax + k - 1
+      if (j <= n) then
+        tau(k) = roots(j)
+      else
+        tau(k) = roots(j - n) + two_pi
+      end if
+    end do
+    tau(n+1) = tau(1) + two_pi
+  contains
+    pure function waveform_grid(G, t) result(v)
+      complex(wp), intent(in) :: G(:)
+      real(wp), intent(in) :: t(:)
+      real(wp) :: v(size(t))
+      integer :: i
+      do i = 1, size(t)
+        v(i) = waveform_value(0.0_wp, G, t(i))
+      end do
+    end function waveform_grid
+  end subroutine waveform_extrema
+
+  pure subroutine sort(x)
+    real(wp), intent(inout) :: x(:)
+    integer :: i, j
+    real(wp) :: t
+    do i = 2, size(x)
+      t = x(i)
+      j = i - 1
+      do while (j >= 1)
+        if (x(j) <= t) exit
+        x(j+1) = x(j)
+        j = j - 1
+      end do
+      x(j+1) = t
+    end do
+  end subroutine sort
+
+  !> The Fourier coefficients of the steady damper moment for gamma(tau) with coefficients
+  !> G0, G(1:H): M0 (static) and M(1:H). samples = 0: exact event-driven integration;
+  !> samples > 0: classical sampled AFT. The loop is repeated until the element state at the
+  !> start of successive periods agrees within loop_rtol (at least min_periods, at most
+  !> max_periods periods). gamma_max: the largest value of gamma(tau); periods: periods used.
+  subroutine aft_moment(element, ws, G0, G, samples, min_periods, max_periods, loop_rtol, &
+      & M0, M, error, gamma_max, periods)
+    class(hysteretic_element_type), intent(inout) :: element
+    type(aft_workspace_type), intent(inout) :: ws
+    real(wp), intent(in) :: G0
+    complex(wp), intent(in) :: G(:)
+    integer, intent(in) :: samples, min_periods, max_periods
+    real(wp), intent(in) :: loop_rtol
+    real(wp), intent(out) :: M0
+    complex(wp), intent(out) :: M(:)
+    type(error_type), allocatable, intent(out) :: error
+    real(wp), intent(out), optional :: gamma_max
+    integer, intent(out), optional :: periods
+    real(wp), allocatable :: tau(:), gam(:), Ms(:)
+    integer :: n, H, p, k, j, np
+    real(wp) :: Mr, kt, gmax
+    logical :: closed
+
+    H = size(G)
+    ws%calls = ws%calls + 1
+    M = (0.0_wp, 0.0_wp)
+    M0 = 0.0_wp
+    if (present(periods)) periods = 0
+    if (.not.(abs(G0) <= huge(1.0_wp)) .or. .not.all(abs(G) <= huge(1.0_wp))) then
+      call fatal_error(error, "aft: the waveform of gamma is not finite", UDMAP_EINPUT)
+      return
+    end if
+    if (.not.allocated(ws%start)) then
+      allocate(ws%start, mold=element)
+    else if (.not.same_type_as(ws%start, element)) then
+      deallocate(ws%start)
+      allocate(ws%start, mold=element)
+    end if
+    call waveform_extrema(G, tau, n)
+
+    ws%lift_off = .false.
+    call element%load(error)
+    if (allocated(error)) return
+    if (n == 0) then
+      ! constant gamma: the static moment only
+      call element%advance(G0, Mr, kt, error)
+      M0 = Mr
+      if (present(gamma_max)) gamma_max = G0
+      if (present(periods)) periods = 1
+      return
+    end if
+    gmax = G0 + waveform_value(0.0_wp, G, tau(1))
+    if (present(gamma_max)) gamma_max = gmax
+    ! history: ramp from 0 to the waveform's maximum
+    call element%advance(gmax, Mr, kt, error)
+    if (allocated(error)) return
+
+    if (samples > 0) then
+      ! classical AFT: N equally spaced instants from the maximum on
+      np = samples
+      allocate(gam(np), Ms(np))
+      do j = 1, np
+        gam(j) = G0 + waveform_value(0.0_wp, G, tau(1) + two_pi*j/np)
+      end do
+      do p = 1, max(1, max_periods)
+        call ws%start%copy_state(element)
+        do j = 1, np
+          call element%advance(gam(j), Ms(j), kt, error)
+          if (allocated(error)) return
+        end do
+        closed = element%same_state(ws%start, loop_rtol)
+        if (present(periods)) periods = p
+        if (p >= min_periods .and. closed) exit
+      end do
+      ws%lift_off = element%lifted()
+      M0 = sum(Ms)/np
+      do k = 1, H
+        M(k) = (0.0_wp, 0.0_wp)
+        do j = 1, np
+          M(k) = M(k) + Ms(j)*exp(cmplx(0.0_wp, -k*(tau(1) + two_pi*j/np), wp))
+        end do
+        M(k) = 2.0_wp*M(k)/np
+      end do
+      return
+    end if
+
+    ! exact: trace each monotone stretch between extrema, keeping the events
+    allocate(gam(n+1))
+    do k = 1, n + 1
+      gam(k) = G0 + waveform_value(0.0_wp, G, tau(k))
+    end do
+    gam(n+1) = gam(1)
+    do p = 1, max(1, max_periods)
+      call ws%start%copy_state(element)
+      ws%nbp = 0
+      call push_bp(ws, gam(1), element%moment(), 1)
+      do k = 1, n
+        ws%events%n = 0
+        call element%advance(gam(k+1), Mr, kt, error, ws%events)
+        if (allocated(error)) return
+        do j = 1, ws%events%n
+          call push_bp(ws, ws%events%gamma(j), ws%events%M(j), k)
+        end do
+        call push_bp(ws, gam(k+1), Mr, k)
+      end do
+      closed = element%same_state(ws%start, loop_rtol)
+      if (present(periods)) periods = p
+      if (p >= min_periods .and. closed) exit
+    end do
+    ws%lift_off = element%lifted()
+    call integrate_period(ws, G0, G, tau, gam, M0, M)
+  end subroutine aft_moment
+
+  pure subroutine push_bp(ws, g, Mr, seg)
+    type(aft_workspace_type), intent(inout) :: ws
+    real(wp), intent(in) :: g, Mr
+    integer, intent(in) :: seg
+    real(wp), allocatable :: t1(:), t2(:)
+    integer, allocatable :: t3(:)
+    if (.not.allocated(ws%bp_gamma)) then
+      allocate(ws%bp_gamma(64), ws%bp_M(64), ws%bp_seg(64))
+    else if (ws%nbp >= size(ws%bp_gamma)) then
+      allocate(t1(2*ws%nbp), t2(2*ws%nbp), t3(2*ws%nbp))
+      t1(1:ws%nbp) = ws%bp_gamma(1:ws%nbp)
+      t2(1:ws%nbp) = ws%bp_M(1:ws%nbp)
+      t3(1:ws%nbp) = ws%bp_seg(1:ws%nbp)
+      call move_alloc(t1, ws%bp_gamma)
+      call move_alloc(t2, ws%bp_M)
+      call move_alloc(t3, ws%bp_seg)
+    end if
+    ws%nbp = ws%nbp + 1
+    ws%bp_gamma(ws%nbp) = g
+    ws%bp_M(ws%nbp) = Mr
+    ws%bp_seg(ws%nbp) = seg
+  end subroutine push_bp
+
+  !> Closed-form Fourier integral of the piecewise-linear-in-gamma moment over the period.
+  pure subroutine integrate_period(ws, G0, G, tau, gam, M0, M)
+    type(aft_workspace_type), intent(in) :: ws
+    real(wp), intent(in) :: G0, tau(:), gam(:)
+    complex(wp), intent(in) :: G(:)
+    real(wp), intent(out) :: M0
+    complex(wp), intent(out) :: M(:)
+    integer :: H, i, k, seg, h1
+    real(wp) :: ta, tb, ga, gb, Ma, Mb, slope, c0
+    complex(wp) :: Pa(-2*size(G):size(G)), Pb(-2*size(G):size(G)), C(0:size(G))
+    complex(wp) :: acc
+    H = size(G)
+    C = (0.0_wp, 0.0_wp)
+    ta = tau(1)
+    call powers(ta, H, Pa)
+    do i = 2, ws%nbp
+      seg = ws%bp_seg(i)
+      ga = ws%bp_gamma(i-1); gb = ws%bp_gamma(i)
+      Ma = ws%bp_M(i-1); Mb = ws%bp_M(i)
+      if (i == ws%nbp .or. ws%bp_seg(min(i+1, ws%nbp)) /= seg) then
+        tb = tau(seg+1)   ! the extremum closing the segment
+      else
+        tb = solve_time(G0, G, gb, ta, tau(seg+1), gam(seg+1))
+      end if
+      call powers(tb, H, Pb)
+      if (gb /= ga) then
+        slope = (Mb - Ma)/(gb - ga)
+      else
+        slope = 0.0_wp
+      end if
+      c0 = Ma - slope*ga
+      do h1 = 0, H
+        ! int (c0 + slope*gamma(tau)) e^{-i h tau} dtau over [ta, tb]
+        acc = (c0 + slope*G0)*expint(-h1)
+        do k = 1, H
+          acc = acc + 0.5_wp*slope*(G(k)*expint(k - h1) + conjg(G(k))*expint(-k - h1))
+        end do
+        C(h1) = C(h1) + acc
+      end do
+      ta = tb
+      Pa = Pb
+    end do
+    M0 = real(C(0), wp)/(2.0_wp*pi)
+    M = C(1:H)/pi
+  contains
+    pure complex(wp) function expint(m)
+      integer, intent(in) :: m
+      if (m == 0) then
+        expint = cmplx(tb - ta, 0.0_wp, wp)
+      else
+        expint = (Pb(m) - Pa(m))/cmplx(0.0_wp, real(m, wp), wp)
+      end if
+    end function expint
+  end subroutine integrate_period
+
+  !> e^{i m t} for m = -2H..H.
+  pure subroutine powers(t, H, P)
+    real(wp), intent(in) :: t
+    integer, intent(in) :: H
+    complex(wp), intent(out) :: P(-2*H:H)
+    complex(wp) :: z
+    integer :: m
+    z = cmplx(cos(t), sin(t), wp)
+    P(0) = (1.0_wp, 0.0_wp)
+    do m = 1, H
+      P(m) = P(m-1)*z
+    end do
+    do m = 1, 2*H
+      P(-m) = P(-m+1)*conjg(z)
+    end do
+  end subroutine powers
+
+  !> The instant in [ta, tb] where the monotone waveform reaches gt (gb = gamma(tb)).
+  pure real(wp) function solve_time(G0, G, gt, ta, tb, gb) result(t)
+    real(wp), intent(in) :: G0, gt, ta, tb, gb
+    complex(wp), intent(in) :: G(:)
+    real(wp) :: a, b, fa, fb, ft, d, tn, tolf
+    integer :: it
+    a = ta; b = tb
+    fa = G0 + waveform_value(0.0_wp, G, a) - gt
+    fb = gb - gt
+    if (fa == 0.0_wp) then
+      t = a; return
+    end if
+    if (fb == 0.0_wp .or. (fa > 0.0_wp .eqv. fb > 0.0_wp)) then
+      ! rounding put g at (or just past) the end of the stretch
+      if (abs(fa) < abs(fb)) then
+        t = a
+      else
+        t = b
+      end if
+      return
+    end if
+    tolf = 4.0_wp*epsilon(1.0_wp)*(abs(G0) + sum(abs(G)) + abs(gt))
+    t = a - fa*(b - a)/(fb - fa)
+    do it = 1, 100
+      ft = G0 + waveform_value(0.0_wp, G, t) - gt
+      if (abs(ft) <= tolf) return
+      if ((ft > 0.0_wp) .eqv. (fa > 0.0_wp)) then
+        a = t; fa = ft
+      else
+        b = t; fb = ft
+      end if
+      d = waveform_slope(G, t, 1)
+      tn = 0.5_wp*(a + b)
+      if (d /= 0.0_wp) tn = t - ft/d
+      if (.not.(tn > a .and. tn < b)) tn = 0.5_wp*(a + b)
+      if (tn == t .or. b - a <= 2.0_wp*epsilon(1.0_wp)*max(abs(a), abs(b), 1.0_wp)) return
+      t = tn
+    end do
+  end function solve_time
+end module udmap_aft

@@ -1,0 +1,28 @@
+!> The mapping, in one place: a blade and a damper coupled over a band (model_type), the limit
+!> force (PHYSICS.md 5), the backbone and the peaks of the non-linear response (PHYSICS.md 4),
+!> the response at a given frequency, and the response curves by amplitude layered force
+!> mapping (PHYSICS.md 3).
+!>
+!>   call new_model(model, blade, damper, analysis, error)
+!>   call set_damper(model, other_damper, error)          ! after a change of damper parameters
+!>   call limit_force(model, F_lim, error)
+!>   call backbone_curve(model, gamma, F_bb, f_res, error)
+!>   call backbone(model, F_E, points, error)
+!>   call response(model, f_exc, F_E, points, error)
+!>   call response_curves(model, F_E, layers, curves, error)
+module udmap_model
+  use udmap_model_data, only: analysis_type, point_type, curve_type, model_type, new_model, &
+    & set_damper, limit_force, EIGEN_AUTO, EIGEN_DIRECT, EIGEN_MODAL, REGIME_STUCK, REGIME_PARTIAL_SLIP, &
+    & REGIME_FULL_SLIP, REGIME_LIMIT, BRANCH_LOWER, BRANCH_UPPER, BRANCH_TURNING
+  use udmap_backbone, only: backbone_curve, backbone
+  use udmap_response, only: response
+  use udmap_curves, only: response_curves
+  implicit none
+  private
+  public :: analysis_type, point_type, curve_type, model_type
+  public :: new_model, set_damper, limit_force, backbone_curve, backbone, response, &
+    & response_curves
+  public :: EIGEN_AUTO, EIGEN_DIRECT, EIGEN_MODAL
+  public :: REGIME_STUCK, REGIME_PARTIAL_SLIP, REGIME_FULL_SLIP, REGIME_LIMIT
+  public :: BRANCH_LOWER, BRANCH_UPPER, BRANCH_TURNING
+end module udmap_model

@@ -1,0 +1,169 @@
+/* The mapping section of the C API (wrappers/c/udmap.h): the one-DOF Jenkins oscillator of
+ * PHYSICS.md 8 built from Matrix Market files, its published peaks, the response at a
+ * frequency and the mapped curves checked against the scalar equation
+ * a |1 + k(a) H| = F |H| evaluated here in C complex arithmetic, and the statuses of bad
+ * calls. */
+#include <complex.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "udmap.h"
+
+static int failures = 0, passes = 0;
+static const double KT = 0.25, SLIP = 0.2, CV = 0.01;
+
+static void check(int ok, const char *name) {
+  if (ok) {
+    passes++;
+  } else {
+    failures++;
+    printf("FAIL %s\n", name);
+  }
+}
+
+static void check_close(double actual, double expected, double rtol, const char *name) {
+  int ok = fabs(actual - expected) <= rtol * fabs(expected);
+  if (!ok) printf("  got %.17g expected %.17g\n", actual, expected);
+  check(ok, name);
+}
+
+static double complex jenkins(double a) {
+  double a_s = SLIP / KT, beta;
+  if (a <= a_s) return KT;
+  beta = acos(1 - 2 * a_s / a);
+  return KT / M_PI * (beta - sin(2 * beta) / 2) + I * 4 * SLIP / (M_PI * a) * (1 - a_s / a);
+}
+
+/* relative residual of a |1 + k(a) H| = F |H| at omega [rad/s] */
+static double residual(double a, double omega, double F) {
+  double complex H = 1 / (1 - omega * omega + I * CV * omega);
+  return (a * cabs(1 + jenkins(a) * H) - F * cabs(H)) / (F * cabs(H));
+}
+
+static void write_mtx(const char *dir, const char *name, double value) {
+  char path[512];
+  FILE *f;
+  snprintf(path, sizeof path, "%s/%s", dir, name);
+  f = fopen(path, "w");
+  fprintf(f, "%%%%MatrixMarket matrix coordinate real symmetric\n1 1 1\n1 1 %.17g\n", value);
+  fclose(f);
+}
+
+int main(void) {
+  static const double published[3][3] = {
+      {0.05, 0.946956, 1.106824}, {0.1, 1.214018, 1.083677}, {0.3, 7.279801, 1.007341}};
+  char dir[] = "/tmp/udmap_model_api_XXXXXX", pM[600], pK[600], pC[600];
+  udmap_error err = udmap_new_error();
+  udmap_blade blade = NULL;
+  udmap_damper damper = NULL;
+  udmap_model model = NULL, none = NULL;
+  udmap_analysis analysis;
+  udmap_point points[3];
+  double forces[3], F_lim = 0, gam[2] = {1e-3, 1e3}, F_bb[2], f_res[2], worst = 0;
+  int status, i, j, n = 0;
+
+  if (!mkdtemp(dir)) return 1;
+  write_mtx(dir, "M.mtx", 1.0);
+  write_mtx(dir, "K.mtx", 1.0);
+  write_mtx(dir, "C.mtx", CV);
+  snprintf(pM, sizeof pM, "%s/M.mtx", dir);
+  snprintf(pK, sizeof pK, "%s/K.mtx", dir);
+  snprintf(pC, sizeof pC, "%s/C.mtx", dir);
+  status = udmap_new_blade_matrices(err, pM, pK, pC, 1, 1, NULL, NULL, 0.0, &blade);
+  check(status == UDMAP_OK, "matrices blade");
+  status = udmap_new_damper_jenkins(err, KT, SLIP, &damper);
+  check(status == UDMAP_OK, "jenkins damper");
+
+  udmap_analysis_defaults(&analysis);
+  check(analysis.grid_per_decade == 24 && analysis.rtol == 1e-12 && analysis.sigma_all == 80e6,
+        "analysis defaults");
+  status = udmap_new_model(err, blade, damper, &analysis, &model);
+  check(status == UDMAP_EINPUT && model == NULL, "band unset is an input error");
+  analysis.f_min = 0.8 / (2 * M_PI);
+  analysis.f_max = 1.4 / (2 * M_PI);
+  status = udmap_new_model(err, blade, damper, &analysis, &model);
+  check(status == UDMAP_OK && model != NULL, "model");
+
+  status = udmap_model_limit_force(err, model, &F_lim);
+  check_close(F_lim, 4 * SLIP / M_PI, 1e-14, "F_lim");
+
+  for (i = 0; i < 3; i++) forces[i] = published[i][0];
+  status = udmap_model_backbone(err, model, 3, forces, points);
+  check(status == UDMAP_OK, "backbone");
+  for (i = 0; i < 3; i++) {
+    check_close(points[i].gamma_P, published[i][1], 1e-6, "peak amplitude");
+    check_close(2 * M_PI * points[i].f_res, published[i][2], 1e-6, "peak omega");
+    check(points[i].nroots == 1 && points[i].roots[0] == points[i].gamma_P, "one root");
+    check(!points[i].unbounded, "bounded (explicit damping)");
+  }
+  check(points[0].regime == 2 && points[2].regime == 3 && !points[2].hcf_ok, "regimes");
+
+  status = udmap_model_backbone_curve(err, model, 2, gam, F_bb, f_res);
+  check(status == UDMAP_OK, "backbone curve");
+  check_close(2 * M_PI * f_res[0], sqrt(1.25), 1e-4, "stuck backbone frequency");
+  check_close(2 * M_PI * f_res[1], 1.0, 1e-4, "free backbone frequency");
+
+  status = udmap_model_response(err, model, 1.05 / (2 * M_PI), 3, forces, points);
+  check(status == UDMAP_OK, "response");
+  for (i = 0; i < 3; i++)
+    for (j = 0; j < points[i].nroots; j++)
+      worst = fmax(worst, fabs(residual(points[i].roots[j], 1.05, forces[i])));
+  check(worst < 1e-11, "response roots on the equation");
+
+  status = udmap_model_curves(err, model, 3, forces, 30);
+  check(status == UDMAP_OK, "curves");
+  worst = 0;
+  for (i = 0; i < 3; i++) {
+    double *f, *g, *s;
+    int *branch, *part, turning = 0;
+    status = udmap_model_curve_size(err, model, i, &n);
+    check(status == UDMAP_OK && n > 60, "curve size");
+    f = malloc(n * sizeof *f);
+    g = malloc(n * sizeof *g);
+    s = malloc(n * sizeof *s);
+    branch = malloc(n * sizeof *branch);
+    part = malloc(n * sizeof *part);
+    status = udmap_model_curve_get(err, model, i, n, f, g, s, branch, part);
+    check(status == UDMAP_OK, "curve get");
+    for (j = 0; j < n; j++) {
+      worst = fmax(worst, fabs(residual(g[j], 2 * M_PI * f[j], forces[i])));
+      turning += branch[j] == UDMAP_BRANCH_TURNING;
+    }
+    check(turning == 1, "one turning point per curve");
+    status = udmap_model_curve_get(err, model, i, n - 1, f, g, s, branch, part);
+    check(status == UDMAP_EINPUT, "curve get with a short buffer");
+    free(f); free(g); free(s); free(branch); free(part);
+  }
+  check(worst < 1e-9, "curve points on the equation");
+  status = udmap_model_curve_size(err, model, 3, &n);
+  check(status == UDMAP_EINPUT, "curve index out of range");
+
+  /* bad calls */
+  forces[1] = -1;
+  status = udmap_model_backbone(err, model, 3, forces, points);
+  {
+    char msg[512];
+    udmap_get_error(err, msg, sizeof msg);
+    check(status == UDMAP_EINPUT && strstr(msg, "F_E(2)") != NULL, "negative force named");
+  }
+  status = udmap_model_limit_force(err, none, &F_lim);
+  check(status == UDMAP_EINPUT, "NULL model");
+  status = udmap_model_response(err, model, 0.5, 1, forces, points);
+  check(status == UDMAP_EINPUT, "f_exc outside the band");
+
+  udmap_delete_model(&model);
+  check(model == NULL, "delete model");
+  udmap_delete_model(&model);
+  udmap_delete_damper(&damper);
+  udmap_delete_blade(&blade);
+  udmap_delete_error(&err);
+  unlink(pM);
+  unlink(pK);
+  unlink(pC);
+  rmdir(dir);
+  printf("%d passed, %d failed\n", passes, failures);
+  return failures ? 1 : 0;
+}

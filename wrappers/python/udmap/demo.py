@@ -1,0 +1,223 @@
+"""The main job (``make demo``, ``python3 -m udmap demo``): blade A with its damper, everything
+a designer needs from the mapping, written to ``out/demo/`` as PNG plots and CSV data, with a
+summary table on stdout.
+
+Files:
+  gg_design_diagram.png/.csv   peak stress vs proof force, F_lim, 0.5 F_lim, sigma_all marked
+  gamma_P_vs_F_E.png           peak platform rotation vs force (log-log), gamma_s, gamma_b marked
+  f_res_vs_F_E.png             resonance frequency vs force
+  response_curves.png/.csv     response curves for the demo forces over the band, with backbone
+  backbone.csv                 the peaks for the demo forces (the summary table)
+  backbone_curve.csv           F_bb(gamma) and its frequency
+  stiffness.png/.csv           k_Re, k_Im vs gamma (the damper table), gamma_b marked
+  summary.json                 the summary as JSON
+"""
+from __future__ import annotations
+
+import copy
+import csv
+import json
+import math
+from pathlib import Path
+
+import numpy as np
+
+from . import plots
+from .progress import Progress
+
+DEMO_FORCES = tuple(float(f) for f in range(1, 11))
+
+
+def _as_case(case):
+    from .case import Case, load_case, validate
+    if case is None:
+        return load_case(None)
+    if isinstance(case, Case):
+        return case
+    if isinstance(case, (str, Path)):
+        return load_case(case)
+    if isinstance(case, dict):
+        return validate(copy.deepcopy(case))
+    raise TypeError("run_demo: case must be a Case, a case dict, a path or None")
+
+
+def _write_csv(path: Path, header: list[str], rows, comment: str = "") -> None:
+    with open(path, "w", newline="") as fh:
+        if comment:
+            for line in comment.splitlines():
+                fh.write(f"# {line}\n")
+        w = csv.writer(fh)
+        w.writerow(header)
+        for row in rows:
+            w.writerow(["" if (v is None or (isinstance(v, float) and not math.isfinite(v)))
+                        else (repr(v) if isinstance(v, float) else v) for v in row])
+
+
+def _undamped_twin(case, damper):
+    """The same case without structural damping (zeta = 0), or None if the blade has an
+    explicit C or no damping already."""
+    from .case import build_blade, build_model
+    b = case.blade
+    if b.get("zeta", 0.0) == 0.0 or (b["kind"] == "matrices" and b.get("C")):
+        return None
+    twin = copy.deepcopy(case)
+    twin.blade["zeta"] = 0.0
+    blade0 = build_blade(twin)
+    return build_model(twin, blade0, damper), blade0
+
+
+def run_demo(case=None, outdir="out/demo", forces=DEMO_FORCES, quiet: bool = False) -> dict:
+    """Runs the demo on ``case`` (a Case, a case dict, a path, or None for the embedded blade
+    A) and writes the plots and CSV files into ``outdir``. Returns the summary as a dict."""
+    from .case import build_blade, build_damper, build_model
+    case = _as_case(case)
+    out = Path(outdir)
+    out.mkdir(parents=True, exist_ok=True)
+    a = case.analysis
+    forces = np.asarray(forces, dtype=float)
+
+    with Progress(7, "demo") as bar:
+        blade = build_blade(case)
+        damper = build_damper(case)
+        model = build_model(case, blade, damper)
+        F_lim = model.limit_force()
+        f1 = float(blade.natural_frequencies(1)[0])
+        bar.update()
+
+        # the design diagrams: peaks over a dense range of proof forces
+        F_grid = np.unique(np.concatenate([np.geomspace(1e-3 * F_lim, 1.2 * F_lim, 160),
+                                           np.linspace(0.01 * F_lim, 1.2 * F_lim, 120)]))
+        grid_pts = model.backbone(F_grid)
+        twin = _undamped_twin(case, damper)
+        grid0 = []
+        if twin is not None:
+            F0 = F_grid[F_grid < 0.995 * F_lim]
+            grid0 = twin[0].backbone(F0)
+        bar.update()
+
+        # the demo forces: peaks and response curves
+        points = model.backbone(forces)
+        bar.update()
+        curves = model.curves(forces, layers=a.get("layers", 200))
+        bar.update()
+
+        # the backbone line and the stiffness table
+        finite = [p["gamma_P"] for p in points if not p["unbounded"]]
+        g_top = 2 * max(finite) if finite else 10 * damper.gamma_b
+        g_low = damper.gamma_s if damper.gamma_s > 0 else 1e-2 * damper.gamma_b
+        g_line = np.geomspace(min(g_low, 0.3 * min(finite)) if finite else g_low, g_top, 240)
+        F_bb, f_bb = model.backbone_curve(g_line)
+        stuck_F, stuck_f = model.backbone_curve([1e-3 * g_low])
+        # G1: the base cycle reached at the peak (gamma_P = gamma_b); G2: F_E = 0.5 F_lim
+        F_G1 = float(model.backbone_curve([damper.gamma_b])[0][0])
+        G1_point, G2_point = model.backbone([F_G1, 0.5 * F_lim])
+        g_k = np.geomspace(1e-2 * damper.gamma_b, 1e2 * damper.gamma_b, 240)
+        k = np.asarray(damper.stiffness(g_k), dtype=complex)
+        bar.update()
+
+        # CSV
+        _write_csv(out / "gg_design_diagram.csv",
+                   ["F_E_N", "gamma_P_rad", "f_res_Hz", "sigma_a_Pa", "u_E_m", "k_re_Nm_per_rad",
+                    "k_im_Nm_per_rad", "regime", "hcf_ok", "gamma_P_zeta0_rad",
+                    "f_res_zeta0_Hz", "sigma_a_zeta0_Pa"],
+                   [[p["F_E"], p["gamma_P"], p["f_res"], p["sigma_a"], p["u_E"], p["k_re"],
+                     p["k_im"], p["regime"], int(p["hcf_ok"])] +
+                    ([grid0[i]["gamma_P"], grid0[i]["f_res"], grid0[i]["sigma_a"]]
+                     if i < len(grid0) else [None, None, None])
+                    for i, p in enumerate(grid_pts)],
+                   f"{case.name}: peaks of the non-linear response (backbone) vs proof force\n"
+                   f"F_lim = {F_lim!r} N, sigma_all = {a['sigma_all']!r} Pa; regime 0 stuck, "
+                   "1 partial slip, 2 full slip, 3 F_E >= F_lim; zeta0 columns: same blade "
+                   "without structural damping (empty where unbounded)")
+        _write_csv(out / "backbone.csv",
+                   ["F_E_N", "gamma_P_rad", "f_res_Hz", "sigma_a_Pa", "u_E_m", "k_re_Nm_per_rad",
+                    "k_im_Nm_per_rad", "regime", "regime_name", "hcf_ok", "unbounded", "roots_rad"],
+                   [[p["F_E"], p["gamma_P"], p["f_res"], p["sigma_a"], p["u_E"], p["k_re"],
+                     p["k_im"], p["regime"], p["regime_name"], int(p["hcf_ok"]),
+                     int(p["unbounded"]), " ".join(repr(r) for r in p["roots"])] for p in points],
+                   f"{case.name}: resonance peaks for the demo forces")
+        _write_csv(out / "response_curves.csv",
+                   ["F_E_N", "f_Hz", "gamma_P_rad", "sigma_a_Pa", "branch", "part"],
+                   [[c["F_E"], float(f), float(g), float(s), int(b), int(pt)]
+                    for c in curves for f, g, s, b, pt in
+                    zip(c["f"], c["gamma_P"], c["sigma_a"], c["branch"], c["part"])],
+                   "non-linear response curves by amplitude layered force mapping, path order;\n"
+                   "branch 0 below the layer's peak frequency, 1 above, 2 on the backbone; "
+                   "part 1 main curve, 2... detached parts")
+        _write_csv(out / "backbone_curve.csv", ["gamma_rad", "F_bb_N", "f_res_Hz"],
+                   zip(g_line.tolist(), F_bb.tolist(), f_bb.tolist()),
+                   "backbone: F_bb(gamma) = gamma / max_f |g~(f; gamma)| and the peak frequency")
+        _write_csv(out / "stiffness.csv", ["gamma_rad", "k_re_Nm_per_rad", "k_im_Nm_per_rad"],
+                   zip(g_k.tolist(), k.real.tolist(), k.imag.tolist()),
+                   f"damper complex stiffness (first harmonic); gamma_b = {damper.gamma_b!r} rad, "
+                   f"gamma_s = {damper.gamma_s!r} rad, M_max = {damper.M_max!r} N m, "
+                   f"M_min = {damper.M_min!r} N m, lift_off = {bool(damper.lift_off)}")
+        bar.update()
+
+        # plots
+        ok = [not p["unbounded"] for p in grid_pts]
+        F_ok = F_grid[ok]
+        sel0 = [p for p in grid0 if not p["unbounded"]]
+        plots.gg_diagram(F_ok, [p["sigma_a"] for p, o in zip(grid_pts, ok) if o], F_lim,
+                         a["sigma_all"], out / "gg_design_diagram.png",
+                         zeta=case.blade.get("zeta"),
+                         F_E_undamped=[p["F_E"] for p in sel0] if sel0 else None,
+                         sigma_a_undamped=[p["sigma_a"] for p in sel0] if sel0 else None,
+                         F_marked=[p["F_E"] for p in points if not p["unbounded"]],
+                         sigma_marked=[p["sigma_a"] for p in points if not p["unbounded"]],
+                         G1=(G1_point["F_E"], G1_point["sigma_a"]),
+                         G2=(G2_point["F_E"], G2_point["sigma_a"]))
+        plots.gamma_vs_force(F_ok, [p["gamma_P"] for p, o in zip(grid_pts, ok) if o], F_lim,
+                             damper.gamma_s, damper.gamma_b, out / "gamma_P_vs_F_E.png",
+                             regime=[p["regime"] for p, o in zip(grid_pts, ok) if o],
+                             F_E_undamped=[p["F_E"] for p in sel0] if sel0 else None,
+                             gamma_undamped=[p["gamma_P"] for p in sel0] if sel0 else None)
+        plots.fres_vs_force(F_ok, [p["f_res"] for p, o in zip(grid_pts, ok) if o], F_lim,
+                            out / "f_res_vs_F_E.png", f_stuck=float(stuck_f[0]), f_bare=f1,
+                            F_E_undamped=[p["F_E"] for p in sel0] if sel0 else None,
+                            f_undamped=[p["f_res"] for p in sel0] if sel0 else None)
+        plots.response_curves(curves, points, a["f_min"], a["f_max"],
+                              out / "response_curves.png", backbone_curve=(g_line, f_bb))
+        plots.stiffness(g_k, k, damper.gamma_b, out / "stiffness.png", gamma_s=damper.gamma_s)
+        bar.update()
+
+    summary = {"case": case.name, "F_lim": F_lim, "gamma_b": damper.gamma_b,
+               "gamma_s": damper.gamma_s, "M_max": damper.M_max, "M_min": damper.M_min,
+               "f1_bare": f1, "f_stuck": float(stuck_f[0]), "lift_off": bool(damper.lift_off),
+               "sigma_all": a["sigma_all"],
+               "G1": {"F_E": G1_point["F_E"], "gamma_P": G1_point["gamma_P"],
+                      "sigma_a": G1_point["sigma_a"], "f_res": G1_point["f_res"]},
+               "G2": {"F_E": G2_point["F_E"], "gamma_P": G2_point["gamma_P"],
+                      "sigma_a": G2_point["sigma_a"], "f_res": G2_point["f_res"]},
+               "points": [{k: p[k] for k in ("F_E", "gamma_P", "f_res", "sigma_a", "u_E", "k_re",
+                                             "k_im", "regime", "regime_name", "hcf_ok",
+                                             "unbounded")} for p in points]}
+    (out / "summary.json").write_text(json.dumps(summary, indent=1, allow_nan=False) + "\n")
+    if not quiet:
+        print_summary(summary, out)
+    return summary
+
+
+def print_summary(summary: dict, out: Path) -> None:
+    """The short summary table of the demo."""
+    print(f"udmap demo: {summary['case']}")
+    print(f"  F_lim    = {summary['F_lim']:.4f} N    (0.5 F_lim = {0.5 * summary['F_lim']:.4f} N)")
+    print(f"  gamma_b  = {summary['gamma_b']:.4e} rad   gamma_s = {summary['gamma_s']:.4e} rad")
+    print(f"  f bare   = {summary['f1_bare']:.3f} Hz   f stuck = {summary['f_stuck']:.3f} Hz"
+          f"   lift-off: {'yes' if summary['lift_off'] else 'no'}")
+    for name in ("G1", "G2"):
+        g = summary[name]
+        s = "-" if g["sigma_a"] is None else f"{g['sigma_a'] / 1e6:.2f} MPa"
+        print(f"  {name}       : F_E = {g['F_E']:.4g} N, gamma_P = {g['gamma_P']:.4e} rad, "
+              f"sigma_a = {s}, f_res = {g['f_res']:.3f} Hz")
+    print(f"  {'F_E [N]':>8} {'gamma_P [rad]':>14} {'f_res [Hz]':>11} {'sigma_a [MPa]':>13} "
+          f"{'u_E [mm]':>9}  {'regime':<16} HCF")
+    for p in summary["points"]:
+        if p["unbounded"]:
+            print(f"  {p['F_E']:8.3g} {'unbounded':>14} {'-':>11} {'-':>13} {'-':>9}  "
+                  f"{p['regime_name']:<16} no")
+            continue
+        s = "-" if p["sigma_a"] is None else f"{p['sigma_a'] / 1e6:13.2f}"
+        print(f"  {p['F_E']:8.3g} {p['gamma_P']:14.4e} {p['f_res']:11.3f} {s:>13} "
+              f"{1e3 * p['u_E']:9.4f}  {p['regime_name']:<16} {'ok' if p['hcf_ok'] else 'no'}")
+    print(f"  written to {out}/")

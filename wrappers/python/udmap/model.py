@@ -1,0 +1,189 @@
+"""The mapping: a blade and a damper coupled over a band (PHYSICS.md 3-5).
+
+>>> model = Model(blade, damper, f_min=150.0, f_max=230.0)
+>>> model.limit_force()                      # F_lim [N]
+>>> model.backbone([1, 2, 5])                # peaks: list of dicts (JSON field names)
+>>> model.response(190.0, [1, 2, 5])         # at a given excitation frequency [Hz]
+>>> model.backbone_curve(np.geomspace(1e-5, 1e-2, 50))   # F_bb [N], f_res [Hz]
+>>> model.curves([1, 2, 5], layers=200)      # response curves by layered force mapping
+"""
+from __future__ import annotations
+
+import ctypes
+import math
+
+import numpy as np
+
+from ._lib import ErrorHandle, as_doubles, c_double_p, c_int_p, declare
+
+REGIME_NAMES = {0: "stuck", 1: "partial slip", 2: "full slip", 3: "at or above F_lim"}
+BRANCH_LOWER, BRANCH_UPPER, BRANCH_TURNING = 0, 1, 2
+MAX_ROOTS = 8
+UNBOUNDED_MESSAGE = ("without structural damping (zeta = 0) friction cannot bound the response "
+                     "to this force (F_E >= F_lim, or above the asymptote of the backbone): the "
+                     "amplitude is unbounded")
+
+
+class _Analysis(ctypes.Structure):
+    _fields_ = [("f_min", ctypes.c_double), ("f_max", ctypes.c_double),
+                ("sigma_all", ctypes.c_double), ("rtol", ctypes.c_double),
+                ("grid_per_decade", ctypes.c_int), ("eigen_method", ctypes.c_int),
+                ("dense_max", ctypes.c_int), ("sweep_points", ctypes.c_int)]
+
+
+class _Point(ctypes.Structure):
+    _fields_ = [("F_E", ctypes.c_double), ("gamma_P", ctypes.c_double),
+                ("f_res", ctypes.c_double), ("sigma_a", ctypes.c_double),
+                ("u_E", ctypes.c_double), ("k_re", ctypes.c_double), ("k_im", ctypes.c_double),
+                ("regime", ctypes.c_int), ("hcf_ok", ctypes.c_int), ("unbounded", ctypes.c_int),
+                ("nroots", ctypes.c_int), ("roots", ctypes.c_double * MAX_ROOTS)]
+
+
+_vp = ctypes.c_void_p
+_analysis_defaults = declare("udmap_analysis_defaults", [ctypes.POINTER(_Analysis)], None)
+_new_model = declare("udmap_new_model", [_vp, _vp, _vp, ctypes.POINTER(_Analysis),
+                                         ctypes.POINTER(_vp)])
+_delete_model = declare("udmap_delete_model", [ctypes.POINTER(_vp)], None)
+_set_damper = declare("udmap_model_set_damper", [_vp, _vp, _vp])
+_limit_force = declare("udmap_model_limit_force", [_vp, _vp, c_double_p])
+_backbone_curve = declare("udmap_model_backbone_curve",
+                          [_vp, _vp, ctypes.c_int, c_double_p, c_double_p, c_double_p])
+_backbone = declare("udmap_model_backbone",
+                    [_vp, _vp, ctypes.c_int, c_double_p, ctypes.POINTER(_Point)])
+_response = declare("udmap_model_response", [_vp, _vp, ctypes.c_double, ctypes.c_int,
+                                             c_double_p, ctypes.POINTER(_Point)])
+_curves = declare("udmap_model_curves", [_vp, _vp, ctypes.c_int, c_double_p, ctypes.c_int])
+_curve_size = declare("udmap_model_curve_size", [_vp, _vp, ctypes.c_int, c_int_p])
+_curve_get = declare("udmap_model_curve_get", [_vp, _vp, ctypes.c_int, ctypes.c_int, c_double_p,
+                                               c_double_p, c_double_p, c_int_p, c_int_p])
+_blade_get_size = declare("udmap_blade_get_size", [_vp, _vp, c_int_p, c_int_p])
+
+
+def _handle(obj):
+    """The kernel handle of a Blade or Damper object."""
+    for name in ("_handle", "_ptr"):
+        h = getattr(obj, name, None)
+        if h is not None:
+            return h
+    raise TypeError(f"{type(obj).__name__} has no kernel handle")
+
+
+def _forces(F_E) -> tuple[np.ndarray, ctypes.Array]:
+    arr, ptr = as_doubles(np.atleast_1d(np.asarray(F_E, dtype=float)).ravel())
+    return arr, ptr
+
+
+class Model:
+    """A blade and a damper coupled over the band [f_min, f_max] Hz.
+
+    The model borrows ``blade`` and ``damper`` (it keeps references to them) and caches what it
+    derives: the bare-blade data for good, the backbone table until the damper changes.
+
+    Settings: ``sigma_all`` allowable alternating stress [Pa]; ``rtol`` relative tolerance of
+    every peak and root refinement; ``grid_per_decade`` amplitude grid on which all roots are
+    bracketed; ``eigen_method`` 0 auto, 1 direct solver for every layer, 2 secular equation only;
+    ``dense_max`` largest ndof for the dense eigen-solver (ARPACK above); ``sweep_points``
+    bare-blade samples over the band for the response curves.
+    """
+
+    def __init__(self, blade, damper, f_min: float, f_max: float, sigma_all: float = 80e6,
+                 rtol: float = 1e-12, grid_per_decade: int = 24, eigen_method: int = 0,
+                 dense_max: int = 200, sweep_points: int = 400):
+        self._err = ErrorHandle()
+        self._ptr = _vp()
+        self.blade = blade
+        self.damper = damper
+        a = _Analysis()
+        _analysis_defaults(ctypes.byref(a))
+        a.f_min, a.f_max, a.sigma_all, a.rtol = f_min, f_max, sigma_all, rtol
+        a.grid_per_decade, a.eigen_method = int(grid_per_decade), int(eigen_method)
+        a.dense_max, a.sweep_points = int(dense_max), int(sweep_points)
+        self.f_min, self.f_max, self.sigma_all = float(f_min), float(f_max), float(sigma_all)
+        self._err.check(_new_model(self._err.ptr, _handle(blade), _handle(damper),
+                                   ctypes.byref(a), ctypes.byref(self._ptr)))
+        ndof, has_stress = ctypes.c_int(), ctypes.c_int()
+        self._err.check(_blade_get_size(self._err.ptr, _handle(blade), ctypes.byref(ndof),
+                                        ctypes.byref(has_stress)))
+        self.has_stress = bool(has_stress.value)
+
+    def __del__(self):
+        ptr = getattr(self, "_ptr", None)
+        if ptr is not None and ptr.value and _delete_model is not None:
+            _delete_model(ctypes.byref(ptr))
+
+    def set_damper(self, damper) -> None:
+        """Couples another damper (e.g. after a change of its parameters): the bare-blade data
+        are kept, the backbone table is rebuilt on next use."""
+        self._err.check(_set_damper(self._err.ptr, self._ptr, _handle(damper)))
+        self.damper = damper
+
+    def limit_force(self) -> float:
+        """F_lim = 2 Delta_M / (pi |phi_E/phi_g|) [N] (PHYSICS.md 5)."""
+        value = ctypes.c_double()
+        self._err.check(_limit_force(self._err.ptr, self._ptr, ctypes.byref(value)))
+        return value.value
+
+    def backbone_curve(self, gamma) -> tuple[np.ndarray, np.ndarray]:
+        """F_bb(gamma) [N] and the peak frequency [Hz] for amplitudes gamma [rad]."""
+        g, gp = as_doubles(np.atleast_1d(np.asarray(gamma, dtype=float)).ravel())
+        F_bb = np.zeros_like(g)
+        f_res = np.zeros_like(g)
+        self._err.check(_backbone_curve(self._err.ptr, self._ptr, len(g), gp,
+                                        F_bb.ctypes.data_as(c_double_p),
+                                        f_res.ctypes.data_as(c_double_p)))
+        return F_bb, f_res
+
+    def _points(self, fn, *args) -> list[dict]:
+        F, Fp = _forces(args[-1])
+        out = (_Point * max(len(F), 1))()
+        self._err.check(fn(self._err.ptr, self._ptr, *args[:-1], len(F), Fp, out))
+        return [self._point_dict(out[i]) for i in range(len(F))]
+
+    def _point_dict(self, p: _Point) -> dict:
+        d = {"F_E": p.F_E, "gamma_P": p.gamma_P, "f_res": p.f_res,
+             "sigma_a": p.sigma_a if self.has_stress else None, "u_E": p.u_E,
+             "k_re": p.k_re, "k_im": p.k_im, "regime": p.regime,
+             "regime_name": REGIME_NAMES.get(p.regime, ""), "hcf_ok": bool(p.hcf_ok),
+             "roots": [p.roots[i] for i in range(p.nroots)], "unbounded": bool(p.unbounded)}
+        if d["unbounded"]:
+            for key in ("gamma_P", "f_res", "sigma_a", "u_E", "k_re", "k_im"):
+                d[key] = None
+            d["roots"] = []
+            d["message"] = UNBOUNDED_MESSAGE
+        return d
+
+    def backbone(self, F_E) -> list[dict]:
+        """The peaks of the non-linear response for the forces F_E [N] (PHYSICS.md 4): per
+        force a dict with F_E, gamma_P [rad], f_res [Hz], sigma_a [Pa] (None without stress
+        rows), u_E [m], k_re, k_im [N m/rad], regime (0..3) and regime_name, hcf_ok, roots (every
+        gamma_P root, ascending) and unbounded (with a message; the numbers are then None)."""
+        return self._points(_backbone, F_E)
+
+    def response(self, f_exc: float, F_E) -> list[dict]:
+        """The response at the excitation frequency f_exc [Hz] (inside the band) to the forces
+        F_E [N]: same fields as :meth:`backbone`, f_res = f_exc."""
+        return self._points(_response, ctypes.c_double(f_exc), F_E)
+
+    def curves(self, F_E, layers: int | None = None) -> list[dict]:
+        """Response curves by amplitude layered force mapping (PHYSICS.md 3): per force a dict
+        with F_E and arrays f [Hz], gamma_P [rad], sigma_a [Pa], branch (0 below the layer's peak
+        frequency, 1 above, 2 turning point on the backbone) and part (1 main curve, 2... detached
+        parts), in path order. ``layers``: initial amplitude layers (default 200)."""
+        F, Fp = _forces(F_E)
+        layers = 200 if layers is None else int(layers)
+        self._err.check(_curves(self._err.ptr, self._ptr, len(F), Fp, layers))
+        result = []
+        for i in range(len(F)):
+            n = ctypes.c_int()
+            self._err.check(_curve_size(self._err.ptr, self._ptr, i, ctypes.byref(n)))
+            f, g, s = (np.zeros(n.value) for _ in range(3))
+            branch, part = np.zeros(n.value, dtype=np.intc), np.zeros(n.value, dtype=np.intc)
+            self._err.check(_curve_get(self._err.ptr, self._ptr, i, n.value,
+                                       f.ctypes.data_as(c_double_p), g.ctypes.data_as(c_double_p),
+                                       s.ctypes.data_as(c_double_p),
+                                       branch.ctypes.data_as(c_int_p),
+                                       part.ctypes.data_as(c_int_p)))
+            result.append({"F_E": float(F[i]), "f": f, "gamma_P": g,
+                           "sigma_a": s if self.has_stress else np.full(n.value, math.nan),
+                           "branch": branch.astype(int), "part": part.astype(int)})
+        return result

@@ -1,0 +1,180 @@
+"""Report plots of the mapping results (PNG, matplotlib without a display).
+
+Every function takes plain numbers and arrays (no kernel objects) and writes one figure:
+labelled axes with units, logarithmic where the quantity spans decades, the design limits
+marked. Frequencies in Hz, amplitudes in rad, stresses in MPa on the axes.
+"""
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+REGIME_COLORS = {0: "tab:blue", 1: "tab:orange", 2: "tab:green", 3: "tab:red"}
+REGIME_LABELS = {0: "stuck", 1: "partial slip", 2: "full slip", 3: r"$F_E \geq F_{lim}$"}
+
+
+def _finish(fig, ax, path: Path, title: str) -> Path:
+    ax.set_title(title, fontsize=11)
+    ax.grid(True, which="major", alpha=0.35)
+    ax.grid(True, which="minor", alpha=0.12)
+    fig.tight_layout()
+    path = Path(path)
+    fig.savefig(path, dpi=150)
+    plt.close(fig)
+    return path
+
+
+def _force_limits(ax, F_lim: float) -> None:
+    ax.axvline(F_lim, color="k", lw=1.2, ls="-")
+    ax.axvline(0.5 * F_lim, color="k", lw=1.0, ls="--")
+    ymax = ax.get_ylim()[1]
+    ax.text(F_lim, ymax, r" $F_{lim}$", va="top", ha="left", fontsize=9)
+    ax.text(0.5 * F_lim, ymax, r"$0.5\,F_{lim}$ ", va="top", ha="right", fontsize=9)
+
+
+def _regime_dots(ax, x, y, regime) -> None:
+    regime = np.asarray(regime)
+    for r, color in REGIME_COLORS.items():
+        sel = regime == r
+        if np.any(sel):
+            ax.plot(np.asarray(x)[sel], np.asarray(y)[sel], "o", ms=3.5, color=color,
+                    label=REGIME_LABELS[r], zorder=3)
+
+
+def gg_diagram(F_E, sigma_a, F_lim: float, sigma_all: float, path, *, regime=None,
+               F_E_undamped=None, sigma_a_undamped=None, zeta: float | None = None,
+               F_marked=None, sigma_marked=None, G1=None, G2=None) -> Path:
+    """The GG design diagram (paper Fig. 12b): peak alternating stress at the witness section
+    against the proof excitation force, with F_lim, 0.5 F_lim and sigma_all marked, and the
+    points G1 (the base cycle reached, gamma_P = gamma_b) and G2 (F_E = 0.5 F_lim) as
+    (F_E, sigma_a) pairs when given."""
+    fig, ax = plt.subplots(figsize=(7.2, 5.0))
+    F_E = np.asarray(F_E, float)
+    s = np.asarray(sigma_a, float) / 1e6
+    label = r"$\zeta$ = " + (f"{100 * zeta:.2g} %" if zeta is not None else "case")
+    ax.plot(F_E, s, "-", color="tab:blue", lw=1.8, label=label)
+    if F_E_undamped is not None:
+        ax.plot(F_E_undamped, np.asarray(sigma_a_undamped, float) / 1e6, "--", color="0.35",
+                lw=1.3, label=r"$\zeta$ = 0")
+    if F_marked is not None:
+        ax.plot(F_marked, np.asarray(sigma_marked, float) / 1e6, "o", color="tab:blue", ms=4)
+    for point, name in ((G1, "$G_1$"), (G2, "$G_2$")):
+        if point is not None:
+            ax.plot(point[0], point[1] / 1e6, "s", color="k", ms=6, zorder=4)
+            ax.annotate(name, (point[0], point[1] / 1e6), textcoords="offset points",
+                        xytext=(-4, 8), ha="right", fontsize=10)
+    ax.set_xlim(0, 1.2 * F_lim)
+    finite = s[np.isfinite(s) & (F_E <= 1.2 * F_lim)]
+    ytop = max(1.3 * sigma_all / 1e6, 1.05 * finite.max() if finite.size else 0)
+    ax.set_ylim(0, ytop)
+    ax.axhline(sigma_all / 1e6, color="tab:red", lw=1.2)
+    ax.text(1.19 * F_lim, sigma_all / 1e6, r"$\sigma_{a,all}$ = " + f"{sigma_all / 1e6:g} MPa",
+            color="tab:red", va="bottom", ha="right", fontsize=9)
+    ax.axvspan(0, 0.5 * F_lim, ymax=min(sigma_all / 1e6 / ytop, 1), color="tab:green",
+               alpha=0.07, lw=0)
+    _force_limits(ax, F_lim)
+    ax.set_xlabel(r"proof excitation force $F_E$ [N]")
+    ax.set_ylabel(r"peak alternating stress $\sigma_a$ at the airfoil root [MPa]")
+    ax.legend(loc="upper left", fontsize=9)
+    return _finish(fig, ax, path, "GG design diagram (damper performance, witness stress)")
+
+
+def gamma_vs_force(F_E, gamma_P, F_lim: float, gamma_s: float, gamma_b: float, path, *,
+                   regime=None, F_E_undamped=None, gamma_undamped=None) -> Path:
+    """Peak platform rotation against the proof force (paper Fig. 11b), log-log: the stuck
+    range is a straight line of slope 1."""
+    fig, ax = plt.subplots(figsize=(7.2, 5.0))
+    ax.loglog(F_E, gamma_P, "-", color="0.15", lw=0.8, label=r"$\zeta$ of the case")
+    if F_E_undamped is not None:
+        ax.loglog(F_E_undamped, gamma_undamped, "--", color="0.35", lw=1.3, label=r"$\zeta$ = 0")
+    if regime is not None:
+        _regime_dots(ax, F_E, gamma_P, regime)
+    for value, name, ls, va in ((gamma_b, r"$\gamma_b$ (base cycle)", "-.", "bottom"),
+                                (gamma_s, r"$\gamma_s$ (end of stick)", ":", "top")):
+        if value and value > 0:
+            ax.axhline(value, color="tab:purple", lw=1.0, ls=ls)
+            ax.text(ax.get_xlim()[1], value, name + " ", color="tab:purple", va=va, ha="right",
+                    fontsize=9)
+    _force_limits(ax, F_lim)
+    ax.set_xlabel(r"proof excitation force $F_E$ [N]")
+    ax.set_ylabel(r"peak platform rotation $\gamma_P$ [rad]")
+    ax.legend(loc="upper left", fontsize=8)
+    return _finish(fig, ax, path, r"Damper performance curve: $\gamma_P$ at resonance")
+
+
+def fres_vs_force(F_E, f_res, F_lim: float, path, *, f_stuck=None, f_bare=None,
+                  F_E_undamped=None, f_undamped=None) -> Path:
+    """Resonance frequency against the proof force (paper Fig. 11c): from the stuck-damper
+    frequency down towards the bare blade's as the damper slips."""
+    fig, ax = plt.subplots(figsize=(7.2, 5.0))
+    ax.semilogx(F_E, f_res, "-", color="tab:blue", lw=1.6, label=r"$\zeta$ of the case")
+    if F_E_undamped is not None:
+        ax.semilogx(F_E_undamped, f_undamped, "--", color="0.35", lw=1.3, label=r"$\zeta$ = 0")
+    for value, name, va in ((f_stuck, "stuck damper", "bottom"), (f_bare, "bare blade", "top")):
+        if value:
+            ax.axhline(value, color="tab:purple", lw=0.9, ls=":")
+            ax.text(ax.get_xlim()[0], value, " " + name + f" {value:.2f} Hz", color="tab:purple",
+                    va=va, fontsize=9)
+    _force_limits(ax, F_lim)
+    ax.set_xlabel(r"proof excitation force $F_E$ [N]")
+    ax.set_ylabel(r"resonance frequency $f_{res}$ [Hz]")
+    ax.legend(loc="center left", fontsize=8)
+    return _finish(fig, ax, path, "Resonance frequency of the damped blade")
+
+
+def response_curves(curves, backbone_points, f_min: float, f_max: float, path, *,
+                    backbone_curve=None) -> Path:
+    """Non-linear response curves gamma_P(f) for several forces by layered force mapping
+    (paper Figs. 7, 8b, 10a), with their peaks and the backbone through them."""
+    fig, ax = plt.subplots(figsize=(7.6, 5.4))
+    cmap = plt.get_cmap("viridis")
+    n = max(len(curves), 1)
+    for i, c in enumerate(curves):
+        color = cmap(i / max(n - 1, 1))
+        parts = np.asarray(c.get("part", np.ones(len(c["f"]), int)))
+        for j, p in enumerate(np.unique(parts)):
+            sel = parts == p
+            ax.semilogy(np.asarray(c["f"])[sel], np.asarray(c["gamma_P"])[sel], "-", color=color,
+                        lw=1.2, label=f"$F_E$ = {c['F_E']:g} N" if j == 0 else None)
+    if backbone_curve is not None:
+        g, f = backbone_curve
+        sel = (np.asarray(f) >= f_min) & (np.asarray(f) <= f_max)
+        ax.semilogy(np.asarray(f)[sel], np.asarray(g)[sel], "k--", lw=1.0, label="backbone")
+    bp = [p for p in backbone_points if not p.get("unbounded")]
+    if bp:
+        ax.semilogy([p["f_res"] for p in bp], [p["gamma_P"] for p in bp], "ko", ms=4,
+                    label="peaks (backbone)")
+    ax.set_xlim(f_min, f_max)
+    ax.set_xlabel("excitation frequency $f$ [Hz]")
+    ax.set_ylabel(r"platform rotation amplitude $\gamma_P$ [rad]")
+    ax.legend(loc="upper left", fontsize=8, ncol=2)
+    return _finish(fig, ax, path, "Non-linear response curves (amplitude layered force mapping)")
+
+
+def stiffness(gamma, k, gamma_b: float, path, *, gamma_s: float | None = None,
+              k_stuck: float | None = None) -> Path:
+    """The damper's complex stiffness k_Re + i k_Im against the platform rotation amplitude
+    (paper Fig. 4b), log amplitude axis, gamma_b (base cycle) marked."""
+    gamma = np.asarray(gamma, float)
+    k = np.asarray(k, complex)
+    fig, ax = plt.subplots(figsize=(7.2, 5.0))
+    ax.semilogx(gamma, k.real, "-", color="tab:blue", lw=1.8, label=r"$k_{Re}$")
+    ax.semilogx(gamma, k.imag, "-", color="tab:orange", lw=1.8, label=r"$k_{Im}$")
+    ax.axvline(gamma_b, color="tab:purple", lw=1.1, ls="-.")
+    ax.text(gamma_b, ax.get_ylim()[1], r" $\gamma_b$ (base cycle)", color="tab:purple",
+            va="top", fontsize=9)
+    if gamma_s and gamma_s > 0 and gamma_s < gamma_b * (1 - 1e-9):
+        ax.axvline(gamma_s, color="tab:purple", lw=1.0, ls=":")
+        ax.text(gamma_s, 0.9 * ax.get_ylim()[1], r" $\gamma_s$", color="tab:purple", va="top",
+                fontsize=9)
+    ax.set_xlabel(r"platform rotation amplitude $\gamma_P$ [rad]")
+    ax.set_ylabel(r"damper stiffness $k$ [N m/rad]")
+    ax.set_ylim(bottom=0)
+    ax.legend(loc="upper right", fontsize=9)
+    return _finish(fig, ax, path, "Damper complex stiffness (first harmonic)")
