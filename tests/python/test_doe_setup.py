@@ -1,6 +1,5 @@
 """Design of experiments, the parts before and after the kernel: parameter names and ranges on the
 case, sampling, the admissible-force solver, the output format, and resuming a cut file."""
-import json
 import math
 import subprocess
 import sys
@@ -172,23 +171,51 @@ def _stress(c, F_lim, calls):
     return sigma_at
 
 
-@pytest.mark.parametrize("c", [1e6, 2e7, 1e8, 1e9])
+@pytest.mark.parametrize("c", [1e6, 2e7, 1e8, 1e9, 1e11])
 def test_admissible_force_closed_form(c):
     # sigma = c F (1 + F/F_lim) = sigma_all  =>  F = F_lim (-1 + sqrt(1 + 4 sigma_all/(c F_lim)))/2
+    # c = 1e6: F_lim/2 is admissible; c = 1e11: the crossing lies below the smallest sample
     F_lim, s_all = 12.0, 80e6
     calls = []
     got = doe.admissible_force(_stress(c, F_lim, calls), F_lim, s_all)
     exact = F_lim * (-1.0 + math.sqrt(1.0 + 4.0 * s_all / (c * F_lim))) / 2.0
     assert got == pytest.approx(min(exact, 0.5 * F_lim), rel=1e-11)
-    assert calls[0] == 4 and sum(calls) <= 4 + 16
+    # one call for the samples, then single forces for Brent's method
+    assert calls[0] == doe.ADM_GRID and set(calls[1:]) <= {1} and len(calls) <= 1 + 12
+
+
+def test_admissible_force_in_the_stuck_range_is_the_proportional_one():
+    # sigma proportional to F (the stuck range) with the crossing far below every sample: the
+    # bracket (0, first sample] holds it, F_adm = sigma_all/c to rounding, never 0
+    F_lim, s_all, c = 10.0, 80e6, 3e12
+    got = doe.admissible_force(lambda fs: [c * F for F in fs], F_lim, s_all)
+    assert doe.admissible_grid(0.5 * F_lim)[0] > s_all / c
+    assert got == pytest.approx(s_all / c, rel=1e-14)
 
 
 def test_admissible_force_takes_the_highest_crossing():
-    # sigma rises above sigma_all, dips below it and rises again: the largest admissible F wins
+    # sigma = 1 + sin(F)/2 against sigma_all = 1 up to F_lim/2 = 2.5 pi: above it on (0, pi)
+    # and (2 pi, 2.5 pi], admissible on (pi, 2 pi): the largest admissible F is 2 pi
     s_all = 1.0
-    sigma = lambda F: 1.0 + 0.5 * math.sin(F)  # noqa: E731  crossings at F = k pi
-    got = doe.admissible_force(lambda fs: [sigma(F) for F in fs], 4 * math.pi, s_all)
+    got = doe.admissible_force(lambda fs: [1.0 + 0.5 * math.sin(F) for F in fs], 5 * math.pi,
+                               s_all)
     assert got == pytest.approx(2 * math.pi, rel=1e-12)
+
+
+def test_admissible_force_below_an_unbounded_range():
+    # zeta = 0 and a backbone asymptote below F_lim/2: sigma is inf from F = 3 on, so the
+    # admissible set ends there
+    got = doe.admissible_force(lambda fs: [1e7 * F if F < 3.0 else math.inf for F in fs],
+                               12.0, 80e6)
+    assert got == pytest.approx(3.0, rel=1e-12)
+    assert doe.admissible_force(lambda fs: [1.0] * len(fs), 0.0, 80e6) == 0.0
+
+
+def test_admissible_grid_is_geometric_and_ends_at_the_half_limit():
+    g = doe.admissible_grid(7.5)
+    assert len(g) == doe.ADM_GRID and g[-1] == 7.5
+    assert g[0] == pytest.approx(7.5 * 10 ** -doe.ADM_DECADES, rel=1e-14)
+    assert np.allclose(g[1:] / g[:-1], 10 ** (doe.ADM_DECADES / (doe.ADM_GRID - 1)), rtol=1e-14)
 
 
 # ------------------------------------------------------------------------------ output
@@ -226,10 +253,11 @@ def _fake_rows(spec, values, start):
         if d % 7 == 3:
             rows.append({"status": "physics", "message": f"jammed, design {d}, \"quoted\""})
             continue
+        forces = (1.0, 2.5)
         rows.append({"status": "ok", "message": "", "F_lim": 10 * mu, "gamma_b": 1e-4 * mu,
                      "M_max": mu, "M_min": -mu, "lift_off": d % 2 == 0, "F_adm": 4 * mu,
-                     "points": [{"gamma_P": 1e-5 * F, "f_res": 180.0 + F, "sigma_a": 1e7 * F,
-                                 "hcf_ok": F < 2, "unbounded": False} for F in (1.0, 2.5)]})
+                     "gamma_P": [1e-5 * F for F in forces], "f_res": [180.0 + F for F in forces],
+                     "sigma_a": [1e7 * F for F in forces], "hcf_ok": [F < 2 for F in forces]})
     return rows
 
 
@@ -283,6 +311,51 @@ def test_resume_after_a_cut_at_any_byte_gives_the_same_file(tmp_path):
     cut_file.write_bytes(data[:line_ends[10]])  # the header and 10 rows
     first, out = _write(cut_file, spec, values, 5, resume=True)
     assert first == 10 and out.counts["physics"] == sum(1 for d in range(10) if d % 7 == 3)
+
+
+def test_chunks_finished_out_of_order_survive_an_interruption_in_the_journal(tmp_path):
+    # chunks 0..7 of 5 designs; 3, 5, 6 finish early (held in memory and in the journal),
+    # then the run dies: a resumed run recovers them, computes only 0..2, 4, 7 and writes the
+    # file an uninterrupted run writes
+    from udmap.doe_exec import chunk_ranges
+    spec = _spec()
+    ps = doe.parse_vary(CASE, ["mu=0.1:0.6,neck_elements=2:9"])
+    values = doe.design_values(ps, doe.unit_sample("sobol", 40, 2, 0))
+    _write(tmp_path / "full.csv", spec, values, 5)
+    out = tmp_path / "cut.csv"
+    o = doe_io.Output(out, spec, values)
+    o.open()
+    for k in (3, 5, 6, 0):
+        s = 5 * k
+        text, _ = doe_io.format_rows(spec, s, values[s:s + 5], _fake_rows(spec, values[s:s + 5], s))
+        o.put(s, 5, text)
+    assert o.written == 5 and sorted(o._pending) == [15, 25, 30]
+    o.close()  # the interruption: nothing else reaches the disk
+    journal = tmp_path / "cut.csv.pending"
+    assert journal.exists()
+    # a record cut by the interruption at the end of the journal is ignored
+    with open(journal, "ab") as f:
+        f.write(b"#chunk 35 5 999\n35,0.1")
+    r = doe_io.Output(out, spec, values)
+    first = r.open(resume=True)
+    assert first == 5 and r.held == [(15, 5), (25, 10)]
+    todo = chunk_ranges(first, 40, r.held, 5)
+    assert todo == [(5, 10), (10, 15), (20, 25), (35, 40)]
+    assert r.counts["physics"] == sum(1 for d in list(range(5)) + list(range(15, 20)) +
+                                      list(range(25, 35)) if d % 7 == 3)
+    for s, e in todo[::-1]:
+        text, _ = doe_io.format_rows(spec, s, values[s:e], _fake_rows(spec, values[s:e], s))
+        r.put(s, e - s, text)
+    r.close()
+    assert out.read_bytes() == (tmp_path / "full.csv").read_bytes()
+    assert not journal.exists()
+
+
+def test_chunk_ranges_skip_held_designs():
+    from udmap.doe_exec import chunk_ranges
+    assert chunk_ranges(0, 10, [], 4) == [(0, 4), (4, 8), (8, 10)]
+    assert chunk_ranges(3, 20, [(5, 2), (12, 8)], 4) == [(3, 5), (7, 11), (11, 12)]
+    assert chunk_ranges(10, 10, [], 4) == []
 
 
 def test_resume_refuses_another_run_and_overwrite_needs_force(tmp_path):

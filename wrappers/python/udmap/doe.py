@@ -3,10 +3,11 @@
 A design is the case with some blade, damper or analysis parameters changed. The designs are
 sampled with :mod:`scipy.stats.qmc` (Sobol, Latin hypercube) or on a full grid, evaluated in
 chunks by a serial, process-pool, thread-pool or Dask executor, and streamed in design order to a
-CSV file (plus Parquet when pyarrow is installed). Every design is computed from scratch (fresh
-damper and model; the blade is shared only when no blade parameter varies, and a blade is never
-changed by an analysis), so a row does not depend on which worker computed it: serial, pooled and
-Dask runs give the same file byte for byte for the same seed.
+CSV file (plus Parquet when pyarrow is installed). A worker reuses what the varied parameters
+leave unchanged (the blade, the model's bare-blade data, a damper whose CF alone varies; see
+:class:`DesignContext`), and every design goes through the same kernel calls on the same state
+whichever worker computes it and whatever it computed before, so serial, pooled and Dask runs
+give the same file byte for byte for the same seed.
 
 Parameter names (``--vary NAME=LO:HI``): a dotted path into the case (``damper.mu``,
 ``blade.airfoil.h``, ``airfoil.h`` when the section is unambiguous, ``damper.flat_points[0][1]``)
@@ -29,6 +30,8 @@ import warnings
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Sequence
+
+import numpy as np
 
 from ._lib import InputError, PhysicsError, UdmapError
 from .case import Case, load_case, validate
@@ -274,47 +277,128 @@ def unit_sample(method: str, n: int, d: int, seed: int):
         return engine.random(n)
 
 
-def design_values(params: Sequence[Parameter], unit) -> list[tuple]:
+class DesignValues:
+    """The parameter values of every design, computed once from the unit-cube samples as one
+    float array (8 bytes per value, so millions of designs fit) and handed out as tuples (rounded
+    where the parameter is an integer): ``values[i]``, ``values[a:b]`` (a list), ``len``,
+    iteration."""
+
+    def __init__(self, params: Sequence[Parameter], unit):
+        unit = np.asarray(unit, dtype=float)
+        self.x = np.empty_like(unit)
+        for j, p in enumerate(params):
+            u = unit[:, j]
+            if p.scale == "log":
+                x = np.exp(math.log(p.lo) + u * (math.log(p.hi) - math.log(p.lo)))
+            else:
+                x = p.lo + u * (p.hi - p.lo)
+            self.x[:, j] = np.clip(x, p.lo, p.hi)
+        self._casts = [p.cast if p.integer else None for p in params]
+
+    def _rows(self, block) -> list[tuple]:
+        rows = block.tolist()
+        if any(self._casts):
+            casts = [c or float for c in self._casts]
+            rows = [[c(v) for c, v in zip(casts, r)] for r in rows]
+        return [tuple(r) for r in rows]
+
+    def __len__(self) -> int:
+        return self.x.shape[0]
+
+    def __getitem__(self, i):
+        if isinstance(i, slice):
+            return self._rows(self.x[i])
+        return self._rows(self.x[i:i + 1] if i >= 0 else self.x[i:len(self) + i + 1])[0]
+
+    def __iter__(self):
+        for start in range(0, len(self), 4096):
+            yield from self[start:start + 4096]
+
+
+def design_values(params: Sequence[Parameter], unit) -> DesignValues:
     """The parameter values of every design from unit-cube samples (rounded where integer)."""
-    import numpy as np
-    cols = []
-    for j, p in enumerate(params):
-        u = unit[:, j]
-        if p.scale == "log":
-            x = np.exp(math.log(p.lo) + u * (math.log(p.hi) - math.log(p.lo)))
-        else:
-            x = p.lo + u * (p.hi - p.lo)
-        x = np.clip(x, p.lo, p.hi)
-        cols.append([p.cast(v) for v in x.tolist()])
-    return list(zip(*cols))
+    return DesignValues(params, unit)
 
 
 # ------------------------------------------------------------------------------- one design
 
+#: The forces at which F_adm first samples the resonant stress: ADM_GRID forces spaced
+#: geometrically from 10^-ADM_DECADES F_lim/2 to F_lim/2 (one kernel call for all of them).
+ADM_GRID = 16
+ADM_DECADES = 3.0
+# Stands in for an unbounded stress (zeta = 0 at or above the backbone's asymptote) inside the
+# root finder, which needs finite values.
+_HUGE_STRESS = 1e300
+
+
+def admissible_grid(F_half: float, n: int = ADM_GRID, decades: float = ADM_DECADES):
+    """The forces ``F_half 10^(-decades (n-1-i)/(n-1))``, ``i = 0..n-1`` (the last one is
+    ``F_half`` exactly)."""
+    key = (n, decades)
+    unit = _UNIT_GRIDS.get(key)
+    if unit is None:
+        unit = _UNIT_GRIDS[key] = 10.0 ** (decades * (np.arange(n, dtype=float) - (n - 1))
+                                            / (n - 1))
+    grid = F_half * unit
+    grid[-1] = F_half
+    return grid
+
+
+_UNIT_GRIDS: dict = {}
+
+
 def admissible_force(sigma_at, F_lim: float, sigma_all: float, rtol: float = 1e-12,
-                     coarse: int = 4) -> float:
-    """``F_adm``: the largest ``F_E <= 0.5 F_lim`` with ``sigma_a(F_E) <= sigma_all``, solved
-    continuously. ``sigma_at(forces)`` returns the resonant stress amplitudes for a list of
-    forces. ``coarse`` equally spaced forces up to ``0.5 F_lim`` locate the highest crossing
-    (``sigma_a -> 0`` as ``F_E -> 0``), which Brent's method then refines."""
+                     n: int = ADM_GRID, decades: float = ADM_DECADES, sigma_one=None) -> float:
+    """``F_adm``: the largest ``F_E <= F_lim/2`` with ``sigma_a(F_E) <= sigma_all``, solved
+    continuously (INTERFACES.md "Design of experiments output").
+
+    ``sigma_at(forces)`` returns the resonant stress amplitudes of the backbone for an array of
+    forces (``inf`` where the response is unbounded); ``sigma_one(F)``, if given, the same for
+    one force (a cheaper call for the refinement). Semantics:
+
+    - ``F_lim/2`` when ``sigma_a(F_lim/2) <= sigma_all``: the friction limit governs.
+    - Otherwise the highest crossing ``sigma_a = sigma_all`` below ``F_lim/2``: ``sigma_a`` is
+      sampled at :func:`admissible_grid` forces, the highest admissible sample and the next one
+      bracket the crossing, and Brent's method refines it to ``rtol``. If ``sigma_a(F_E)`` is
+      not monotone (it can dip when the damper starts to slip or lifts off), this is the upper
+      end of the admissible set and some smaller forces may fail; ``hcf_ok@F`` says which.
+      A dip narrower than the grid spacing (a factor 10^(decades/(n-1))) can go unseen.
+    - In the stuck range ``sigma_a`` is proportional to ``F_E`` and tends to 0 with it, so small
+      forces are always admissible: when even the smallest sample fails, the bracket is
+      ``(0, grid[0]]``, on which the first secant step of Brent's method is already the root.
+      Hence ``F_adm > 0`` for every design the kernel can compute; it is 0 only if
+      ``F_lim <= 0``.
+    """
     from scipy.optimize import brentq
     F_half = 0.5 * F_lim
-    if not (math.isfinite(F_half) and F_half > 0):
+    if not math.isfinite(F_half):
         raise PhysicsError(f"F_lim = {F_lim}: no admissible force can be defined")
-    grid = [F_half * (i + 1) / coarse for i in range(coarse)]
-    sig = [float(s) for s in sigma_at(grid)]
+    if not F_half > 0:
+        return 0.0
+    grid = admissible_grid(F_half, n, decades)
+    sig = np.asarray(sigma_at(grid), dtype=float)
     if sig[-1] <= sigma_all:
         return F_half
-    k = max((i for i in range(coarse) if sig[i] <= sigma_all), default=-1)
-    lo, hi = (grid[k], grid[k + 1]) if k >= 0 else (0.0, grid[0])
-    known = {hi: sig[k + 1] - sigma_all, lo: (sig[k] if k >= 0 else 0.0) - sigma_all}
+    ok = np.flatnonzero(sig <= sigma_all)
+    if ok.size:
+        k = int(ok[-1])
+        lo, hi, f_lo, f_hi = grid[k], grid[k + 1], sig[k] - sigma_all, sig[k + 1] - sigma_all
+    else:
+        lo, hi, f_lo, f_hi = 0.0, grid[0], -sigma_all, sig[0] - sigma_all
+    f_hi = min(f_hi, _HUGE_STRESS)
+    known = {lo: f_lo, hi: f_hi}
+
+    if sigma_one is None:
+        def sigma_one(F):
+            return float(sigma_at(np.array([F]))[0])
 
     def excess(F):
-        if F in known:
-            return known[F]
-        return float(sigma_at([F])[0]) - sigma_all
+        value = known.get(F)
+        if value is None:
+            value = min(sigma_one(F), _HUGE_STRESS) - sigma_all
+        return value
 
-    return float(brentq(excess, lo, hi, xtol=1e-300, rtol=max(rtol, 4.5e-16)))
+    return float(brentq(excess, lo, hi, xtol=1e-300, rtol=max(rtol, 1e-15)))
 
 
 def _status_of(exc: BaseException) -> str:
@@ -328,9 +412,22 @@ def _status_of(exc: BaseException) -> str:
 
 
 class DesignContext:
-    """What one worker keeps between designs: the nominal case, the parameter paths, the forces,
-    and the blade when no blade parameter varies (built once, lazily; sharing it cannot change a
-    result since a model only reads its blade)."""
+    """What one worker keeps between the designs of a run, so that a design costs the kernel's
+    work and little else:
+
+    - the blade, built once when no blade parameter varies (a model only reads it);
+    - the model, when neither blade nor analysis parameters vary: one model for the run, which
+      keeps the bare-blade data and gets each design's damper by ``set_damper`` (its backbone
+      table is rebuilt from scratch for every damper);
+    - the damper, when ``CF`` is the only damper parameter that varies: traced once, rescaled
+      per design by ``set_CF`` (PHYSICS.md 2.3, exact);
+    - ctypes buffers for the backbone points, read through numpy (no dict per point).
+
+    A row depends only on the design's values: a shared model is first used once with a
+    fixed Jenkins damper, so that the one-off direct eigen-solve of its first backbone table
+    is behind it, and every design then goes through the same sequence of kernel calls on a
+    freshly rebuilt table, whichever worker and whichever design came before.
+    """
 
     def __init__(self, spec: dict):
         self.spec = spec
@@ -338,57 +435,110 @@ class DesignContext:
                          analysis=spec["analysis"], name=spec["name"],
                          base_dir=Path(spec["base_dir"]))
         self.paths = [tuple(p) for p in spec["paths"]]
-        self.forces = [float(f) for f in spec["forces"]]
-        self.blade_varies = any(p[0] == "blade" for p in self.paths)
+        self.forces = np.array(spec["forces"], dtype=float)
+        sections = {p[0] for p in self.paths}
+        self.blade_varies = "blade" in sections
+        self.analysis_varies = "analysis" in sections
         self.band_varies = any(p in (("analysis", "f_min"), ("analysis", "f_max"))
                                for p in self.paths)
-        self._blade = None
-        self._blade_error = None
+        damper_paths = [p for p in self.paths if p[0] == "damper"]
+        self.cf_index = None
+        if self.case.damper["kind"] == "asymmetric" and damper_paths == [("damper", "CF")]:
+            self.cf_index = self.paths.index(("damper", "CF"))
+        self.damper_varies = bool(damper_paths)
+        # Only damper parameters vary: the nominal case serves every design, and an asymmetric
+        # damper is built straight from its C parameter block.
+        self.damper_only = not (self.blade_varies or self.analysis_varies)
+        self._asym = None
+        if self.damper_only and self.damper_varies and self.cf_index is None and \
+                self.case.damper["kind"] == "asymmetric":
+            self._asym = _AsymmetricBuilder(self.case.damper, self.paths)
+        self._cache: dict = {}
+        self._model = None
+        self._points = _PointBuffer(max(len(self.forces), ADM_GRID))
 
-    def blade_for(self, case: Case):
+    # -- shared objects, built on first use; a failure is remembered and raised per design
+    def _shared(self, key, build):
+        entry = self._cache.get(key)
+        if entry is None:
+            try:
+                entry = (build(), None)
+            except UdmapError as exc:
+                entry = (None, exc)
+            self._cache[key] = entry
+        if entry[1] is not None:
+            raise entry[1]
+        return entry[0]
+
+    def _blade(self, case: Case):
         from .case import build_blade
         if self.blade_varies:
             return build_blade(case)
-        if self._blade_error is not None:
-            raise self._blade_error
-        if self._blade is None:
-            try:
-                self._blade = build_blade(self.case)
-            except UdmapError as exc:
-                self._blade_error = exc
-                raise
-        return self._blade
+        return self._shared("blade", lambda: build_blade(self.case))
+
+    def _damper(self, case: Case, values):
+        from .case import build_damper
+        if self.cf_index is not None:
+            damper = self._shared("damper", lambda: build_damper(self.case))
+            damper.set_CF(values[self.cf_index])
+            return damper
+        if not self.damper_varies:
+            return self._shared("damper", lambda: build_damper(self.case))
+        if self._asym is not None:
+            return self._asym.build(values)
+        return build_damper(case)
+
+    def _model_for(self, case: Case, blade, damper):
+        from .case import build_model
+        if self.blade_varies or self.analysis_varies:
+            return build_model(case, blade, damper)
+        if self._model is None:
+            from .damper import Damper
+            model = build_model(self.case, blade, Damper.jenkins(1.0, 1e-3))
+            try:  # the first backbone table of a model starts from a direct eigen-solve
+                model.backbone_curve([1e-4])
+            except UdmapError:
+                pass
+            self._model = model
+        self._model.set_damper(damper)
+        return self._model
 
     def evaluate(self, values: Sequence) -> dict:
-        """One design: a dict with the output fields (see :func:`udmap.doe_io.columns`)."""
-        from .case import build_damper, build_model
+        """One design: a dict with the fields of a row (see :func:`udmap.doe_io.row_cells`)."""
         row: dict = {"status": STATUS_OK, "message": ""}
         stage = ""
         try:
-            case = with_values(self.case, self.paths, values)
+            case = self.case if self.damper_only and self._asym is not None else \
+                with_values(self.case, self.paths, values)
             a = case.analysis
             if self.band_varies and not a["f_max"] > a["f_min"]:
                 raise InputError(f"analysis.f_max ({a['f_max']}) must exceed analysis.f_min "
                                  f"({a['f_min']})")
-            damper = build_damper(case)
-            row.update(gamma_b=damper.gamma_b, M_max=damper.M_max, M_min=damper.M_min,
-                       lift_off=bool(damper.lift_off))
-            blade = self.blade_for(case)
-            model = build_model(case, blade, damper)
+            damper = self._damper(case, values)
+            info = damper._info()
+            row["gamma_b"], row["M_max"], row["M_min"] = info.gamma_b, info.M_max, info.M_min
+            row["lift_off"] = bool(info.lift_off)
+            model = self._model_for(case, self._blade(case), damper)
             F_lim = model.limit_force()
             row["F_lim"] = F_lim
             notes = []
-            if self.forces:
-                points = model.backbone(self.forces)
-                row["points"] = points
-                for p in points:
-                    if p.get("unbounded"):
-                        notes.append(f"F_E = {p['F_E']:g} N >= F_lim: unbounded")
+            if len(self.forces):
+                p = self._points.backbone(model, self.forces)
+                unbounded = p["unbounded"] != 0
+                gamma_P, f_res = p["gamma_P"].tolist(), p["f_res"].tolist()
+                sigma_a = p["sigma_a"].tolist() if model.has_stress else [None] * len(p)
+                for i in np.flatnonzero(unbounded):
+                    gamma_P[i] = f_res[i] = sigma_a[i] = None
+                    notes.append(f"F_E = {self.spec['labels'][i]} N: unbounded (zeta = 0, "
+                                 "F_E at or above F_lim)")
+                row["gamma_P"], row["f_res"], row["sigma_a"] = gamma_P, f_res, sigma_a
+                row["hcf_ok"] = (p["hcf_ok"] != 0).tolist()
             stage = "F_adm: "
-            if getattr(model, "has_stress", True):
+            if model.has_stress:
+                pts = self._points
                 row["F_adm"] = admissible_force(
-                    lambda F: [p["sigma_a"] for p in model.backbone(F)], F_lim, a["sigma_all"],
-                    rtol=a["rtol"])
+                    lambda F: pts.sigma_a(model, F), F_lim, a["sigma_all"], rtol=a["rtol"],
+                    sigma_one=lambda F: pts.sigma_one(model, F))
             else:  # an imported blade without stress rows: only F_E <= F_lim/2 can be checked
                 row["F_adm"] = 0.5 * F_lim
                 notes.append("no stress rows: F_adm = F_lim/2, sigma_a not checked")
@@ -401,13 +551,94 @@ class DesignContext:
         return row
 
 
+class _AsymmetricBuilder:
+    """Builds the asymmetric damper of a design from the nominal C parameter block with the
+    varied entries replaced (what :func:`udmap.case.build_damper` passes to the kernel, without
+    the case dictionaries in between); one error handle serves all its dampers."""
+
+    def __init__(self, damper: dict, paths):
+        from ._lib import ErrorHandle
+        from .damper import _AsymmetricParams
+        (f1x, f1y), (f2x, f2y) = damper["flat_points"]
+        fields = {"flat1_x": f1x, "flat1_y": f1y, "flat2_x": f2x, "flat2_y": f2y,
+                  "curved_x": damper["curved_point"][0], "curved_y": damper["curved_point"][1]}
+        names = [name for name, _ in _AsymmetricParams._fields_]
+        self.base = [float(fields[n] if n in fields else damper[n]) for n in names]
+        self.slots = []
+        for path in paths:
+            if path[1] == "flat_points":
+                name = f"flat{path[2] + 1}_{'xy'[path[3]]}"
+            elif path[1] == "curved_point":
+                name = f"curved_{'xy'[path[2]]}"
+            else:
+                name = path[1]
+            self.slots.append(names.index(name))
+        self.err = ErrorHandle()
+
+    def build(self, values):
+        import ctypes
+        from .damper import Damper, _AsymmetricParams, _new_asym
+        block = list(self.base)
+        for slot, value in zip(self.slots, values):
+            block[slot] = float(value)
+        params = _AsymmetricParams(*block)
+        ptr = ctypes.c_void_p()
+        self.err.check(_new_asym(self.err.ptr, ctypes.byref(params), ctypes.byref(ptr)))
+        return Damper(ptr, self.err, "asymmetric")
+
+
+class _PointBuffer:
+    """Reusable arrays of kernel backbone points (``udmap_point``) seen as numpy record arrays,
+    so that a design's backbone costs one C call and no Python object per point."""
+
+    def __init__(self, size: int):
+        import ctypes
+        from .model import _Point, c_double_p
+        self._size = size
+        self._buf = (_Point * size)()
+        self._view = np.ctypeslib.as_array(self._buf)
+        self._forces = np.zeros(size)
+        self._forces_ptr = self._forces.ctypes.data_as(c_double_p)
+        self._one = _Point()
+        self._one_F = ctypes.c_double()
+        self._one_refs = (ctypes.byref(self._one_F), ctypes.byref(self._one))
+
+    def backbone(self, model, forces):
+        """The points of ``model`` for ``forces`` (a view valid until the next call)."""
+        from .model import _backbone
+        n = len(forces)
+        if n > self._size:
+            self.__init__(n)
+        self._forces[:n] = forces
+        status = _backbone(model._err.ptr, model._ptr, n, self._forces_ptr, self._buf)
+        if status:
+            model._err.check(status)
+        return self._view[:n]
+
+    def sigma_a(self, model, forces):
+        """The resonant stress amplitudes for ``forces`` (inf where unbounded)."""
+        p = self.backbone(model, forces)
+        return np.where(p["unbounded"] != 0, np.inf, p["sigma_a"])
+
+    def sigma_one(self, model, F: float) -> float:
+        """The resonant stress amplitude for one force (inf where unbounded): the same kernel
+        call as :meth:`sigma_a` with the least Python around it (the root finder's loop)."""
+        from .model import _backbone
+        self._one_F.value = F
+        status = _backbone(model._err.ptr, model._ptr, 1, *self._one_refs)
+        if status:
+            model._err.check(status)
+        return math.inf if self._one.unbounded else self._one.sigma_a
+
+
 _CONTEXTS: dict = {}
 
 
 def context_for(spec: dict) -> DesignContext:
-    """The worker's context for a run (one per run token and process, or per thread)."""
+    """The worker's context for a run (one per run token, process and thread: a forked worker
+    does not inherit its parent's)."""
     import threading
-    key = (spec["token"], threading.get_ident())
+    key = (spec["token"], os.getpid(), threading.get_ident())
     ctx = _CONTEXTS.get(key)
     if ctx is None:
         if len(_CONTEXTS) > 64:
@@ -515,17 +746,20 @@ def run_doe(case, vary, samples: int, out, *, method: str = "sobol", forces=None
     first = output.open(resume=resume, overwrite=overwrite)  # InputError before any work
     t0 = time.perf_counter()
     counts = dict(output.counts)
-    todo = samples - first
+    bounds = doe_exec.chunk_ranges(first, samples, output.held, chunk)
+    todo = sum(e - s for s, e in bounds)
+    ranges = ((s, values[s:e]) for s, e in bounds)  # the values of a chunk when it is sent
+    computed = 0
     interrupted = False
     try:
         if todo > 0:
-            ranges = [(s, values[s:min(s + chunk, samples)]) for s in range(first, samples, chunk)]
             label = "doe" if first == 0 else f"doe (resumed at {first})"
             with Progress(todo, label, stream=stream) as bar:
                 bar.enabled = bar.enabled and progress
                 with executor:
                     for start, n, text, chunk_counts in executor.run(spec, ranges):
                         output.put(start, n, text)
+                        computed += n
                         for k, v in chunk_counts.items():
                             counts[k] = counts.get(k, 0) + v
                         bar.update(n)
@@ -535,11 +769,12 @@ def run_doe(case, vary, samples: int, out, *, method: str = "sobol", forces=None
         output.close()
     seconds = time.perf_counter() - t0
     summary = {"out": str(output.path), "designs": samples, "written": output.written,
-               "computed": output.written - first, "resumed_at": first,
+               "computed": computed, "resumed_at": first,
+               "recovered": sum(n for _, n in output.held),
                "status": doe_io.split_counts(counts)[0], "seconds": seconds,
-               "designs_per_second": (output.written - first) / seconds if seconds > 0 else None,
+               "designs_per_second": computed / seconds if seconds > 0 and computed else None,
                "workers": executor.workers, "executor": executor.kind,
-               "interrupted": interrupted}
+               "startup_seconds": executor.startup_seconds, "interrupted": interrupted}
     if interrupted:
         return summary
     summary["parquet"] = output.finish()
@@ -610,15 +845,17 @@ def cmd_doe(args) -> None:
         resume=args.resume, overwrite=args.force, plot=args.plot)
     if summary["interrupted"]:
         print(f"udmap: interrupted: {summary['written']} of {summary['designs']} designs are in "
-              f"{summary['out']}; run again with --resume to continue", file=sys.stderr)
+              f"{summary['out']} (finished chunks waiting for an earlier one in "
+              f"{summary['out']}.pending); run again with --resume to continue", file=sys.stderr)
         raise SystemExit(130)
     if args.json:
         json.dump(summary, sys.stdout, indent=2, allow_nan=False)
         sys.stdout.write("\n")
         return
     rate = summary["designs_per_second"]
+    recovered = f", {summary['recovered']} recovered" if summary["recovered"] else ""
     print(f"{summary['designs']} designs in {summary['out']} "
-          f"({summary['computed']} computed in {summary['seconds']:.2f} s"
+          f"({summary['computed']} computed{recovered} in {summary['seconds']:.2f} s"
           + (f", {rate:.0f} designs/s, {summary['workers']} {summary['executor']} worker"
              + ("s" if summary["workers"] > 1 else "") if rate else "") + ")")
     print("status: " + ", ".join(f"{k} {v}" for k, v in sorted(summary["status"].items())))

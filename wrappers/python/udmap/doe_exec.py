@@ -22,6 +22,20 @@ def default_chunk(samples: int, workers: int) -> int:
     return max(1, min(256, math.ceil(samples / (8 * max(workers, 1)))))
 
 
+def chunk_ranges(first: int, samples: int, held, chunk: int) -> list[tuple[int, int]]:
+    """The ``(start, stop)`` ranges of at most ``chunk`` designs that cover designs
+    ``first .. samples-1`` except the ``(start, count)`` ranges ``held`` (already computed)."""
+    ranges = []
+    pos = first
+    for start, count in sorted(held) + [(samples, 0)]:
+        while pos < start:
+            stop = min(pos + chunk, start)
+            ranges.append((pos, stop))
+            pos = stop
+        pos = max(pos, start + count)
+    return ranges
+
+
 def _init_worker(parent: int) -> None:
     """Worker process set-up: Ctrl-C is handled by the parent, which stops the pool (workers
     must not die noisily), and a worker whose parent was killed exits instead of lingering."""
@@ -41,6 +55,7 @@ class SerialExecutor:
     """Runs the chunks in this process, one after the other."""
     kind = "serial"
     workers = 1
+    startup_seconds = 0.0
 
     def __enter__(self):
         return self
@@ -63,10 +78,12 @@ class PoolExecutor:
         self.threads = threads
         self.kind = "thread" if threads else "process"
         self.pool = None
+        self.startup_seconds = 0.0
 
     def __enter__(self):
         from concurrent.futures import ProcessPoolExecutor, ThreadPoolExecutor
         import multiprocessing
+        t0 = time.perf_counter()
         if self.threads:
             self.pool = ThreadPoolExecutor(max_workers=self.workers)
         else:
@@ -77,6 +94,7 @@ class PoolExecutor:
                                             mp_context=multiprocessing.get_context(method),
                                             initializer=_init_worker,
                                             initargs=(os.getpid(),))
+        self.startup_seconds = time.perf_counter() - t0
         return self
 
     def __exit__(self, *exc):
@@ -116,6 +134,7 @@ class DaskExecutor:
         self.client = None
         self.cluster = None
         self.workers = 1
+        self.startup_seconds = 0.0
         if address.startswith("local:"):
             try:
                 self.local = int(address[len("local:"):])
@@ -137,6 +156,7 @@ class DaskExecutor:
     def __enter__(self):
         import logging
         from distributed import Client, LocalCluster
+        t0 = time.perf_counter()
         if self.local is not None:
             self.cluster = LocalCluster(n_workers=self.local, threads_per_worker=1,
                                         processes=True, dashboard_address=None,
@@ -150,6 +170,7 @@ class DaskExecutor:
                                  f"{exc}") from None
         info = self.client.scheduler_info()
         self.workers = max(sum(w.get("nthreads", 1) for w in info["workers"].values()), 1)
+        self.startup_seconds = time.perf_counter() - t0
         return self
 
     def __exit__(self, *exc):

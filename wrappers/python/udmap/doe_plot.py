@@ -5,13 +5,26 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from .doe_io import read_csv
 
 
-def _column(header, rows, name):
+def _read_columns(path, names) -> list[list[str]]:
+    """The named columns of a doe CSV as lists of strings, read in one pass (only these
+    columns are kept, so millions of designs fit)."""
+    import csv
+    with open(path, newline="") as f:
+        reader = csv.reader(f)
+        header = next(reader)
+        index = [header.index(n) for n in names]
+        cols: list[list[str]] = [[] for _ in names]
+        for row in reader:
+            for col, j in zip(cols, index):
+                col.append(row[j])
+    return cols
+
+
+def _floats(col):
     import numpy as np
-    j = header.index(name)
-    return np.array([float(r[j]) if r[j] != "" else np.nan for r in rows])
+    return np.array([float(v) if v != "" else np.nan for v in col])
 
 
 def pareto_front(cf, f_adm):
@@ -41,12 +54,15 @@ def plot_doe(path, names, labels, paths=None, prefix=None) -> list[Path]:
 
     path = Path(path)
     prefix = Path(prefix) if prefix is not None else path.with_suffix("")
-    header, rows = read_csv(path)
-    n = len(rows)
-    status = np.array([r[header.index("status")] for r in rows])
+    wanted = ["status", "F_adm"] + list(names) + [f"hcf_ok@{label}" for label in labels]
+    cols = _read_columns(path, wanted)
+    status = np.array(cols[0])
+    n = len(status)
     ok = status == "ok"
-    f_adm = _column(header, rows, "F_adm")
-    values = {name: _column(header, rows, name) for name in names}
+    f_adm = _floats(cols[1])
+    values = {name: _floats(c) for name, c in zip(names, cols[2:2 + len(names)])}
+    passing = {label: sum(v == "true" for v in c)
+               for label, c in zip(labels, cols[2 + len(names):])}
     written = []
     size = max(1.0, 20.0 * min(1.0, 400.0 / max(n, 1)))
     vmin, vmax = (np.nanmin(f_adm[ok]), np.nanmax(f_adm[ok])) if ok.any() else (0.0, 1.0)
@@ -54,7 +70,8 @@ def plot_doe(path, names, labels, paths=None, prefix=None) -> list[Path]:
     # 1. Admissible force over the pairs of varied parameters.
     d = len(names)
     m = max(d - 1, 1)
-    fig, axes = plt.subplots(m, m, figsize=(3.2 * m + 1.2, 3.0 * m), squeeze=False)
+    fig, axes = plt.subplots(m, m, figsize=(3.2 * m + 2.2, 3.0 * m + 0.6), squeeze=False,
+                             layout="constrained")
     mappable = None
     pairs = [(i, j) for i in range(1, d) for j in range(i)] if d > 1 else [(0, None)]
     for ax in axes.ravel():
@@ -85,7 +102,8 @@ def plot_doe(path, names, labels, paths=None, prefix=None) -> list[Path]:
         fig.colorbar(mappable, ax=axes.ravel().tolist(), label="admissible force F_adm [N]")
         if (~ok).any():
             axes[0, 0].legend(fontsize=7, loc="best")
-    fig.suptitle(f"Admissible force over the design space ({ok.sum()} of {n} designs computed)")
+    fig.suptitle(f"Admissible force over the design space\n({ok.sum()} of {n} designs computed)",
+                 fontsize=10)
     out = prefix.with_name(prefix.name + "_pairs.png")
     fig.savefig(out, dpi=110)
     plt.close(fig)
@@ -123,8 +141,7 @@ def plot_doe(path, names, labels, paths=None, prefix=None) -> list[Path]:
         ax.step(np.r_[0.0, fa], np.r_[fa.size, fa.size - np.arange(1, fa.size + 1)] / n,
                 where="post", color="C0", label="F_E <= F_adm (continuous)")
     for k, label in enumerate(labels):
-        col = header.index(f"hcf_ok@{label}")
-        s = sum(r[col] == "true" for r in rows) / n
+        s = passing[label] / n
         ax.plot([float(label)], [s], "s", color="C1", ms=6,
                 label="hcf_ok at --forces" if k == 0 else None)
     ax.set_xlabel("excitation force F_E [N]")
