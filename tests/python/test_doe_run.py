@@ -166,6 +166,29 @@ def test_admissible_force_deep_in_the_stuck_range(tmp_path):
                                       rel=1e-9)
 
 
+def test_admissible_force_without_structural_damping(tmp_path):
+    # zeta = 0: a stuck damper bounds nothing, so even the smallest force drives the blade to
+    # the slip amplitude, where sigma_a is about 68 MPa on blade A: with sigma_all = 60 MPa no
+    # force is admissible (F_adm = 0, said in the message), with 80 MPa the crossing is found
+    out = tmp_path / "zeta0.csv"
+    run_doe(CASE, ["zeta=0:0.002", "sigma_all=6e7:8e7"], 4, out, method="grid", forces="1",
+            workers=1, progress=False)
+    rows = {(float(r["zeta"]), float(r["sigma_all"])): r for r in _rows(out)}
+    assert all(r["status"] == "ok" for r in rows.values())
+    none, some = rows[(0.0, 6e7)], rows[(0.0, 8e7)]
+    model = build_model(_by_hand({("blade", "zeta"): 0.0}))
+    assert float(none["F_adm"]) == 0.0 and "F_adm = 0" in none["message"]
+    assert model.backbone([1e-8])[0]["sigma_a"] > 6e7
+    F_adm = float(some["F_adm"])
+    assert 0 < F_adm < 1.0 and some["message"] == ""
+    assert model.backbone([F_adm])[0]["sigma_a"] == pytest.approx(8e7, rel=1e-8)
+    # with blade A's damping 60 MPa is reached while the damper is stuck, at the force that
+    # the stuck range's proportionality gives; 80 MPa in partial slip, at a larger force
+    stuck = build_model(CASE).backbone([1e-4])[0]["sigma_a"] / 1e-4
+    assert float(rows[(0.002, 6e7)]["F_adm"]) == pytest.approx(6e7 / stuck, rel=1e-9)
+    assert float(rows[(0.002, 8e7)]["F_adm"]) > 8e7 / stuck
+
+
 @pytest.mark.parametrize("vary,needle", [
     (["mu=0.2:3.0"], "damper jams"),  # blade A's damper jams above mu ~ 2.1
     (["beta_L_deg=4:14", "beta_R_deg=4:14"], "does not repeat"),  # shallow faces ratchet

@@ -193,6 +193,13 @@ def test_admissible_force_in_the_stuck_range_is_the_proportional_one():
     assert got == pytest.approx(s_all / c, rel=1e-14)
 
 
+def test_admissible_force_is_zero_when_small_forces_fail_too():
+    # zeta = 0: a stuck damper bounds nothing, the stress tends to a finite value as F -> 0
+    sigma = lambda fs: [67e6 + 1e7 * F for F in fs]  # noqa: E731
+    assert doe.admissible_force(sigma, 20.0, 60e6) == 0.0
+    assert doe.admissible_force(sigma, 20.0, 80e6) == pytest.approx(1.3, rel=1e-12)
+
+
 def test_admissible_force_takes_the_highest_crossing():
     # sigma = 1 + sin(F)/2 against sigma_all = 1 up to F_lim/2 = 2.5 pi: above it on (0, pi)
     # and (2 pi, 2.5 pi], admissible on (pi, 2 pi): the largest admissible F is 2 pi

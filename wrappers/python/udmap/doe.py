@@ -326,6 +326,9 @@ def design_values(params: Sequence[Parameter], unit) -> DesignValues:
 #: geometrically from 10^-ADM_DECADES F_lim/2 to F_lim/2 (one kernel call for all of them).
 ADM_GRID = 16
 ADM_DECADES = 3.0
+#: Below the smallest sample, the force (relative to it) at which F_adm checks that small
+#: forces are admissible at all.
+ADM_TINY = 1e-6
 # Stands in for an unbounded stress (zeta = 0 at or above the backbone's asymptote) inside the
 # root finder, which needs finite values.
 _HUGE_STRESS = 1e300
@@ -363,11 +366,15 @@ def admissible_force(sigma_at, F_lim: float, sigma_all: float, rtol: float = 1e-
       not monotone (it can dip when the damper starts to slip or lifts off), this is the upper
       end of the admissible set and some smaller forces may fail; ``hcf_ok@F`` says which.
       A dip narrower than the grid spacing (a factor 10^(decades/(n-1))) can go unseen.
-    - In the stuck range ``sigma_a`` is proportional to ``F_E`` and tends to 0 with it, so small
-      forces are always admissible: when even the smallest sample fails, the bracket is
-      ``(0, grid[0]]``, on which the first secant step of Brent's method is already the root.
-      Hence ``F_adm > 0`` for every design the kernel can compute; it is 0 only if
-      ``F_lim <= 0``.
+    - Below the smallest sample: with structural damping the stuck range's ``sigma_a`` is
+      proportional to ``F_E`` and tends to 0 with it, so small forces are admissible. When even
+      the smallest sample fails, ``sigma_a`` is evaluated ``ADM_TINY`` times lower: admissible
+      there, that force and the smallest sample bracket the crossing (for a proportional
+      ``sigma_a`` the first secant step of Brent's method is the root); still above
+      ``sigma_all``, nothing is admissible and ``F_adm = 0``. That happens without structural
+      damping (``zeta = 0``), where a stuck damper bounds nothing: the response to any small
+      force sits at the slip amplitude, with a stress that does not vanish with ``F_E``.
+      ``F_adm`` is 0 also when ``F_lim <= 0``.
     """
     from scipy.optimize import brentq
     F_half = 0.5 * F_lim
@@ -375,6 +382,9 @@ def admissible_force(sigma_at, F_lim: float, sigma_all: float, rtol: float = 1e-
         raise PhysicsError(f"F_lim = {F_lim}: no admissible force can be defined")
     if not F_half > 0:
         return 0.0
+    if sigma_one is None:
+        def sigma_one(F):
+            return float(sigma_at(np.array([F]))[0])
     grid = admissible_grid(F_half, n, decades)
     sig = np.asarray(sigma_at(grid), dtype=float)
     if sig[-1] <= sigma_all:
@@ -384,13 +394,13 @@ def admissible_force(sigma_at, F_lim: float, sigma_all: float, rtol: float = 1e-
         k = int(ok[-1])
         lo, hi, f_lo, f_hi = grid[k], grid[k + 1], sig[k] - sigma_all, sig[k + 1] - sigma_all
     else:
-        lo, hi, f_lo, f_hi = 0.0, grid[0], -sigma_all, sig[0] - sigma_all
+        lo = ADM_TINY * grid[0]
+        f_lo = min(sigma_one(lo), _HUGE_STRESS) - sigma_all
+        if f_lo > 0:
+            return 0.0
+        hi, f_hi = grid[0], sig[0] - sigma_all
     f_hi = min(f_hi, _HUGE_STRESS)
     known = {lo: f_lo, hi: f_hi}
-
-    if sigma_one is None:
-        def sigma_one(F):
-            return float(sigma_at(np.array([F]))[0])
 
     def excess(F):
         value = known.get(F)
@@ -454,7 +464,6 @@ class DesignContext:
                 self.case.damper["kind"] == "asymmetric":
             self._asym = _AsymmetricBuilder(self.case.damper, self.paths)
         self._cache: dict = {}
-        self._model = None
         self._points = _PointBuffer(max(len(self.forces), ADM_GRID))
 
     # -- shared objects, built on first use; a failure is remembered and raised per design
@@ -492,16 +501,19 @@ class DesignContext:
         from .case import build_model
         if self.blade_varies or self.analysis_varies:
             return build_model(case, blade, damper)
-        if self._model is None:
+
+        def primed():
             from .damper import Damper
             model = build_model(self.case, blade, Damper.jenkins(1.0, 1e-3))
             try:  # the first backbone table of a model starts from a direct eigen-solve
                 model.backbone_curve([1e-4])
             except UdmapError:
                 pass
-            self._model = model
-        self._model.set_damper(damper)
-        return self._model
+            return model
+
+        model = self._shared("model", primed)
+        model.set_damper(damper)
+        return model
 
     def evaluate(self, values: Sequence) -> dict:
         """One design: a dict with the fields of a row (see :func:`udmap.doe_io.row_cells`)."""
@@ -539,6 +551,9 @@ class DesignContext:
                 row["F_adm"] = admissible_force(
                     lambda F: pts.sigma_a(model, F), F_lim, a["sigma_all"], rtol=a["rtol"],
                     sigma_one=lambda F: pts.sigma_one(model, F))
+                if row["F_adm"] == 0:
+                    notes.append(f"F_adm = 0: sigma_a exceeds sigma_all down to F_E = "
+                                 f"{ADM_TINY * admissible_grid(0.5 * F_lim)[0]:.3g} N")
             else:  # an imported blade without stress rows: only F_E <= F_lim/2 can be checked
                 row["F_adm"] = 0.5 * F_lim
                 notes.append("no stress rows: F_adm = F_lim/2, sigma_a not checked")
