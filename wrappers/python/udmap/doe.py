@@ -541,8 +541,8 @@ class DesignContext:
                 sigma_a = p["sigma_a"].tolist() if model.has_stress else [None] * len(p)
                 for i in np.flatnonzero(unbounded):
                     gamma_P[i] = f_res[i] = sigma_a[i] = None
-                    notes.append(f"F_E = {self.spec['labels'][i]} N: unbounded (zeta = 0, "
-                                 "F_E at or above F_lim)")
+                    notes.append(f"F_E = {self.spec['labels'][i]} N: unbounded (zeta = 0 and "
+                                 "F_E at or above F_lim or the backbone's asymptote)")
                 row["gamma_P"], row["f_res"], row["sigma_a"] = gamma_P, f_res, sigma_a
                 row["hcf_ok"] = (p["hcf_ok"] != 0).tolist()
             stage = "F_adm: "
