@@ -13,8 +13,11 @@ Two design spaces:
 each serially (``_serial``), on all cores (``_processes<K>``) and, for gg10, on a Dask
 LocalCluster (``_dask_local<K>``). Records (INTERFACES.md "Benchmark output", method "doe"):
 seconds per design = wall clock of the run / designs (pool or cluster start-up included), with
-extras designs, cores, designs_per_second_per_core, startup_seconds (the Dask cluster's start)
-and designs_per_second_per_core_after_startup, and, for the serial runs, the split of a
+extras designs, cores, designs_per_second_per_core, designs_per_cpu_second (designs over the
+CPU time of this process and its finished children: the per-core rate that other load on a
+shared machine does not distort; the Dask scheduler's and workers' housekeeping included),
+startup_seconds (the Dask cluster's start) and designs_per_second_per_core_after_startup, and,
+for the serial runs, the split of a
 design's time into the kernel's C calls and the Python around them (kernel_seconds,
 python_seconds, measured in a separate run that times every C call). The errors compare the
 first designs' rows with the backbone of the same design at the tightest tolerance
@@ -25,6 +28,7 @@ from __future__ import annotations
 import argparse
 import csv
 import json
+import resource
 import statistics
 import sys
 import tempfile
@@ -53,11 +57,23 @@ _KERNEL_CALLS = [(_damper_mod, "_new_asym"), (_damper_mod, "_get_info"),
                  (_model_mod, "_new_model"), (_model_mod, "_delete_model")]
 
 
+def _cpu_seconds() -> float:
+    """CPU time of this process and of its finished children (pool workers, and the Dask
+    nannies with the workers they waited for)."""
+    total = 0.0
+    for who in (resource.RUSAGE_SELF, resource.RUSAGE_CHILDREN):
+        r = resource.getrusage(who)
+        total += r.ru_utime + r.ru_stime
+    return total
+
+
 def run(case, vary, designs, out, **options):
-    t0 = time.perf_counter()
+    """Seconds per design (wall clock) and the summary; the summary gets cpu_seconds too."""
+    c0, t0 = _cpu_seconds(), time.perf_counter()
     summary = doe.run_doe(case, vary, designs, out, forces=FORCES, overwrite=True,
                           progress=False, **options)
     seconds = time.perf_counter() - t0
+    summary["cpu_seconds"] = _cpu_seconds() - c0
     assert summary["written"] == designs, summary
     return seconds / designs, summary
 
@@ -129,15 +145,17 @@ def main() -> int:
                 n = args.designs * (1 if k == 1 else 2 * k)
                 if space == "gg10_liftoff":
                     n //= 4  # the kernel alone takes 5 times longer per design
-                samples, startup = [], []
+                samples, startup, cpu = [], [], []
                 for _ in range(args.repeats):
                     per_design, summary = run(case, vary, n, out, **options)
                     samples.append(per_design)
                     startup.append(summary["startup_seconds"])
+                    cpu.append(summary["cpu_seconds"])
                 err = accuracy(case, vary, out)
                 med = statistics.median(samples)
                 extra = {"designs": n, "cores": k, "design_space": " ".join(vary),
                          "designs_per_second_per_core": 1.0 / (med * k),
+                         "designs_per_cpu_second": n / statistics.median(cpu),
                          "startup_seconds": statistics.median(startup),
                          "designs_per_second_per_core_after_startup":
                              n / ((med * n - statistics.median(startup)) * k),
@@ -159,7 +177,8 @@ def main() -> int:
                          if extra["startup_seconds"] > 0.05 else "")
                 print(f"bench_doe: {space}_{name}: {n} designs, {1 / med:.0f} designs/s, "
                       f"{1 / (med * k):.0f} designs/s/core (best {1 / (min(samples) * k):.0f}; "
-                      f"goal {GOAL:.0f}){start}{split}", flush=True)
+                      f"goal {GOAL:.0f}), {extra['designs_per_cpu_second']:.0f} designs per "
+                      f"CPU second{start}{split}", flush=True)
     Path(args.json).write_text(json.dumps(records, indent=1, allow_nan=False) + "\n")
     return 0
 
