@@ -232,7 +232,7 @@ def _alive(pid):
 
 @pytest.mark.parametrize("workers", ["1", "2"])
 def test_kill_and_resume_give_the_uninterrupted_file(tmp_path, workers):
-    n = 1200
+    n = 800
     args = ["doe", "cases/blade_a.json", "--vary", ",".join(VARY), "--samples", str(n),
             "--forces", FORCES, "--chunk", "10", "--workers", workers]
     full, cut = tmp_path / "full.csv", tmp_path / "cut.csv"
