@@ -58,8 +58,11 @@ class Harness:
         self.version = version
         self.cmake = cmake
         self.libdir = self._libdir()
-        self.site = Path(sysconfig.get_path("purelib", vars={"base": str(self.prefix),
-                                                             "platbase": str(self.prefix)}))
+        # Where pip --prefix puts modules and scripts: the interpreter's default scheme (Debian's
+        # python3 uses prefix/local/..., other builds prefix/...).
+        scheme_vars = {"base": str(self.prefix), "platbase": str(self.prefix)}
+        self.site = Path(sysconfig.get_path("purelib", vars=scheme_vars))
+        self.scripts = Path(sysconfig.get_path("scripts", vars=scheme_vars))
 
     def _libdir(self) -> Path:
         for sub in ("lib", "lib64", "lib/x86_64-linux-gnu"):
@@ -76,7 +79,7 @@ class Harness:
             ":" + env["LD_LIBRARY_PATH"] if env.get("LD_LIBRARY_PATH") else "")
         env["PYTHONPATH"] = str(self.site)
         env["UDMAP_PREFIX"] = str(self.prefix)
-        env["PATH"] = str(self.prefix / "bin") + ":" + env.get("PATH", "")
+        env["PATH"] = str(self.scripts) + ":" + env.get("PATH", "")
         return env
 
     # ------------------------------------------------------------------ reference and checks
@@ -278,7 +281,7 @@ class Harness:
         """The pip-installed console script `udmap` gives the source tree's JSON."""
         env = self.env()
         env.pop("LD_LIBRARY_PATH", None)
-        script = self.prefix / "bin" / "udmap"
+        script = self.scripts / "udmap"
         self.expect_version(run([script, "--version"], env=env, cwd=self.work), "udmap --version")
         out = run([script, "backbone", SOURCE / "cases" / "blade_a.json", "--forces", FORCES,
                    "--json"], env=env, cwd=self.work)

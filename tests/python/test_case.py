@@ -140,3 +140,14 @@ def test_cli_bad_arguments_exit_2(args):
     r = _cli(*args)
     assert r.returncode == 2, (r.returncode, r.stderr)
     assert r.stdout == ""
+
+
+def test_numerical_settings_validated_and_passed():
+    data = copy.deepcopy(BLADE_A)
+    data["analysis"]["eigen_method"] = "secant"
+    with pytest.raises(InputError, match="analysis.eigen_method must be one of"):
+        validate(data)
+    data["analysis"]["eigen_method"] = "modal"
+    data["analysis"]["sweep_points"] = 1000
+    case = validate(data)
+    assert case.analysis["eigen_method"] == "modal" and case.analysis["dense_max"] == 200

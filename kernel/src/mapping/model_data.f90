@@ -172,36 +172,36 @@ contains
     character(len=32) :: buf
     associate(a => analysis)
       if (.not.(a%f_min > 0 .and. a%f_min < huge(1.0_wp))) then
-        call fatal_error(error, "analysis: f_min must be a positive number [Hz]", UDMAP_EINPUT)
+        call fatal_error(error, "analysis.f_min must be a positive number [Hz]", UDMAP_EINPUT)
         return
       end if
       if (.not.(a%f_max > a%f_min .and. a%f_max < huge(1.0_wp))) then
-        call fatal_error(error, "analysis: f_max must be a number above f_min [Hz]", UDMAP_EINPUT)
+        call fatal_error(error, "analysis.f_max must be a number above f_min [Hz]", UDMAP_EINPUT)
         return
       end if
       if (.not.(a%sigma_all > 0 .and. a%sigma_all < huge(1.0_wp))) then
-        call fatal_error(error, "analysis: sigma_all must be a positive number [Pa]", UDMAP_EINPUT)
+        call fatal_error(error, "analysis.sigma_all must be a positive number [Pa]", UDMAP_EINPUT)
         return
       end if
       if (.not.(a%rtol >= 1e-15_wp .and. a%rtol <= 1e-3_wp)) then
-        call fatal_error(error, "analysis: rtol must lie in [1e-15, 1e-3]", UDMAP_EINPUT)
+        call fatal_error(error, "analysis.rtol must lie in [1e-15, 1e-3]", UDMAP_EINPUT)
         return
       end if
       if (a%grid_per_decade < 2 .or. a%grid_per_decade > 1000) then
-        call fatal_error(error, "analysis: grid_per_decade must lie in [2, 1000]", UDMAP_EINPUT)
+        call fatal_error(error, "analysis.grid_per_decade must lie in [2, 1000]", UDMAP_EINPUT)
         return
       end if
       if (a%eigen_method < EIGEN_AUTO .or. a%eigen_method > EIGEN_MODAL) then
-        call fatal_error(error, "analysis: eigen_method must be 0 (auto), 1 (direct) or "// &
+        call fatal_error(error, "analysis.eigen_method must be 0 (auto), 1 (direct) or "// &
           & "2 (modal)", UDMAP_EINPUT)
         return
       end if
       if (a%dense_max < 1) then
-        call fatal_error(error, "analysis: dense_max must be positive", UDMAP_EINPUT)
+        call fatal_error(error, "analysis.dense_max must be positive", UDMAP_EINPUT)
         return
       end if
       if (a%sweep_points < 16 .or. a%sweep_points > 1000000) then
-        call fatal_error(error, "analysis: sweep_points must lie in [16, 1e6]", UDMAP_EINPUT)
+        call fatal_error(error, "analysis.sweep_points must lie in [16, 1e6]", UDMAP_EINPUT)
         return
       end if
     end associate

@@ -45,9 +45,15 @@ ANALYSIS_DEFAULTS: dict[str, Any] = {
     "rtol": 1e-12,            # relative tolerance of peak and root refinement
     "grid_per_decade": 24,    # backbone amplitude grid density for root bracketing
     "layers": 200,            # amplitude layers of the response curves (before adaptive refinement)
+    "eigen_method": "auto",   # eigenvalue start: auto, direct (zggev/ARPACK) or modal (secular)
+    "dense_max": 200,         # largest ndof solved densely by zggev; larger ones use ARPACK
+    "sweep_points": 400,      # bare-blade frequency samples for bracketing curve crossings
 }
+#: Kernel codes of analysis.eigen_method.
+EIGEN_METHODS = {"auto": 0, "direct": 1, "modal": 2}
 _ANALYSIS = {"f_min": "pos", "f_max": "pos", "sigma_all": "pos?", "rtol": "pos?",
-             "grid_per_decade": "int_pos?", "layers": "int_pos?"}
+             "grid_per_decade": "int_pos?", "layers": "int_pos?", "eigen_method": "eigen?",
+             "dense_max": "int_pos?", "sweep_points": "int_pos?"}
 
 
 @dataclass
@@ -101,6 +107,11 @@ def _check_value(path: str, value, check: str):
         if not (isinstance(value, list) and len(value) == 2):
             raise InputError(f"{path} must be two points [[x, y], [x, y]], got {json.dumps(value)}")
         return [_check_value(f"{path}[{i}]", p, "point") for i, p in enumerate(value)]
+    if check == "eigen":
+        if value not in EIGEN_METHODS:
+            raise InputError(f"{path} must be one of {', '.join(EIGEN_METHODS)}, got "
+                             f"{json.dumps(value)}")
+        return value
     if check == "path":
         if not isinstance(value, str) or not value:
             raise InputError(f"{path} must be a file path (string), got {json.dumps(value)}")
@@ -286,4 +297,6 @@ def build_model(case: Case, blade=None, damper=None):
     blade = blade if blade is not None else build_blade(case)
     damper = damper if damper is not None else build_damper(case)
     return Model(blade, damper, a["f_min"], a["f_max"], sigma_all=a["sigma_all"],
-                 rtol=a["rtol"], grid_per_decade=a["grid_per_decade"])
+                 rtol=a["rtol"], grid_per_decade=a["grid_per_decade"],
+                 eigen_method=EIGEN_METHODS[a["eigen_method"]], dense_max=a["dense_max"],
+                 sweep_points=a["sweep_points"])

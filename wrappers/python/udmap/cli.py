@@ -171,7 +171,8 @@ def cmd_curves(args) -> None:
     data = {"curves": [{"F_E": c["F_E"], "f": [float(x) for x in c["f"]],
                         "gamma_P": [float(x) for x in c["gamma_P"]],
                         "sigma_a": [_finite(float(x)) for x in c["sigma_a"]],
-                        "branch": [int(x) for x in c["branch"]]} for c in curves]}
+                        "branch": [int(x) for x in c["branch"]],
+                        "part": [int(x) for x in c["part"]]} for c in curves]}
 
     def table(d):
         for c in d["curves"]:
@@ -264,6 +265,8 @@ def build_parser() -> argparse.ArgumentParser:
                    help="case file (default: the embedded blade A)")
     p.add_argument("--out", default="out/demo", help="output directory (default out/demo)")
     p.set_defaults(func=cmd_demo)
+    from .doe import add_doe_parser
+    add_doe_parser(sub)
     return parser
 
 

@@ -1,0 +1,123 @@
+#!/usr/bin/env python3
+"""FMU benchmark: the time of one communication step of build/udmap.fmu (FMI 2.0) and
+build/udmap-fmi3.fmu (FMI 3.0), measured in C by build/fmu/udmap-fmu-bench (no Python in the
+timed loop). A step is what a master does at a communication point: set the changed input,
+doStep, get every output (the FMU computes on demand, so the work shows up in the gets).
+
+- fmu_step_F_E: F_E changes every step, cycling through 1..10 N (blade A's GG peaks): no
+  damper tracing, no receptances, only the response point. Goal: median under 10 us.
+- fmu_step_damper: mu alternates between 0.30 and 0.31 at F_E = 5 N: the damper is traced
+  again and the model rebuilt. Goal: median under 1 ms.
+
+The accuracy columns compare the FMU's outputs with the command line (`udmap backbone`) for the
+same case: both solve the same equations, so they measure what the FMU adds (nothing but
+rounding, ideally). Usage: python3 bench/bench_fmu.py --json OUT [--cycles N]
+"""
+from __future__ import annotations
+
+import argparse
+import json
+import os
+import re
+import subprocess
+import sys
+import tempfile
+import zipfile
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[1]
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+from timing import record  # noqa: E402
+
+BUILD = Path(os.environ.get("UDMAP_BUILD_DIR", ROOT / "build"))
+FMUS = {2: (BUILD / "udmap.fmu", "linux64", "guid"),
+        3: (BUILD / "udmap-fmi3.fmu", "x86_64-linux", "instantiationToken")}
+DRIVER = BUILD / "fmu" / "udmap-fmu-bench"
+CASE = ROOT / "cases" / "blade_a.json"
+
+
+def run_driver(version: int, mode: str, cycles: int, tmp: Path) -> dict:
+    fmu, platform, attr = FMUS[version]
+    target = tmp / f"fmi{version}"
+    with zipfile.ZipFile(fmu) as zf:
+        zf.extractall(target)
+        xml = zf.read("modelDescription.xml").decode()
+    token = re.search(r'\b%s="([^"]+)"' % attr, xml).group(1)
+    so = target / "binaries" / platform / "udmap.so"
+    r = subprocess.run([str(DRIVER), str(so), token, str(version), mode, str(cycles)],
+                       capture_output=True, text=True, timeout=1800)
+    if r.returncode != 0:
+        raise SystemExit(f"bench_fmu: {DRIVER.name} FMI {version} {mode} failed: {r.stderr}")
+    return json.loads(r.stdout)
+
+
+def backbone(tmp: Path, mu: float, forces) -> dict:
+    """The command line's backbone for blade A with friction coefficient mu, by force."""
+    data = json.loads(CASE.read_text())
+    data["damper"]["mu"] = mu
+    case = tmp / f"mu{mu}.json"
+    case.write_text(json.dumps(data))
+    env = dict(os.environ, PYTHONPATH=str(ROOT / "wrappers" / "python"))
+    r = subprocess.run([sys.executable, "-m", "udmap", "backbone", str(case), "--forces",
+                        ",".join(repr(float(F)) for F in forces), "--json"], cwd=ROOT, env=env,
+                       capture_output=True, text=True, check=True)
+    return {p["F_E"]: p for p in json.loads(r.stdout)["points"]}
+
+
+def errors(points, tmp: Path) -> dict:
+    """Largest relative differences of the FMU's outputs from the command line's."""
+    worst = {"gamma_P": 0.0, "sigma_a": 0.0, "f_res": 0.0}
+    by_mu: dict = {}
+    for p in points:
+        by_mu.setdefault(p["mu"], []).append(p)
+    for mu, pts in by_mu.items():
+        ref = backbone(tmp, mu, [p["F_E"] for p in pts])
+        for p in pts:
+            q = ref[float(p["F_E"])]
+            for key in worst:
+                if q[key] is None:  # unbounded: not comparable
+                    continue
+                worst[key] = max(worst[key], abs(p[key] - q[key]) / abs(q[key]))
+    return {f"error_{k}": v for k, v in worst.items()}
+
+
+def main(argv=None) -> int:
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--json", required=True, help="output file (JSON array of records)")
+    ap.add_argument("--cycles", type=int, default=200,
+                    help="cycles of 10 force steps / 2 mu steps (default 200)")
+    args = ap.parse_args(argv)
+    for fmu, _, _ in FMUS.values():
+        if not fmu.is_file():
+            raise SystemExit(f"bench_fmu: {fmu} is missing: run 'make build'")
+    if not DRIVER.is_file():
+        raise SystemExit(f"bench_fmu: {DRIVER} is missing: run 'make build'")
+    records = []
+    with tempfile.TemporaryDirectory() as tmp:
+        tmp = Path(tmp)
+        for method, mode, cycles, goal in (("fmu_step_F_E", "F_E", args.cycles, 10e-6),
+                                           ("fmu_step_damper", "damper",
+                                            max(5, args.cycles // 4), 1e-3)):
+            runs = {v: run_driver(v, mode, cycles, tmp) for v in (2, 3)}
+            r2, r3 = runs[2], runs[3]
+            timing = {k: r2[k] for k in ("seconds_median", "seconds_min", "seconds_max")}
+            timing["repeats"] = r2["steps"]
+            rec = record("blade_a", method, "gg10" if mode == "F_E" else "gg10-mu",
+                         timing, **errors(r2["points"], tmp),
+                         fmi3_seconds_median=r3["seconds_median"],
+                         fmi3_seconds_min=r3["seconds_min"],
+                         fmi3_seconds_max=r3["seconds_max"],
+                         fmi2_fmi3_identical=r2["points"] == r3["points"],
+                         goal_seconds=goal,
+                         step="set input + doStep + get all 11 outputs")
+            records.append(rec)
+            print(f"bench_fmu: {method}: median {r2['seconds_median'] * 1e6:.2f} us (FMI 2), "
+                  f"{r3['seconds_median'] * 1e6:.2f} us (FMI 3), goal {goal * 1e6:g} us; "
+                  f"max rel. error gamma_P {rec['error_gamma_P']:.1e}", flush=True)
+    Path(args.json).parent.mkdir(parents=True, exist_ok=True)
+    Path(args.json).write_text(json.dumps(records, indent=1, allow_nan=False) + "\n")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,189 @@
+/*
+ * Benchmark driver of the FMU binaries (used by bench/bench_fmu.py): loads an unpacked FMU's
+ * udmap.so like an importer, and times communication steps the way a master runs them:
+ * set the changed input, fmi2DoStep / fmi3DoStep, get every output.
+ *
+ *   udmap-fmu-bench SO TOKEN VERSION MODE CYCLES
+ *     VERSION 2 or 3; MODE F_E (F_E = 1..10 N in turn, blade A's GG peaks) or damper
+ *     (mu alternates between 0.31 and 0.30, F_E = 5 N).
+ * Prints one JSON object: the median, min and max time of a step [s] and the outputs of the
+ * first cycle (for the accuracy columns).
+ */
+#include <dlfcn.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#include "config.h"
+#include "fmi2_api.h"
+#include "fmi3_api.h"
+
+#define NOUT 11
+static const unsigned r2[] = {vr_gamma_P, vr_sigma_a, vr_F_lim, vr_f_res,
+                              vr_u_E, vr_k_re, vr_k_im, vr_F_ratio};
+static const unsigned i2[] = {vr_regime};
+static const unsigned b2[] = {vr_hcf_ok, vr_lift_off};
+
+static void logger2(fmi2ComponentEnvironment env, fmi2String name, fmi2Status status,
+                    fmi2String category, fmi2String message, ...) {
+  (void)env;
+  if (status != fmi2OK) fprintf(stderr, "%s [%s] %d: %s\n", name, category, status, message);
+}
+
+static void logger3(fmi3InstanceEnvironment env, fmi3Status status, fmi3String category,
+                    fmi3String message) {
+  (void)env;
+  if (status != fmi3OK) fprintf(stderr, "[%s] %d: %s\n", category, status, message);
+}
+
+static double now(void) {
+  struct timespec ts;
+  clock_gettime(CLOCK_MONOTONIC, &ts);
+  return ts.tv_sec + 1e-9 * ts.tv_nsec;
+}
+
+#define LOAD(h, name) __typeof__(name) *p_##name = (__typeof__(name) *)dlsym(h, #name)
+
+typedef struct {
+  void *inst;
+  int version;
+  void *h;
+  __typeof__(fmi2SetReal) *set2;
+  __typeof__(fmi2DoStep) *step2;
+  __typeof__(fmi2GetReal) *getr2;
+  __typeof__(fmi2GetInteger) *geti2;
+  __typeof__(fmi2GetBoolean) *getb2;
+  __typeof__(fmi3SetFloat64) *set3;
+  __typeof__(fmi3DoStep) *step3;
+  __typeof__(fmi3GetFloat64) *getr3;
+  __typeof__(fmi3GetInt32) *geti3;
+  __typeof__(fmi3GetBoolean) *getb3;
+} Fmu;
+
+#define SYM(field, name) f->field = (__typeof__(name) *)dlsym(f->h, #name)
+
+static int resolve(Fmu *f) {
+  if (f->version == 2) {
+    SYM(set2, fmi2SetReal), SYM(step2, fmi2DoStep), SYM(getr2, fmi2GetReal);
+    SYM(geti2, fmi2GetInteger), SYM(getb2, fmi2GetBoolean);
+    return f->set2 && f->step2 && f->getr2 && f->geti2 && f->getb2;
+  }
+  SYM(set3, fmi3SetFloat64), SYM(step3, fmi3DoStep), SYM(getr3, fmi3GetFloat64);
+  SYM(geti3, fmi3GetInt32), SYM(getb3, fmi3GetBoolean);
+  return f->set3 && f->step3 && f->getr3 && f->geti3 && f->getb3;
+}
+
+/* One communication step: set one Float64 input, step, get all outputs. */
+static int step(Fmu *f, ValueReference vr, double value, double t, double out[NOUT]) {
+  int st = 0;
+  unsigned vri = vr;
+  if (f->version == 2) {
+    fmi2Integer iv[1];
+    fmi2Boolean bv[2];
+    st |= f->set2(f->inst, &vri, 1, &value);
+    st |= f->step2(f->inst, t, 1e-3, fmi2True);
+    st |= f->getr2(f->inst, r2, 8, out);
+    st |= f->geti2(f->inst, i2, 1, iv);
+    st |= f->getb2(f->inst, b2, 2, bv);
+    out[8] = iv[0], out[9] = bv[0], out[10] = bv[1];
+  } else {
+    fmi3Int32 iv[1];
+    fmi3Boolean bv[2], e, term, early;
+    fmi3Float64 last;
+    st |= f->set3(f->inst, &vri, 1, &value, 1);
+    st |= f->step3(f->inst, t, 1e-3, true, &e, &term, &early, &last);
+    st |= f->getr3(f->inst, r2, 8, out, 8);
+    st |= f->geti3(f->inst, i2, 1, iv, 1);
+    st |= f->getb3(f->inst, b2, 2, bv, 2);
+    out[8] = iv[0], out[9] = bv[0], out[10] = bv[1];
+  }
+  return st;
+}
+
+static int cmp(const void *a, const void *b) {
+  double x = *(const double *)a, y = *(const double *)b;
+  return (x > y) - (x < y);
+}
+
+int main(int argc, char **argv) {
+  if (argc != 6) {
+    fprintf(stderr, "usage: %s SO TOKEN VERSION F_E|damper CYCLES\n", argv[0]);
+    return 2;
+  }
+  const char *token = argv[2];
+  int version = atoi(argv[3]);
+  int damper = strcmp(argv[4], "damper") == 0;
+  int cycles = atoi(argv[5]);
+  Fmu f = {.version = version, .h = dlopen(argv[1], RTLD_NOW | RTLD_LOCAL)};
+  if (!f.h) {
+    fprintf(stderr, "dlopen: %s\n", dlerror());
+    return 1;
+  }
+  if (!resolve(&f)) {
+    fprintf(stderr, "dlsym: %s\n", dlerror());
+    return 1;
+  }
+  if (version == 2) {
+    LOAD(f.h, fmi2Instantiate);
+    LOAD(f.h, fmi2SetupExperiment);
+    LOAD(f.h, fmi2EnterInitializationMode);
+    LOAD(f.h, fmi2ExitInitializationMode);
+    fmi2CallbackFunctions cb = {logger2, NULL, NULL, NULL, NULL};
+    f.inst = p_fmi2Instantiate("bench", fmi2CoSimulation, token, "", &cb, fmi2False, fmi2False);
+    if (!f.inst || p_fmi2SetupExperiment(f.inst, fmi2False, 0, 0, fmi2False, 0) ||
+        p_fmi2EnterInitializationMode(f.inst) || p_fmi2ExitInitializationMode(f.inst))
+      return 1;
+  } else {
+    LOAD(f.h, fmi3InstantiateCoSimulation);
+    LOAD(f.h, fmi3EnterInitializationMode);
+    LOAD(f.h, fmi3ExitInitializationMode);
+    f.inst = p_fmi3InstantiateCoSimulation("bench", token, "", false, false, false, false, NULL,
+                                           0, NULL, logger3, NULL);
+    if (!f.inst || p_fmi3EnterInitializationMode(f.inst, false, 0, 0, false, 0) ||
+        p_fmi3ExitInitializationMode(f.inst))
+      return 1;
+  }
+  const int per_cycle = damper ? 2 : 10;
+  int n = cycles * per_cycle;
+  double *times = malloc(sizeof(double) * (size_t)n), out[NOUT], t = 0;
+  double table[10][NOUT];
+  /* warm-up: builds the blade, damper and model once */
+  if (step(&f, vr_F_E, 5.0, t, out)) return 1;
+  t += 1e-3;
+  for (int i = 0; i < n; i++) {
+    int k = i % per_cycle;
+    ValueReference vr = damper ? vr_mu : vr_F_E;
+    /* the warm-up left mu = 0.30: the first timed step already changes it */
+    double value = damper ? (k ? 0.30 : 0.31) : (double)(k + 1);
+    double t0 = now();
+    int st = step(&f, vr, value, t, out);
+    times[i] = now() - t0;
+    t += 1e-3;
+    if (st) {
+      fprintf(stderr, "step %d: status %d\n", i, st);
+      return 1;
+    }
+    if (i < per_cycle) memcpy(table[k], out, sizeof out);
+  }
+  qsort(times, (size_t)n, sizeof(double), cmp);
+  printf("{\"version\": %d, \"mode\": \"%s\", \"steps\": %d, \"seconds_median\": %.9e, "
+         "\"seconds_min\": %.9e, \"seconds_max\": %.9e", version, argv[4], n, times[n / 2],
+         times[0], times[n - 1]);
+  printf(", \"points\": [");
+  for (int k = 0; k < per_cycle; k++)
+    printf("%s{\"F_E\": %g, \"mu\": %.2f, \"gamma_P\": %.17g, \"sigma_a\": %.17g, "
+           "\"f_res\": %.17g}", k ? ", " : "", damper ? 5.0 : k + 1.0,
+           damper ? (k ? 0.30 : 0.31) : 0.3, table[k][0], table[k][1], table[k][3]);
+  printf("]}\n");
+  free(times);
+  if (version == 2) {
+    LOAD(f.h, fmi2FreeInstance);
+    p_fmi2FreeInstance(f.inst);
+  } else {
+    LOAD(f.h, fmi3FreeInstance);
+    p_fmi3FreeInstance(f.inst);
+  }
+  dlclose(f.h);
+  return 0;
+}

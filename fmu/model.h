@@ -1,0 +1,135 @@
+/*
+ * The udmap-specific part of the FMU, shared by the FMI 2 and FMI 3 layers: the values of
+ * all variables, the kernel handles (blade, damper, model) and the lazy, staged evaluation
+ * of the outputs, the FMI state machine, logging, and the FMU state.
+ */
+#ifndef UDMAP_FMU_MODEL_H
+#define UDMAP_FMU_MODEL_H
+
+#include <stdbool.h>
+#include <stddef.h>
+#include <stdint.h>
+
+#include "config.h"
+#include "udmap.h"
+
+/* Same numbers as fmi2Status / fmi3Status. */
+typedef enum { OK, Warning, Discard, Error, Fatal } Status;
+
+/* Interface states; each FMI function has a mask of the states it may be called in. */
+typedef enum {
+  StartAndEnd = 1 << 0,
+  Instantiated = 1 << 1,
+  InitializationMode = 1 << 2,
+  StepMode = 1 << 3,
+  Terminated = 1 << 4
+} ModelState;
+
+/* Log categories (bits), named as in the modelDescription's LogCategories. */
+enum {
+  LOG_WARNING = 1 << 0,
+  LOG_DISCARD = 1 << 1,
+  LOG_ERROR = 1 << 2,
+  LOG_EVENTS = 1 << 3,
+  LOG_CALLS = 1 << 4,
+  LOG_ALL = (1 << 5) - 1,
+  LOG_DEFAULT = LOG_WARNING | LOG_DISCARD | LOG_ERROR
+};
+
+/* Evaluation stages of the outputs; each runs at most once per set of values. */
+typedef enum {
+  STAGE_BLADE,  /* udmap_new_blade_beam */
+  STAGE_DAMPER, /* udmap_new_damper_asymmetric, traced at the start value of CF */
+  STAGE_CF,     /* udmap_damper_set_CF to the current CF */
+  STAGE_MODEL,  /* udmap_new_model */
+  STAGE_LIMIT,  /* udmap_model_limit_force, udmap_damper_get_info */
+  STAGE_POINT,  /* udmap_model_backbone or udmap_model_response for F_E */
+  STAGE_F1,     /* bare first natural frequency (f_res of an unbounded response) */
+  NSTAGES
+} Stage;
+
+typedef struct ModelInstance ModelInstance;
+
+/* Emits one formatted message through the importer's logger (set by the FMI layer). */
+typedef void (*LogEmitter)(ModelInstance *m, Status status, const char *category,
+                           const char *message);
+
+struct ModelInstance {
+  /* FMI bookkeeping */
+  char *instanceName;
+  int fmiVersion; /* 2 or 3 */
+  ModelState state;
+  LogEmitter emit;
+  void *logger;      /* the importer's callback, called by emit */
+  void *environment; /* the importer's environment pointer */
+  unsigned logMask;  /* enabled LOG_* categories */
+  bool stopTimeDefined;
+  double stopTime;
+
+  /* values of all variables by value reference (time at vr_time); outputs are computed */
+  double value[UDMAP_NVARS];
+
+  /* kernel */
+  udmap_error err;
+  udmap_blade blade;
+  udmap_damper damper;
+  udmap_model model;
+  double damper_CF; /* the centrifugal load the damper currently has */
+
+  /* staged evaluation */
+  unsigned done; /* stages evaluated for the current values (bit per Stage) */
+  Status stage_status[NSTAGES];
+  char stage_message[NSTAGES][512];
+  double F_lim;
+  udmap_damper_info info;
+  udmap_point point;
+  double f1_bare;
+
+  /* counters, for tests and diagnostics (not part of the FMU state) */
+  unsigned long stage_runs[NSTAGES];
+};
+
+ModelInstance *model_new(const char *instanceName, int fmiVersion, LogEmitter emit,
+                         void *logger, void *environment, bool loggingOn);
+void model_free(ModelInstance *m);
+/* Start values, no kernel objects, state Instantiated. */
+void model_reset(ModelInstance *m);
+
+/* printf-style message through the logger, if its category is enabled. */
+void model_log(ModelInstance *m, Status status, const char *fmt, ...)
+    __attribute__((format(printf, 3, 4)));
+void model_log_category(ModelInstance *m, unsigned category, Status status, const char *fmt,
+                        ...) __attribute__((format(printf, 4, 5)));
+/* Enables (on) or disables the named categories; n = 0 means all of them. */
+Status model_set_debug_logging(ModelInstance *m, bool on, size_t n, const char *const names[]);
+
+/* State-machine check: logs and returns false when `fn` may not be called now. */
+bool model_allowed(ModelInstance *m, const char *fn, unsigned mask);
+
+/* Sets variable vr from a value of type `type` (Integer and Boolean passed as double); with
+ * apply = false only checks. Discard (value not taken) for a NaN, an infinity or a value out
+ * of range; Error for an unknown vr, a type mismatch or a variable that cannot be set. */
+Status model_set(ModelInstance *m, const char *fn, ValueReference vr, VariableType type,
+                 double value, bool apply);
+
+/* Gets variable vr as type `type`, computing outputs on demand. `logged` collects the stages
+ * whose failure was already logged during this call (start with 0). */
+Status model_get(ModelInstance *m, const char *fn, ValueReference vr, VariableType type,
+                 double *value, unsigned *logged);
+
+/* Advances time over a communication step (the outputs are quasi-steady). */
+Status model_do_step(ModelInstance *m, const char *fn, double t, double h);
+
+/* FMU state: the values of all variables and the time, as one plain block. */
+typedef struct {
+  uint64_t magic;
+  uint64_t size;
+  char token[40];
+  double value[UDMAP_NVARS];
+} ModelSnapshot;
+
+ModelSnapshot *model_snapshot(ModelInstance *m, ModelSnapshot *reuse);
+Status model_restore(ModelInstance *m, const char *fn, const ModelSnapshot *s);
+Status model_check_snapshot(ModelInstance *m, const char *fn, const void *data, size_t size);
+
+#endif /* UDMAP_FMU_MODEL_H */

@@ -1,0 +1,140 @@
+/*
+ * The FMU's variable table: the single source of truth for value references, types,
+ * causalities, units, start values, ranges and descriptions. model.c reads and writes
+ * values through it, and describe.c generates both modelDescription.xml files and
+ * documentation/index.html from it at build time. Start values are those of
+ * cases/blade_a.json (tests/python/test_fmu_description.py checks them against the file).
+ *
+ * X(name, type, causality, group, unit, start, min, max, flags, description)
+ *   type       REAL, INTEGER or BOOLEAN
+ *   causality  INDEPENDENT, INPUT, PARAMETER (tunable) or OUTPUT
+ *   group      what a change invalidates (inputs, parameters) or what computes it (outputs)
+ *   unit       a unit of UDMAP_UNITS, or "" for dimensionless
+ *   min, max   inclusive bounds (NOLIMIT for none); POSITIVE additionally excludes zero,
+ *              OPEN excludes both bounds, EVEN asks for an even integer; the bounds follow
+ *              the case-file validation of the Python package (wrappers/python/udmap/case.py)
+ * The value reference of a variable is its position in the table.
+ */
+#ifndef UDMAP_FMU_VARIABLES_H
+#define UDMAP_FMU_VARIABLES_H
+
+#define UDMAP_VARIABLE_TABLE(X) \
+  X(time, REAL, INDEPENDENT, NONE, "s", 0.0, NOLIMIT, NOLIMIT, 0, \
+    "Simulation time; the outputs are quasi-steady and do not depend on it") \
+  /* ---------------------------------------------------------------- inputs */ \
+  X(F_E, REAL, INPUT, FORCE, "N", 5.0, 0.0, NOLIMIT, 0, \
+    "Proof excitation force amplitude at E (transverse, airfoil mid-length)") \
+  X(f_exc, REAL, INPUT, FORCE, "Hz", 0.0, 0.0, NOLIMIT, 0, \
+    "Excitation frequency; 0 means at resonance (the peak of the response), otherwise it " \
+    "must lie in [f_min, f_max]") \
+  X(mu, REAL, INPUT, DAMPER, "", 0.3, 0.0, NOLIMIT, POSITIVE, \
+    "Friction coefficient of the damper contacts") \
+  X(CF, REAL, INPUT, CF, "N", 900.0, 0.0, NOLIMIT, POSITIVE, \
+    "Centrifugal load on the damper") \
+  X(kn_flat, REAL, INPUT, DAMPER, "N/m", 60e6, 0.0, NOLIMIT, POSITIVE, \
+    "Normal contact stiffness of each flat-side contact point") \
+  X(kt_flat, REAL, INPUT, DAMPER, "N/m", 40e6, 0.0, NOLIMIT, POSITIVE, \
+    "Tangential contact stiffness of each flat-side contact point") \
+  X(kn_curved, REAL, INPUT, DAMPER, "N/m", 80e6, 0.0, NOLIMIT, POSITIVE, \
+    "Normal contact stiffness of the curved-side contact point") \
+  X(kt_curved, REAL, INPUT, DAMPER, "N/m", 50e6, 0.0, NOLIMIT, POSITIVE, \
+    "Tangential contact stiffness of the curved-side contact point") \
+  /* ---------------------------------------------------------------- blade parameters */ \
+  X(neck_L, REAL, PARAMETER, BLADE, "m", 0.020, 0.0, NOLIMIT, POSITIVE, \
+    "Neck length (radial), clamped at its root") \
+  X(neck_h, REAL, PARAMETER, BLADE, "m", 0.008, 0.0, NOLIMIT, POSITIVE, \
+    "Neck section height in the bending direction") \
+  X(neck_b, REAL, PARAMETER, BLADE, "m", 0.020, 0.0, NOLIMIT, POSITIVE, \
+    "Neck section width") \
+  X(platform_L, REAL, PARAMETER, BLADE, "m", 0.010, 0.0, NOLIMIT, POSITIVE, \
+    "Platform length (radial); the master point P is at its mid-height") \
+  X(platform_m, REAL, PARAMETER, BLADE, "kg", 0.021, 0.0, NOLIMIT, POSITIVE, \
+    "Platform mass, lumped at P") \
+  X(platform_J, REAL, PARAMETER, BLADE, "kg.m2", 1.4e-6, 0.0, NOLIMIT, POSITIVE, \
+    "Platform rotary inertia about P") \
+  X(airfoil_L, REAL, PARAMETER, BLADE, "m", 0.120, 0.0, NOLIMIT, POSITIVE, \
+    "Airfoil length (radial)") \
+  X(airfoil_h, REAL, PARAMETER, BLADE, "m", 0.004, 0.0, NOLIMIT, POSITIVE, \
+    "Airfoil section height in the bending direction") \
+  X(airfoil_b, REAL, PARAMETER, BLADE, "m", 0.030, 0.0, NOLIMIT, POSITIVE, \
+    "Airfoil section width") \
+  X(neck_elements, INTEGER, PARAMETER, BLADE, "", 8, 1.0, 10000.0, 0, \
+    "Number of equal beam elements of the neck") \
+  X(airfoil_elements, INTEGER, PARAMETER, BLADE, "", 24, 2.0, 10000.0, EVEN, \
+    "Number of equal beam elements of the airfoil (even, so that E is a node)") \
+  X(E, REAL, PARAMETER, BLADE, "Pa", 170e9, 0.0, NOLIMIT, POSITIVE, \
+    "Young's modulus of the blade") \
+  X(rho, REAL, PARAMETER, BLADE, "kg/m3", 8200.0, 0.0, NOLIMIT, POSITIVE, \
+    "Density of the blade") \
+  X(zeta, REAL, PARAMETER, BLADE, "", 0.002, 0.0, NOLIMIT, 0, \
+    "Damping ratio of the first bare-blade mode (stiffness-proportional damping C = beta K)") \
+  /* ---------------------------------------------------------------- damper parameters */ \
+  X(pitch, REAL, PARAMETER, DAMPER, "m", 0.026, 0.0, NOLIMIT, POSITIVE, \
+    "Circumferential distance between the platform centres P_L and P_R") \
+  X(y_P, REAL, PARAMETER, DAMPER, "m", 0.006, NOLIMIT, NOLIMIT, 0, \
+    "Radial coordinate of the platform centres, from the damper centre of gravity G") \
+  X(beta_L_deg, REAL, PARAMETER, DAMPER, "deg", 45.0, 0.0, 90.0, OPEN, \
+    "Inclination of the left (flat-side) platform face") \
+  X(beta_R_deg, REAL, PARAMETER, DAMPER, "deg", 45.0, 0.0, 90.0, OPEN, \
+    "Inclination of the right (curved-side) platform face") \
+  X(flat1_x, REAL, PARAMETER, DAMPER, "m", -6.724e-3, NOLIMIT, NOLIMIT, 0, \
+    "First flat-side contact point, x (circumferential, from G towards the curved side)") \
+  X(flat1_y, REAL, PARAMETER, DAMPER, "m", -1.724e-3, NOLIMIT, NOLIMIT, 0, \
+    "First flat-side contact point, y (radially outward from G)") \
+  X(flat2_x, REAL, PARAMETER, DAMPER, "m", -1.068e-3, NOLIMIT, NOLIMIT, 0, \
+    "Second flat-side contact point, x") \
+  X(flat2_y, REAL, PARAMETER, DAMPER, "m", 3.932e-3, NOLIMIT, NOLIMIT, 0, \
+    "Second flat-side contact point, y") \
+  X(curved_x, REAL, PARAMETER, DAMPER, "m", 3.268e-3, NOLIMIT, NOLIMIT, 0, \
+    "Curved-side contact point, x") \
+  X(curved_y, REAL, PARAMETER, DAMPER, "m", 1.768e-3, NOLIMIT, NOLIMIT, 0, \
+    "Curved-side contact point, y") \
+  /* ---------------------------------------------------------------- analysis parameters */ \
+  X(f_min, REAL, PARAMETER, ANALYSIS, "Hz", 150.0, 0.0, NOLIMIT, POSITIVE, \
+    "Lower end of the frequency band searched for the resonance") \
+  X(f_max, REAL, PARAMETER, ANALYSIS, "Hz", 230.0, 0.0, NOLIMIT, POSITIVE, \
+    "Upper end of the frequency band searched for the resonance") \
+  X(sigma_all, REAL, PARAMETER, ANALYSIS, "Pa", 80e6, 0.0, NOLIMIT, POSITIVE, \
+    "Allowable alternating stress of the HCF criterion") \
+  /* ---------------------------------------------------------------- outputs */ \
+  X(gamma_P, REAL, OUTPUT, POINT, "rad", 0.0, NOLIMIT, NOLIMIT, 0, \
+    "Platform rotation amplitude (at resonance, or at f_exc); +inf when unbounded " \
+    "(zeta = 0 and F_E >= F_lim)") \
+  X(sigma_a, REAL, OUTPUT, POINT, "Pa", 0.0, NOLIMIT, NOLIMIT, 0, \
+    "Alternating stress amplitude at the airfoil-platform junction; +inf when unbounded") \
+  X(F_lim, REAL, OUTPUT, LIMIT, "N", 0.0, NOLIMIT, NOLIMIT, 0, \
+    "Limit excitation force: above it friction alone cannot bound the response") \
+  X(f_res, REAL, OUTPUT, POINT, "Hz", 0.0, NOLIMIT, NOLIMIT, 0, \
+    "Frequency of the response peak (or f_exc); the bare-blade natural frequency when " \
+    "unbounded") \
+  X(u_E, REAL, OUTPUT, POINT, "m", 0.0, NOLIMIT, NOLIMIT, 0, \
+    "Displacement amplitude at E; +inf when unbounded") \
+  X(k_re, REAL, OUTPUT, POINT, "N.m/rad", 0.0, NOLIMIT, NOLIMIT, 0, \
+    "Damper stiffness at gamma_P, real part (0 in the unbounded limit)") \
+  X(k_im, REAL, OUTPUT, POINT, "N.m/rad", 0.0, NOLIMIT, NOLIMIT, 0, \
+    "Damper stiffness at gamma_P, imaginary part (damping; 0 in the unbounded limit)") \
+  X(F_ratio, REAL, OUTPUT, RATIO, "", 0.0, NOLIMIT, NOLIMIT, 0, \
+    "F_E / F_lim") \
+  X(hcf_ok, BOOLEAN, OUTPUT, POINT, "", 0.0, NOLIMIT, NOLIMIT, 0, \
+    "HCF criterion: F_E <= 0.5 F_lim and sigma_a <= sigma_all") \
+  X(regime, INTEGER, OUTPUT, POINT, "", 0.0, NOLIMIT, NOLIMIT, 0, \
+    "Contact regime at gamma_P: 0 stuck, 1 partial slip, 2 full slip, 3 at or above F_lim") \
+  X(lift_off, BOOLEAN, OUTPUT, LIMIT, "", 0.0, NOLIMIT, NOLIMIT, 0, \
+    "A damper contact opens during the cycle (the damper left its design envelope)")
+
+/* X(name, kg, m, s, rad, factor, description) over the units used above. */
+#define UDMAP_UNITS(X) \
+  X("s", 0, 0, 1, 0, 1.0, "second") \
+  X("N", 1, 1, -2, 0, 1.0, "newton") \
+  X("Hz", 0, 0, -1, 0, 1.0, "hertz") \
+  X("m", 0, 1, 0, 0, 1.0, "metre") \
+  X("kg", 1, 0, 0, 0, 1.0, "kilogram") \
+  X("kg.m2", 1, 2, 0, 0, 1.0, "kilogram square metre") \
+  X("kg/m3", 1, -3, 0, 0, 1.0, "kilogram per cubic metre") \
+  X("Pa", 1, -1, -2, 0, 1.0, "pascal") \
+  X("N/m", 1, 0, -2, 0, 1.0, "newton per metre") \
+  X("N.m/rad", 1, 2, -2, -1, 1.0, "newton metre per radian") \
+  X("rad", 0, 0, 0, 1, 1.0, "radian") \
+  X("deg", 0, 0, 0, 1, 0.017453292519943295, "degree")
+
+#endif /* UDMAP_FMU_VARIABLES_H */
