@@ -59,6 +59,7 @@ BACKBONE = [({"rtol": 1e-4, "grid_per_decade": 4}, 201),
             ({"rtol": 1e-14, "grid_per_decade": 48}, 201)]
 MAPPING = [({"layers": 25, "sweep_points": 400}, 9),
            ({"layers": 100, "sweep_points": 400}, 7),
+           ({"layers": 200, "sweep_points": 400}, 6),
            ({"layers": 400, "sweep_points": 400}, 5),
            ({"layers": 1600, "sweep_points": 400}, 3),
            ({"layers": 1600, "sweep_points": 100}, 3),
