@@ -155,21 +155,7 @@ contains
     real(c_double), intent(in) :: gamma(*)
     real(c_double), intent(out) :: k_re(*), k_im(*)
     integer(c_int) :: stat
-    type(damper_type), pointer :: d
-    type(error_type), allocatable :: error
-    complex(wp) :: k
-    integer :: i
-    call clear_error(herr)
-    call damper_from_handle(hdamper, d, "damper", error)
-    if (.not. allocated(error)) call check_amplitudes(d, n, gamma, error)
-    if (.not. allocated(error)) then
-      do i = 1, n
-        k = d%stiffness(real(gamma(i), wp))
-        k_re(i) = real(k, wp)
-        k_im(i) = aimag(k)
-      end do
-    end if
-    stat = set_error(herr, error)
+    stat = evaluate_stiffness(herr, hdamper, n, gamma, k_re, k_im, derivative=.false.)
   end function udmap_damper_stiffness
 
   function udmap_damper_stiffness_derivative(herr, hdamper, n, gamma, dk_re, dk_im) result(stat) &
@@ -179,22 +165,37 @@ contains
     real(c_double), intent(in) :: gamma(*)
     real(c_double), intent(out) :: dk_re(*), dk_im(*)
     integer(c_int) :: stat
+    stat = evaluate_stiffness(herr, hdamper, n, gamma, dk_re, dk_im, derivative=.true.)
+  end function udmap_damper_stiffness_derivative
+
+  !> k(gamma) or dk/dgamma for n checked amplitudes, as (re, im) arrays; the status.
+  function evaluate_stiffness(herr, hdamper, n, gamma, out_re, out_im, derivative) result(stat)
+    type(c_ptr), intent(in) :: herr, hdamper
+    integer(c_int), intent(in) :: n
+    real(c_double), intent(in) :: gamma(*)
+    real(c_double), intent(out) :: out_re(*), out_im(*)
+    logical, intent(in) :: derivative
+    integer(c_int) :: stat
     type(damper_type), pointer :: d
     type(error_type), allocatable :: error
-    complex(wp) :: dk
+    complex(wp) :: k
     integer :: i
     call clear_error(herr)
     call damper_from_handle(hdamper, d, "damper", error)
     if (.not. allocated(error)) call check_amplitudes(d, n, gamma, error)
     if (.not. allocated(error)) then
       do i = 1, n
-        dk = d%stiffness_derivative(real(gamma(i), wp))
-        dk_re(i) = real(dk, wp)
-        dk_im(i) = aimag(dk)
+        if (derivative) then
+          k = d%stiffness_derivative(real(gamma(i), wp))
+        else
+          k = d%stiffness(real(gamma(i), wp))
+        end if
+        out_re(i) = real(k, wp)
+        out_im(i) = aimag(k)
       end do
     end if
     stat = set_error(herr, error)
-  end function udmap_damper_stiffness_derivative
+  end function evaluate_stiffness
 
   function udmap_damper_loop(herr, hdamper, gamma_a, n, tau, M_r) result(stat) &
       & bind(C, name="udmap_damper_loop")
