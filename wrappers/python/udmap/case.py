@@ -61,7 +61,7 @@ def _int(lo, hi, doc, default=REQUIRED, even=False):
 
 
 # Shared bounds (why these numbers: README "Case files", valid ranges).
-_LENGTH = (1e-4, 3.0)        # m: beam lengths, from a micro-turbine blade to a 3 m LP blade
+_LENGTH = (1e-4, 3.0)        # m: beam lengths, micro-turbines to beyond the longest LP blades
 _SECTION = (1e-5, 1.0)       # m: section height and width
 _COORD = (-1.0, 1.0)         # m: damper geometry, coordinates from the damper's centre of gravity
 _CONTACT = (1e2, 1e12)       # N/m: contact stiffness per contact point
@@ -72,16 +72,19 @@ _BAND = (1e-3, 1e6)          # Hz
 #: without kinds. Adding a field is one line here; nested objects are spelled with dots.
 SCHEMA: dict[tuple, dict[str, Field]] = {
     ("blade", "beam"): {
-        "E": _real(1e6, 1e13, "Pa", "Young's modulus (elastomers to diamond)"),
-        "rho": _real(1e2, 3e4, "kg/m3", "density (foams to the densest metals)"),
-        "zeta": _real(*_ZETA, "", "damping ratio of the first bare-blade mode"),
-        "neck.L": _real(*_LENGTH, "m", "neck length"),
+        "E": _real(1e6, 1e13, "Pa", "Young's modulus: elastomers to beyond diamond (1.2e12)"),
+        "rho": _real(1e2, 3e4, "kg/m3", "density: foams to beyond osmium (22600)"),
+        "zeta": _real(*_ZETA, "", "damping ratio of the first bare-blade mode, up to half "
+                  "critical"),
+        "neck.L": _real(*_LENGTH, "m", "neck length: micro-turbines to beyond the longest "
+                        "steam-turbine blades"),
         "neck.h": _real(*_SECTION, "m", "neck section height (bending direction)"),
         "neck.b": _real(*_SECTION, "m", "neck section width"),
-        "neck.elements": _int(1, 1000, "neck beam elements"),
+        "neck.elements": _int(1, 1000, "neck beam elements (the first modes converge with a few)"),
         "platform.L": _real(1e-5, 1.0, "m", "platform length"),
-        "platform.m": _real(1e-6, 1e3, "kg", "platform mass"),
-        "platform.J": _real(1e-15, 1e2, "kg.m2", "platform rotary inertia about P"),
+        "platform.m": _real(1e-6, 1e3, "kg", "platform mass: 1 mg to 1 t"),
+        "platform.J": _real(1e-15, 1e2, "kg.m2", "platform rotary inertia about P: those masses "
+                            "at 30 um to 0.3 m"),
         "airfoil.L": _real(*_LENGTH, "m", "airfoil length"),
         "airfoil.h": _real(*_SECTION, "m", "airfoil section height (bending direction)"),
         "airfoil.b": _real(*_SECTION, "m", "airfoil section width"),
@@ -98,21 +101,25 @@ SCHEMA: dict[tuple, dict[str, Field]] = {
         "zeta": _real(*_ZETA, "", "damping ratio of the first bare-blade mode", default=0.0),
     },
     ("damper", "asymmetric"): {
-        "CF": _real(1e-3, 1e6, "N", "centrifugal load on the damper"),
-        "mu": _real(1e-4, 10.0, "", "friction coefficient"),
+        "CF": _real(1e-3, 1e6, "N", "centrifugal load on the damper (real dampers: 10 N to "
+                    "10 kN)"),
+        "mu": _real(1e-4, 10.0, "", "friction coefficient (dry metals: 0.1 to 1.5; large values "
+                    "jam the damper: status 3)"),
         "pitch": _real(1e-6, 1.0, "m", "distance between the platform centres"),
-        "y_P": _real(*_COORD, "m", "radial coordinate of the platform centres"),
+        "y_P": _real(*_COORD, "m", "radial coordinate of the platform centres (damper geometry: "
+                     "within 1 m of its centre of gravity)"),
         "beta_L_deg": _real(0.0, 90.0, "deg", "left face inclination", open=True),
         "beta_R_deg": _real(0.0, 90.0, "deg", "right face inclination", open=True),
         "flat_points": Field("points", *_COORD, "m", doc="flat-side contact points", count=2),
         "curved_point": Field("point", *_COORD, "m", doc="curved-side contact point"),
-        "kn_flat": _real(*_CONTACT, "N/m", "normal stiffness, flat side"),
+        "kn_flat": _real(*_CONTACT, "N/m", "normal stiffness, flat side (soft polymer to stiffer "
+                           "than a 1 m steel cube)"),
         "kt_flat": _real(*_CONTACT, "N/m", "tangential stiffness, flat side"),
         "kn_curved": _real(*_CONTACT, "N/m", "normal stiffness, curved side"),
         "kt_curved": _real(*_CONTACT, "N/m", "tangential stiffness, curved side"),
     },
     ("damper", "jenkins"): {
-        "kt": _real(1e-6, 1e12, "N.m/rad", "stuck stiffness"),
+        "kt": _real(1e-6, 1e12, "N.m/rad", "stuck stiffness (wide: non-dimensional models too)"),
         "M_slip": _real(1e-9, 1e9, "N.m", "slip moment"),
     },
     ("damper", "table"): {
@@ -120,21 +127,28 @@ SCHEMA: dict[tuple, dict[str, Field]] = {
         "delta_M": _real(1e-12, 1e9, "N.m", "moment swing for extrapolation", default=OPTIONAL),
     },
     ("analysis", None): {
-        "f_min": _real(*_BAND, "Hz", "lower band edge"),
-        "f_max": _real(*_BAND, "Hz", "upper band edge"),
-        "sigma_all": _real(1e3, 1e10, "Pa", "allowable alternating stress", default=80e6),
-        "rtol": _real(1e-15, 1e-3, "", "relative tolerance of peak and root refinement",
-                      default=1e-12),
-        "grid_per_decade": _int(2, 1000, "backbone amplitude grid density", default=24),
-        "layers": _int(4, 100000, "amplitude layers of the response curves", default=200),
+        "f_min": _real(*_BAND, "Hz", "lower edge of the band in which the resonance is sought "
+                      "(1 mHz: non-dimensional models)"),
+        "f_max": _real(*_BAND, "Hz", "upper edge of the band"),
+        "sigma_all": _real(1e3, 1e10, "Pa", "allowable alternating stress of the HCF check (up to "
+                          "beyond any material's strength)", default=80e6),
+        "rtol": _real(1e-15, 1e-3, "", "relative tolerance of peak and root refinement (kernel "
+                      "limits, as below)", default=1e-12),
+        "grid_per_decade": _int(2, 1000, "amplitude grid on which backbone roots are "
+                                "bracketed", default=24),
+        "layers": _int(4, 100000, "amplitude layers of the response curves (refined "
+                      "adaptively)", default=200),
         "eigen_method": Field("choice", default="auto", choices=tuple(EIGEN_METHODS),
-                              doc="eigenvalue start"),
-        "dense_max": _int(1, 100000, "largest ndof solved densely", default=200),
-        "sweep_points": _int(16, 1000000, "bare-blade samples for curve crossings",
+                              doc="eigenvalue start: direct (zggev; ARPACK for large models) "
+                              "or modal (secular equation)"),
+        "dense_max": _int(1, 100000, "largest number of DOFs solved densely by zggev", default=200),
+        "sweep_points": _int(16, 1000000, "bare-blade frequency samples for bracketing "
+                             "curve crossings",
                              default=400),
         "harmonics": Field("harmonics", 2, 100, default=1,
                            doc="1, harmonics 0..H, or auto (PHYSICS.md 4.1)"),
-        "harmonic_tol": _real(1e-12, 0.1, "", "tolerance of harmonics auto", default=1e-3),
+        "harmonic_tol": _real(1e-12, 0.1, "", "relative change that stops harmonics auto",
+                              default=1e-3),
     },
 }
 #: Top-level fields besides the sections.
@@ -458,6 +472,29 @@ def load_case(path: str | Path | None = None) -> Case:
     except (UnicodeDecodeError, ValueError) as exc:
         raise InputError(f"case file {path}: not a UTF-8 text file ({exc})") from None
     return loads_case(text, path.resolve().parent, source=f"case file {path}")
+
+
+def schema_markdown() -> str:
+    """The schema as the Markdown table of the README ("Case files"; a test keeps them equal)."""
+    lines = ["| field | type | allowed | default | meaning |", "| --- | --- | --- | --- | --- |"]
+    for (section, kind), spec in SCHEMA.items():
+        for name, f in spec.items():
+            where = f"`{section}.{name}`" + (f" ({kind})" if kind else "")
+            if f.type in ("real", "int", "point", "points"):
+                allowed = range_text(f)
+                kind_text = {"real": "number", "int": "even integer" if f.even else "integer",
+                             "point": "[x, y]", "points": f"{f.count} points"}[f.type]
+            elif f.type == "harmonics":
+                allowed, kind_text = f"1, {range_text(f)} or `auto`", "integer or `auto`"
+            elif f.type == "choice":
+                allowed, kind_text = ", ".join(f"`{c}`" for c in f.choices), "string"
+            else:
+                allowed, kind_text = "an existing file", "path"
+            default = {REQUIRED: "required", OPTIONAL: "optional"}.get(f.default) \
+                if isinstance(f.default, str) and f.default in (REQUIRED, OPTIONAL) else \
+                f"`{f.default}`" if isinstance(f.default, str) else fmt_number(f.default)
+            lines.append(f"| {where} | {kind_text} | {allowed} | {default} | {f.doc} |")
+    return "\n".join(lines) + "\n"
 
 
 def loads_case(text: str, base_dir: Path | str = ".", source: str = "case") -> Case:
