@@ -230,11 +230,12 @@ def run_subprocess(argv: list[str], timeout: float = 120) -> tuple[int, str, str
 
 
 def fuzz(case_file: Path, count: int, sample: int, seed: int, workdir: Path,
-         subprocesses: int = 0, progress=None) -> dict:
+         commands=COMMANDS, subprocesses: int = 0, progress=None) -> dict:
     """The fuzz of one case file: ``count`` mutations through the loader, ``sample`` of them
-    (about half valid, half not, when there are enough) through every command of COMMANDS in
-    this process and ``subprocesses`` of those through ``python3 -m udmap``. Returns counts per
-    exit status and the list of problems (empty when all is well)."""
+    (about half valid, half not, when there are enough) through ``commands`` (of COMMANDS) in
+    this process and the first ``subprocesses`` of those through ``python3 -m udmap`` (the
+    commands of COMMANDS in turn). Returns counts per exit status and the list of problems
+    (empty when all is well)."""
     base = json.loads(case_file.read_text())
     loader = {0: 0, 2: 0}
     problems: list[str] = []
@@ -253,13 +254,13 @@ def fuzz(case_file: Path, count: int, sample: int, seed: int, workdir: Path,
     half = min(len(valid), sample // 2)
     chosen = rng.sample(valid, half) + rng.sample(invalid, min(len(invalid), sample - half))
     chosen.sort(key=lambda item: item[0])
-    cli = {c[0]: {s: 0 for s in (0, 2, 3, 4)} for c in COMMANDS}
+    cli = {c[0]: {s: 0 for s in (0, 2, 3, 4)} for c in commands}
     sub = {s: 0 for s in (0, 2, 3, 4)}
     workdir.mkdir(parents=True, exist_ok=True)
     for n, (i, doc) in enumerate(chosen):
         path = workdir / f"mutation_{i}.json"
         path.write_text(dumps(doc))
-        for command in COMMANDS:
+        for command in commands:
             argv = [str(path) if a == "CASE" else a for a in command]
             status, out, err = run_inprocess(argv)
             problem = check_run(status, out, err, doc)
