@@ -88,6 +88,7 @@ def test_kind_of_any_type_is_named(section, kind):
     (("analysis", "harmonic_tol"), 0.0, "analysis.harmonic_tol must be in [1e-12, 0.1], got 0"),
     (("name",), ["x"], 'name must be a string, got ["x"]'),
     (("description",), 3, "description must be a string, got 3"),
+    (("name",), "\ud800", 'name must be valid Unicode text, got "\\ud800"'),
 ])
 def test_wrong_types_and_ranges_are_named(path, value, message):
     with pytest.raises(InputError) as info:

@@ -303,6 +303,10 @@ def _check_path(path: str, value, f: Field) -> str:
 def _check_text(path: str, value, f: Field) -> str:
     if not isinstance(value, str):
         raise InputError(f"{path} must be a string, got {_show(value)}")
+    try:
+        value.encode("utf-8")
+    except UnicodeEncodeError:  # a lone surrogate escape (\ud800) would fail in plots, files
+        raise InputError(f"{path} must be valid Unicode text, got {_show(value)}") from None
     return value
 
 
