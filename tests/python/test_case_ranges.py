@@ -1,6 +1,6 @@
 """The case-file schema (udmap.case.SCHEMA): physical ranges with messages naming the field
-and the range, the same ranges in the README, in `doe --vary` and in the FMU's variable table,
-and the multi-harmonic settings accepted."""
+and the range, the same ranges in the README and in `doe --vary`, and the multi-harmonic
+settings accepted (the FMU's ranges: test_fmu_ranges.py)."""
 import copy
 import json
 import math
@@ -174,39 +174,6 @@ def test_doe_ranges_outside_the_schema_are_named(vary, message):
     with pytest.raises(InputError) as info:
         doe.parse_vary(case, [vary])
     assert str(info.value) == message
-
-
-def _fmu_table() -> dict:
-    """name -> (min, max, flags) of the FMU's variable table (fmu/variables.h)."""
-    text = (ROOT / "fmu" / "variables.h").read_text()
-    rows = re.findall(r"X\((\w+), (REAL|INTEGER|BOOLEAN), (\w+), \w+, \"[^\"]*\", [^,]+, "
-                      r"([^,]+), ([^,]+), ([^,]+),", text)
-
-    def number(t):
-        return math.inf if t.strip() == "NOLIMIT" else float(t)
-    return {name: (number(lo), number(hi), flags.strip()) for name, _, caus, lo, hi, flags
-            in rows if caus in ("INPUT", "PARAMETER")}
-
-
-def test_fmu_ranges_are_the_schema():
-    # every FMU input and parameter that is a case-file field has the schema's range
-    table = _fmu_table()
-    case = load_case(ROOT / "cases" / "blade_a.json")
-    names = doe.parameter_names(case)
-    compared = 0
-    for name, (lo, hi, flags) in table.items():
-        if name in ("F_E", "f_exc"):  # inputs of the FMU only, not case-file fields
-            assert (lo, hi) == (0.0, math.inf), name
-            continue
-        path = names[name]
-        kind = case.blade["kind"] if path[0] == "blade" else \
-            case.damper["kind"] if path[0] == "damper" else None
-        dotted = ".".join(k for k in path[1:] if isinstance(k, str))
-        f = SCHEMA[(path[0], kind)][dotted]
-        assert (lo, hi) == (f.lo, f.hi), (name, (lo, hi), (f.lo, f.hi))
-        assert ("OPEN" in flags) == f.open and ("EVEN" in flags) == f.even, name
-        compared += 1
-    assert compared == 33
 
 
 def test_case_is_a_plain_record():

@@ -234,28 +234,3 @@ def test_zero_force_is_the_limit_of_small_forces(version, tmp_path):
     assert out["gamma_P"] == 0.0 and math.isclose(out["f_res"], 190.0, rel_tol=1e-12)
     inst.free()
 
-
-@pytest.mark.parametrize("version", VERSIONS)
-def test_out_of_range_message_is_the_case_file_message(version):
-    # the FMU's message is the case loader's for the same value, with the FMU's name for the
-    # case file's dotted path
-    from fmu_harness import CASE
-    from udmap import doe
-    from udmap._lib import InputError
-    from udmap.case import fmt_number, load_case, validate
-    case = load_case(CASE)
-    names = doe.parameter_names(case)
-    inst = ready(version)
-    for name, value in [("E", 1e300), ("rho", 1e-12), ("neck_L", 1e5), ("mu", 0.0),
-                        ("kt_flat", 3e12), ("airfoil_elements", 23), ("flat2_y", -1.5),
-                        ("beta_R_deg", 90.0), ("zeta", 0.75), ("sigma_all", 2.5e-3)]:
-        path = names[name]
-        dotted = doe.Parameter("", path, 0, 0).dotted
-        with pytest.raises(InputError) as info:
-            validate(doe._validation_dict(doe.with_values(case, [path], [value])))
-        expected = str(info.value).replace(dotted, name, 1)
-        assert inst.set(**{name: value}) == ERROR
-        kept = fmt_number(inst.get(name)[1][0])
-        assert inst.messages()[-1].split(": ", 1)[1] == f"{expected}; {name} keeps {kept}"
-    assert_usable(inst)
-    inst.free()
