@@ -429,27 +429,53 @@ static Status run(ModelInstance *m, Stage s) {
 
 /* ---------------------------------------------------------------- set and get */
 
-/* Why x is not a valid value of v, or NULL. */
-static const char *invalid_reason(const VariableInfo *v, double x, char *buf, size_t n) {
-  if (isnan(x)) return "not a number";
-  if (!isfinite(x)) return "not finite";
-  if (v->type == BOOLEAN && x != 0.0 && x != 1.0) return "not a Boolean";
-  if (v->type == INTEGER && x != floor(x)) return "not an integer";
-  if ((v->flags & POSITIVE) && !(x > 0.0)) return "must be positive";
-  if ((v->flags & OPEN) && !(x > v->min && x < v->max)) {
-    snprintf(buf, n, "must lie strictly between %g and %g", v->min, v->max);
-    return buf;
+/* x as the Python package writes numbers in its messages (udmap.case.fmt_number): 15
+ * significant digits, exponent form outside [1e-4, 1e5) without '+' or leading zeros. */
+static void fmt_number(char *buf, size_t n, double x) {
+  if (isnan(x)) {
+    snprintf(buf, n, "NaN");
+  } else if (isinf(x)) {
+    snprintf(buf, n, x > 0 ? "inf" : "-inf");
+  } else if (x != 0.0 && !(fabs(x) >= 1e-4 && fabs(x) < 1e5)) {
+    char mant[48];
+    snprintf(mant, sizeof mant, "%.14e", x);
+    char *e = strchr(mant, 'e');
+    int exp10 = e ? atoi(e + 1) : 0;
+    if (e) *e = '\0';
+    size_t len = strlen(mant);
+    while (len > 0 && mant[len - 1] == '0') mant[--len] = '\0';
+    if (len > 0 && mant[len - 1] == '.') mant[--len] = '\0';
+    snprintf(buf, n, "%se%d", mant, exp10);
+  } else {
+    snprintf(buf, n, "%.15g", x);
   }
-  if (x < v->min) {
-    snprintf(buf, n, "below its minimum %g", v->min);
-    return buf;
+}
+
+static bool valid_value(const VariableInfo *v, double x) {
+  if (!isfinite(x)) return false;
+  if (v->type == BOOLEAN) return x == 0.0 || x == 1.0;
+  if (v->type == INTEGER && x != floor(x)) return false;
+  if ((v->flags & POSITIVE) && !(x > 0.0)) return false;
+  if ((v->flags & OPEN) ? !(x > v->min && x < v->max) : (x < v->min || x > v->max)) return false;
+  return !((v->flags & EVEN) && fmod(x, 2.0) != 0.0);
+}
+
+/* The message of the case-file validation (udmap.case): "E must be in [1e6, 1e13] Pa, got
+ * 1e300", with the FMU's variable name for the case file's dotted path. */
+static void invalid_message(const VariableInfo *v, double x, char *buf, size_t n) {
+  char lo[48], hi[48], got[48];
+  fmt_number(lo, sizeof lo, v->min);
+  fmt_number(hi, sizeof hi, v->max);
+  fmt_number(got, sizeof got, x);
+  if (v->type == BOOLEAN) {
+    snprintf(buf, n, "%s must be 0 or 1, got %s", v->name, got);
+    return;
   }
-  if (x > v->max) {
-    snprintf(buf, n, "above its maximum %g", v->max);
-    return buf;
-  }
-  if ((v->flags & EVEN) && fmod(x, 2.0) != 0.0) return "must be even";
-  return NULL;
+  const char *what = v->type != INTEGER ? "" : v->flags & EVEN ? "an even integer " : "an integer ";
+  bool open_lo = (v->flags & (OPEN | POSITIVE)) || isinf(v->min);
+  bool open_hi = (v->flags & OPEN) || isinf(v->max);
+  snprintf(buf, n, "%s must be %sin %c%s, %s%c%s%s, got %s", v->name, what, open_lo ? '(' : '[',
+           lo, hi, open_hi ? ')' : ']', v->unit[0] ? " " : "", v->unit, got);
 }
 
 static Status check_vr(ModelInstance *m, const char *fn, ValueReference vr, VariableType type) {
@@ -476,12 +502,12 @@ Status model_set(ModelInstance *m, const char *fn, ValueReference vr, VariableTy
               causality_names[v->causality]);
     return Error;
   }
-  char buf[64];
-  const char *why = invalid_reason(v, x, buf, sizeof buf);
-  if (why) {
-    model_log(m, Discard, "%s: %s = %g rejected (%s); %s keeps %g", fn, v->name, x, why,
-              v->name, m->value[vr]);
-    return Discard;
+  if (!valid_value(v, x)) {  /* an FMI error; the instance keeps its value and stays usable */
+    char why[256], keep[48];
+    invalid_message(v, x, why, sizeof why);
+    fmt_number(keep, sizeof keep, m->value[vr]);
+    model_log(m, Error, "%s: %s; %s keeps %s", fn, why, v->name, keep);
+    return Error;
   }
   if (apply && m->value[vr] != x) {
     m->value[vr] = x;
@@ -601,13 +627,13 @@ Status model_check_snapshot(ModelInstance *m, const char *fn, const void *data, 
               "differ)", fn);
     return Error;
   }
-  char buf[64];
   for (int i = 0; i < UDMAP_NVARS; i++) {
     const VariableInfo *v = &udmap_variables[i];
     if (v->causality != INPUT && v->causality != PARAMETER) continue;
-    const char *why = invalid_reason(v, s.value[i], buf, sizeof buf);
-    if (why) {
-      model_log(m, Error, "%s: the state holds %s = %g (%s)", fn, v->name, s.value[i], why);
+    if (!valid_value(v, s.value[i])) {
+      char why[256];
+      invalid_message(v, s.value[i], why, sizeof why);
+      model_log(m, Error, "%s: the state holds an invalid value: %s", fn, why);
       return Error;
     }
   }

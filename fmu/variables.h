@@ -11,8 +11,9 @@
  *   group      what a change invalidates (inputs, parameters) or what computes it (outputs)
  *   unit       a unit of UDMAP_UNITS, or "" for dimensionless
  *   min, max   inclusive bounds (NOLIMIT for none); POSITIVE additionally excludes zero,
- *              OPEN excludes both bounds, EVEN asks for an even integer; the bounds follow
- *              the case-file validation of the Python package (wrappers/python/udmap/case.py)
+ *              OPEN excludes both bounds, EVEN asks for an even integer; the bounds are the
+ *              physical ranges of the case-file schema of the Python package
+ *              (udmap.case.SCHEMA; tests/python/test_fmu_ranges.py checks that they agree)
  * The value reference of a variable is its position in the table.
  */
 #ifndef UDMAP_FMU_VARIABLES_H
@@ -27,74 +28,74 @@
   X(f_exc, REAL, INPUT, FORCE, "Hz", 0.0, 0.0, NOLIMIT, 0, \
     "Excitation frequency; 0 means at resonance (the peak of the response), otherwise it " \
     "must lie in [f_min, f_max]") \
-  X(mu, REAL, INPUT, DAMPER, "", 0.3, 0.0, NOLIMIT, POSITIVE, \
+  X(mu, REAL, INPUT, DAMPER, "", 0.3, 1e-4, 10.0, 0, \
     "Friction coefficient of the damper contacts") \
-  X(CF, REAL, INPUT, CF, "N", 900.0, 0.0, NOLIMIT, POSITIVE, \
+  X(CF, REAL, INPUT, CF, "N", 900.0, 1e-3, 1e6, 0, \
     "Centrifugal load on the damper") \
-  X(kn_flat, REAL, INPUT, DAMPER, "N/m", 60e6, 0.0, NOLIMIT, POSITIVE, \
+  X(kn_flat, REAL, INPUT, DAMPER, "N/m", 60e6, 1e2, 1e12, 0, \
     "Normal contact stiffness of each flat-side contact point") \
-  X(kt_flat, REAL, INPUT, DAMPER, "N/m", 40e6, 0.0, NOLIMIT, POSITIVE, \
+  X(kt_flat, REAL, INPUT, DAMPER, "N/m", 40e6, 1e2, 1e12, 0, \
     "Tangential contact stiffness of each flat-side contact point") \
-  X(kn_curved, REAL, INPUT, DAMPER, "N/m", 80e6, 0.0, NOLIMIT, POSITIVE, \
+  X(kn_curved, REAL, INPUT, DAMPER, "N/m", 80e6, 1e2, 1e12, 0, \
     "Normal contact stiffness of the curved-side contact point") \
-  X(kt_curved, REAL, INPUT, DAMPER, "N/m", 50e6, 0.0, NOLIMIT, POSITIVE, \
+  X(kt_curved, REAL, INPUT, DAMPER, "N/m", 50e6, 1e2, 1e12, 0, \
     "Tangential contact stiffness of the curved-side contact point") \
   /* ---------------------------------------------------------------- blade parameters */ \
-  X(neck_L, REAL, PARAMETER, BLADE, "m", 0.020, 0.0, NOLIMIT, POSITIVE, \
+  X(neck_L, REAL, PARAMETER, BLADE, "m", 0.020, 1e-4, 3.0, 0, \
     "Neck length (radial), clamped at its root") \
-  X(neck_h, REAL, PARAMETER, BLADE, "m", 0.008, 0.0, NOLIMIT, POSITIVE, \
+  X(neck_h, REAL, PARAMETER, BLADE, "m", 0.008, 1e-5, 1.0, 0, \
     "Neck section height in the bending direction") \
-  X(neck_b, REAL, PARAMETER, BLADE, "m", 0.020, 0.0, NOLIMIT, POSITIVE, \
+  X(neck_b, REAL, PARAMETER, BLADE, "m", 0.020, 1e-5, 1.0, 0, \
     "Neck section width") \
-  X(platform_L, REAL, PARAMETER, BLADE, "m", 0.010, 0.0, NOLIMIT, POSITIVE, \
+  X(platform_L, REAL, PARAMETER, BLADE, "m", 0.010, 1e-5, 1.0, 0, \
     "Platform length (radial); the master point P is at its mid-height") \
-  X(platform_m, REAL, PARAMETER, BLADE, "kg", 0.021, 0.0, NOLIMIT, POSITIVE, \
+  X(platform_m, REAL, PARAMETER, BLADE, "kg", 0.021, 1e-6, 1e3, 0, \
     "Platform mass, lumped at P") \
-  X(platform_J, REAL, PARAMETER, BLADE, "kg.m2", 1.4e-6, 0.0, NOLIMIT, POSITIVE, \
+  X(platform_J, REAL, PARAMETER, BLADE, "kg.m2", 1.4e-6, 1e-15, 1e2, 0, \
     "Platform rotary inertia about P") \
-  X(airfoil_L, REAL, PARAMETER, BLADE, "m", 0.120, 0.0, NOLIMIT, POSITIVE, \
+  X(airfoil_L, REAL, PARAMETER, BLADE, "m", 0.120, 1e-4, 3.0, 0, \
     "Airfoil length (radial)") \
-  X(airfoil_h, REAL, PARAMETER, BLADE, "m", 0.004, 0.0, NOLIMIT, POSITIVE, \
+  X(airfoil_h, REAL, PARAMETER, BLADE, "m", 0.004, 1e-5, 1.0, 0, \
     "Airfoil section height in the bending direction") \
-  X(airfoil_b, REAL, PARAMETER, BLADE, "m", 0.030, 0.0, NOLIMIT, POSITIVE, \
+  X(airfoil_b, REAL, PARAMETER, BLADE, "m", 0.030, 1e-5, 1.0, 0, \
     "Airfoil section width") \
-  X(neck_elements, INTEGER, PARAMETER, BLADE, "", 8, 1.0, 10000.0, 0, \
+  X(neck_elements, INTEGER, PARAMETER, BLADE, "", 8, 1.0, 1000.0, 0, \
     "Number of equal beam elements of the neck") \
-  X(airfoil_elements, INTEGER, PARAMETER, BLADE, "", 24, 2.0, 10000.0, EVEN, \
+  X(airfoil_elements, INTEGER, PARAMETER, BLADE, "", 24, 2.0, 1000.0, EVEN, \
     "Number of equal beam elements of the airfoil (even, so that E is a node)") \
-  X(E, REAL, PARAMETER, BLADE, "Pa", 170e9, 0.0, NOLIMIT, POSITIVE, \
+  X(E, REAL, PARAMETER, BLADE, "Pa", 170e9, 1e6, 1e13, 0, \
     "Young's modulus of the blade") \
-  X(rho, REAL, PARAMETER, BLADE, "kg/m3", 8200.0, 0.0, NOLIMIT, POSITIVE, \
+  X(rho, REAL, PARAMETER, BLADE, "kg/m3", 8200.0, 1e2, 3e4, 0, \
     "Density of the blade") \
-  X(zeta, REAL, PARAMETER, BLADE, "", 0.002, 0.0, NOLIMIT, 0, \
+  X(zeta, REAL, PARAMETER, BLADE, "", 0.002, 0.0, 0.5, 0, \
     "Damping ratio of the first bare-blade mode (stiffness-proportional damping C = beta K)") \
   /* ---------------------------------------------------------------- damper parameters */ \
-  X(pitch, REAL, PARAMETER, DAMPER, "m", 0.026, 0.0, NOLIMIT, POSITIVE, \
+  X(pitch, REAL, PARAMETER, DAMPER, "m", 0.026, 1e-6, 1.0, 0, \
     "Circumferential distance between the platform centres P_L and P_R") \
-  X(y_P, REAL, PARAMETER, DAMPER, "m", 0.006, NOLIMIT, NOLIMIT, 0, \
+  X(y_P, REAL, PARAMETER, DAMPER, "m", 0.006, -1.0, 1.0, 0, \
     "Radial coordinate of the platform centres, from the damper centre of gravity G") \
   X(beta_L_deg, REAL, PARAMETER, DAMPER, "deg", 45.0, 0.0, 90.0, OPEN, \
     "Inclination of the left (flat-side) platform face") \
   X(beta_R_deg, REAL, PARAMETER, DAMPER, "deg", 45.0, 0.0, 90.0, OPEN, \
     "Inclination of the right (curved-side) platform face") \
-  X(flat1_x, REAL, PARAMETER, DAMPER, "m", -6.724e-3, NOLIMIT, NOLIMIT, 0, \
+  X(flat1_x, REAL, PARAMETER, DAMPER, "m", -6.724e-3, -1.0, 1.0, 0, \
     "First flat-side contact point, x (circumferential, from G towards the curved side)") \
-  X(flat1_y, REAL, PARAMETER, DAMPER, "m", -1.724e-3, NOLIMIT, NOLIMIT, 0, \
+  X(flat1_y, REAL, PARAMETER, DAMPER, "m", -1.724e-3, -1.0, 1.0, 0, \
     "First flat-side contact point, y (radially outward from G)") \
-  X(flat2_x, REAL, PARAMETER, DAMPER, "m", -1.068e-3, NOLIMIT, NOLIMIT, 0, \
+  X(flat2_x, REAL, PARAMETER, DAMPER, "m", -1.068e-3, -1.0, 1.0, 0, \
     "Second flat-side contact point, x") \
-  X(flat2_y, REAL, PARAMETER, DAMPER, "m", 3.932e-3, NOLIMIT, NOLIMIT, 0, \
+  X(flat2_y, REAL, PARAMETER, DAMPER, "m", 3.932e-3, -1.0, 1.0, 0, \
     "Second flat-side contact point, y") \
-  X(curved_x, REAL, PARAMETER, DAMPER, "m", 3.268e-3, NOLIMIT, NOLIMIT, 0, \
+  X(curved_x, REAL, PARAMETER, DAMPER, "m", 3.268e-3, -1.0, 1.0, 0, \
     "Curved-side contact point, x") \
-  X(curved_y, REAL, PARAMETER, DAMPER, "m", 1.768e-3, NOLIMIT, NOLIMIT, 0, \
+  X(curved_y, REAL, PARAMETER, DAMPER, "m", 1.768e-3, -1.0, 1.0, 0, \
     "Curved-side contact point, y") \
   /* ---------------------------------------------------------------- analysis parameters */ \
-  X(f_min, REAL, PARAMETER, ANALYSIS, "Hz", 150.0, 0.0, NOLIMIT, POSITIVE, \
+  X(f_min, REAL, PARAMETER, ANALYSIS, "Hz", 150.0, 1e-3, 1e6, 0, \
     "Lower end of the frequency band searched for the resonance") \
-  X(f_max, REAL, PARAMETER, ANALYSIS, "Hz", 230.0, 0.0, NOLIMIT, POSITIVE, \
+  X(f_max, REAL, PARAMETER, ANALYSIS, "Hz", 230.0, 1e-3, 1e6, 0, \
     "Upper end of the frequency band searched for the resonance") \
-  X(sigma_all, REAL, PARAMETER, ANALYSIS, "Pa", 80e6, 0.0, NOLIMIT, POSITIVE, \
+  X(sigma_all, REAL, PARAMETER, ANALYSIS, "Pa", 80e6, 1e3, 1e10, 0, \
     "Allowable alternating stress of the HCF criterion") \
   /* ---------------------------------------------------------------- outputs */ \
   X(gamma_P, REAL, OUTPUT, POINT, "rad", 0.0, NOLIMIT, NOLIMIT, 0, \

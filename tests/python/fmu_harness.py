@@ -352,7 +352,7 @@ int main(int argc, char **argv) {
 #define SET(a) (v3 ? ((f_rw3)set)(c, in, 4, a, 4) : ((f_rw)set)(c, in, 4, a))
     void *state = NULL;
     if (GET() || ((f_st)gs)(c, &state)) return 5;
-    if (SET(x) || GET() > 1 || SET(bad) != 2) return 6;
+    if (SET(x) || GET() > 1 || SET(bad) != 3) return 6; /* F_E < 0: an FMI error */
     if (((f_st1)ss)(c, state) || GET() || ((f_st)fs)(c, &state)) return 7;
     if (((f_v)rs)(c) || GET()) return 8;
     ((void (*)(void *))fr)(c);

@@ -9,7 +9,7 @@ import struct
 
 import pytest
 
-from fmu_harness import DISCARD, ERROR, OK, Instance
+from fmu_harness import ERROR, OK, Instance
 
 VERSIONS = [2, 3]
 ctypes_uint = ctypes.c_uint32
@@ -250,13 +250,13 @@ def test_state_machine_and_bad_calls(version):
 
 
 @pytest.mark.parametrize("version", VERSIONS)
-def test_discarded_set_changes_nothing(version):
+def test_rejected_set_changes_nothing(version):
     inst = Instance(version, logging_on=True)
     assert inst.setup() == OK
     before = bits(read_all(inst))
     n = len(inst.logs)
     # one bad value in a call: none of the call's values is taken
-    assert inst.set(F_E=3.0, mu=-0.1) == DISCARD
+    assert inst.set(F_E=3.0, mu=-0.1) == ERROR
     assert inst.get("F_E", "mu")[1] == [5.0, 0.3]
     assert events(inst, n) == []
     assert bits(read_all(inst)) == before

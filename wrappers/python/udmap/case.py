@@ -1,8 +1,12 @@
 """Case files (INTERFACES.md "Case files"): loading and validation.
 
 A case is JSON with sections ``blade``, ``damper`` and ``analysis``. Validation is complete
-before anything is computed: unknown or missing fields, wrong types, non-finite numbers and
-out-of-range values raise :class:`InputError` naming the field by its dotted path.
+before anything is computed, and it is driven by one table, :data:`SCHEMA`: every field with its
+type, its allowed range (physical bounds, README "Case files"), its unit and its default.
+Unknown or missing fields, wrong JSON types (a list, an object, ``null`` or a Boolean where a
+number or a string belongs), an unknown ``kind``, NaN and values outside the allowed range raise
+:class:`InputError` naming the field by its dotted path and, for numbers, the allowed range:
+``blade.E must be in [1e6, 1e13] Pa, got 1e300``.
 """
 from __future__ import annotations
 
@@ -18,42 +22,143 @@ from ._lib import InputError
 #: The embedded default case (blade A with its asymmetric damper).
 DEFAULT_CASE = Path(__file__).resolve().parent / "data" / "blade_a.json"
 
-# Per-kind field specifications: name -> (check, required, default).
-# Checks: "pos" > 0, "nonneg" >= 0, "real" finite, "int_pos" integer >= 1, "point" [x, y],
-# "points2" two points, "path" a file path relative to the case, "angle" in (0, 90) degrees.
-_BEAM = {
-    "E": "pos", "rho": "pos", "zeta": "nonneg",
-    "neck": {"L": "pos", "h": "pos", "b": "pos", "elements": "int_pos"},
-    "platform": {"L": "pos", "m": "pos", "J": "pos"},
-    "airfoil": {"L": "pos", "h": "pos", "b": "pos", "elements": "int_even"},
-}
-_MATRICES = {"M": "path", "K": "path", "C": "path?", "gamma_dof": "int_pos",
-             "exc_dof": "int_pos", "stress_K": "path?", "stress_M": "path?", "zeta": "nonneg?"}
-_ASYMMETRIC = {
-    "CF": "pos", "mu": "pos", "pitch": "pos", "y_P": "real",
-    "beta_L_deg": "angle", "beta_R_deg": "angle",
-    "flat_points": "points2", "curved_point": "point",
-    "kn_flat": "pos", "kt_flat": "pos", "kn_curved": "pos", "kt_curved": "pos",
-}
-_JENKINS = {"kt": "pos", "M_slip": "pos"}
-_TABLE = {"file": "path", "delta_M": "pos?"}
-#: Analysis settings with their defaults (None: required).
-ANALYSIS_DEFAULTS: dict[str, Any] = {
-    "f_min": None,            # lower band edge [Hz]
-    "f_max": None,            # upper band edge [Hz]
-    "sigma_all": 80e6,        # allowable alternating stress [Pa]
-    "rtol": 1e-12,            # relative tolerance of peak and root refinement
-    "grid_per_decade": 24,    # backbone amplitude grid density for root bracketing
-    "layers": 200,            # amplitude layers of the response curves (before adaptive refinement)
-    "eigen_method": "auto",   # eigenvalue start: auto, direct (zggev/ARPACK) or modal (secular)
-    "dense_max": 200,         # largest ndof solved densely by zggev; larger ones use ARPACK
-    "sweep_points": 400,      # bare-blade frequency samples for bracketing curve crossings
-}
 #: Kernel codes of analysis.eigen_method.
 EIGEN_METHODS = {"auto": 0, "direct": 1, "modal": 2}
-_ANALYSIS = {"f_min": "pos", "f_max": "pos", "sigma_all": "pos?", "rtol": "pos?",
-             "grid_per_decade": "int_pos?", "layers": "int_pos?", "eigen_method": "eigen?",
-             "dense_max": "int_pos?", "sweep_points": "int_pos?"}
+
+REQUIRED = "required"   # default marker: the field must be given
+OPTIONAL = "optional"   # default marker: the field may be absent (no value is filled in)
+
+
+@dataclass(frozen=True)
+class Field:
+    """One row of the schema.
+
+    ``type``: ``real`` (a finite number in ``[lo, hi]``, or ``(lo, hi)`` when ``open``),
+    ``int`` (an integer in ``[lo, hi]``, even if ``even``), ``point`` (``[x, y]``, each a real in
+    ``[lo, hi]``), ``points`` (a list of ``count`` points), ``choice`` (one of ``choices``),
+    ``harmonics`` (``1``, an integer in ``[lo, hi]`` or ``"auto"``), ``path`` (a file name
+    relative to the case file) or ``text`` (a string). ``default``: :data:`REQUIRED`,
+    :data:`OPTIONAL` or the value filled in when the field is absent.
+    """
+    type: str
+    lo: float | None = None
+    hi: float | None = None
+    unit: str = ""
+    default: Any = REQUIRED
+    doc: str = ""
+    open: bool = False
+    even: bool = False
+    count: int = 0
+    choices: tuple = ()
+
+
+def _real(lo, hi, unit, doc, default=REQUIRED, open=False):
+    return Field("real", lo, hi, unit, default, doc, open=open)
+
+
+def _int(lo, hi, doc, default=REQUIRED, even=False):
+    return Field("int", lo, hi, "", default, doc, even=even)
+
+
+# Shared bounds (why these numbers: README "Case files", valid ranges).
+_LENGTH = (1e-4, 3.0)        # m: beam lengths, micro-turbines to beyond the longest LP blades
+_SECTION = (1e-5, 1.0)       # m: section height and width
+_COORD = (-1.0, 1.0)         # m: damper geometry, coordinates from the damper's centre of gravity
+_CONTACT = (1e2, 1e12)       # N/m: contact stiffness per contact point
+_ZETA = (0.0, 0.5)           # damping ratio of the first mode, well below critical
+_BAND = (1e-3, 1e6)          # Hz
+
+#: The schema: (section, kind) -> {dotted field name: Field}. ``kind`` is None for sections
+#: without kinds. Adding a field is one line here; nested objects are spelled with dots.
+SCHEMA: dict[tuple, dict[str, Field]] = {
+    ("blade", "beam"): {
+        "E": _real(1e6, 1e13, "Pa", "Young's modulus: elastomers to beyond diamond (1.2e12)"),
+        "rho": _real(1e2, 3e4, "kg/m3", "density: foams to beyond osmium (22600)"),
+        "zeta": _real(*_ZETA, "", "damping ratio of the first bare-blade mode, up to half "
+                  "critical"),
+        "neck.L": _real(*_LENGTH, "m", "neck length: micro-turbines to beyond the longest "
+                        "steam-turbine blades"),
+        "neck.h": _real(*_SECTION, "m", "neck section height (bending direction)"),
+        "neck.b": _real(*_SECTION, "m", "neck section width"),
+        "neck.elements": _int(1, 1000, "neck beam elements (the first modes converge with a few)"),
+        "platform.L": _real(1e-5, 1.0, "m", "platform length"),
+        "platform.m": _real(1e-6, 1e3, "kg", "platform mass: 1 mg to 1 t"),
+        "platform.J": _real(1e-15, 1e2, "kg.m2", "platform rotary inertia about P: those masses "
+                            "at 30 um to 0.3 m"),
+        "airfoil.L": _real(*_LENGTH, "m", "airfoil length"),
+        "airfoil.h": _real(*_SECTION, "m", "airfoil section height (bending direction)"),
+        "airfoil.b": _real(*_SECTION, "m", "airfoil section width"),
+        "airfoil.elements": _int(2, 1000, "airfoil beam elements (even: E is a node)", even=True),
+    },
+    ("blade", "matrices"): {
+        "M": Field("path", doc="mass matrix (Matrix Market)"),
+        "K": Field("path", doc="stiffness matrix (Matrix Market)"),
+        "C": Field("path", default=OPTIONAL, doc="damping matrix (Matrix Market)"),
+        "gamma_dof": _int(1, 10**8, "DOF of the platform rotation (1-based)"),
+        "exc_dof": _int(1, 10**8, "DOF of the excitation (1-based)"),
+        "stress_K": Field("path", default=OPTIONAL, doc="stress row, stiffness part"),
+        "stress_M": Field("path", default=OPTIONAL, doc="stress row, mass part"),
+        "zeta": _real(*_ZETA, "", "damping ratio of the first bare-blade mode", default=0.0),
+    },
+    ("damper", "asymmetric"): {
+        "CF": _real(1e-3, 1e6, "N", "centrifugal load on the damper (real dampers: 10 N to "
+                    "10 kN)"),
+        "mu": _real(1e-4, 10.0, "", "friction coefficient (dry metals: 0.1 to 1.5; large values "
+                    "jam the damper: status 3)"),
+        "pitch": _real(1e-6, 1.0, "m", "distance between the platform centres"),
+        "y_P": _real(*_COORD, "m", "radial coordinate of the platform centres (damper geometry: "
+                     "within 1 m of its centre of gravity)"),
+        "beta_L_deg": _real(0.0, 90.0, "deg", "left face inclination", open=True),
+        "beta_R_deg": _real(0.0, 90.0, "deg", "right face inclination", open=True),
+        "flat_points": Field("points", *_COORD, "m", doc="flat-side contact points", count=2),
+        "curved_point": Field("point", *_COORD, "m", doc="curved-side contact point"),
+        "kn_flat": _real(*_CONTACT, "N/m", "normal stiffness, flat side (soft polymer to stiffer "
+                           "than a 1 m steel cube)"),
+        "kt_flat": _real(*_CONTACT, "N/m", "tangential stiffness, flat side"),
+        "kn_curved": _real(*_CONTACT, "N/m", "normal stiffness, curved side"),
+        "kt_curved": _real(*_CONTACT, "N/m", "tangential stiffness, curved side"),
+    },
+    ("damper", "jenkins"): {
+        "kt": _real(1e-6, 1e12, "N.m/rad", "stuck stiffness (wide: non-dimensional models too)"),
+        "M_slip": _real(1e-9, 1e9, "N.m", "slip moment"),
+    },
+    ("damper", "table"): {
+        "file": Field("path", doc="CSV gamma,k_re,k_im"),
+        "delta_M": _real(1e-12, 1e9, "N.m", "moment swing for extrapolation", default=OPTIONAL),
+    },
+    ("analysis", None): {
+        "f_min": _real(*_BAND, "Hz", "lower edge of the band in which the resonance is sought "
+                      "(1 mHz: non-dimensional models)"),
+        "f_max": _real(*_BAND, "Hz", "upper edge of the band"),
+        "sigma_all": _real(1e3, 1e10, "Pa", "allowable alternating stress of the HCF check (up to "
+                          "beyond any material's strength)", default=80e6),
+        "rtol": _real(1e-15, 1e-3, "", "relative tolerance of peak and root refinement (kernel "
+                      "limits, as below)", default=1e-12),
+        "grid_per_decade": _int(2, 1000, "amplitude grid on which backbone roots are "
+                                "bracketed", default=24),
+        "layers": _int(4, 100000, "amplitude layers of the response curves (refined "
+                      "adaptively)", default=200),
+        "eigen_method": Field("choice", default="auto", choices=tuple(EIGEN_METHODS),
+                              doc="eigenvalue start: direct (zggev; ARPACK for large models) "
+                              "or modal (secular equation)"),
+        "dense_max": _int(1, 100000, "largest number of DOFs solved densely by zggev", default=200),
+        "sweep_points": _int(16, 1000000, "bare-blade frequency samples for bracketing "
+                             "curve crossings",
+                             default=400),
+        "harmonics": Field("harmonics", 2, 100, default=1,
+                           doc="1, harmonics 0..H, or auto (PHYSICS.md 4.1)"),
+        "harmonic_tol": _real(1e-12, 0.1, "", "relative change that stops harmonics auto",
+                              default=1e-3),
+    },
+}
+#: Top-level fields besides the sections.
+TOP_LEVEL = {"name": Field("text", default="case", doc="case name"),
+             "description": Field("text", default=OPTIONAL, doc="free text")}
+SECTIONS = ("blade", "damper", "analysis")
+#: Analysis settings with their defaults (None: required), from the schema.
+ANALYSIS_DEFAULTS: dict[str, Any] = {
+    k: (None if f.default == REQUIRED else f.default)
+    for k, f in SCHEMA[("analysis", None)].items() if f.default != OPTIONAL}
 
 
 @dataclass
@@ -70,149 +175,271 @@ class Case:
                 "damper": copy.deepcopy(self.damper), "analysis": copy.deepcopy(self.analysis)}
 
 
+class _NonFinite(float):
+    """A NaN or Infinity literal of the JSON text, kept so that the field it sits in is named."""
+
+    def __new__(cls, text: str):
+        obj = super().__new__(cls, text.replace("Infinity", "inf"))
+        obj.text = text
+        return obj
+
+
+def fmt_number(x) -> str:
+    """Numbers in messages: 15 significant digits, in exponent form outside [1e-4, 1e5) without
+    '+' and leading zeros (1e6, 2.5e-5), NaN/inf as such; the FMU formats them the same way."""
+    if isinstance(x, _NonFinite):
+        return x.text
+    if isinstance(x, int) and not isinstance(x, bool):
+        if abs(x) < 10**15:
+            return str(x)
+        digits = str(abs(x))
+        return f"{'-' if x < 0 else ''}{digits[0]}.{digits[1:4]}e{len(digits) - 1}"
+    x = float(x)
+    if math.isnan(x):
+        return "NaN"
+    if math.isinf(x):
+        return "inf" if x > 0 else "-inf"
+    if x != 0 and not 1e-4 <= abs(x) < 1e5:
+        mantissa, _, exp = f"{x:.14e}".partition("e")
+        return f"{mantissa.rstrip('0').rstrip('.')}e{int(exp)}"
+    return f"{x:.15g}"
+
+
+def _show(value) -> str:
+    """A JSON value as the user wrote it, shortened."""
+    if isinstance(value, (int, float)) and not isinstance(value, bool):
+        return fmt_number(value)
+    try:
+        text = json.dumps(value, allow_nan=True, default=str)
+    except (ValueError, RecursionError):
+        text = type(value).__name__
+    return text if len(text) <= 60 else text[:57] + "..."
+
+
+def range_text(f: Field) -> str:
+    """``[lo, hi] unit`` (round brackets for excluded bounds)."""
+    a, b = ("(", ")") if f.open else ("[", "]")
+    text = f"{a}{fmt_number(f.lo)}, {fmt_number(f.hi)}{b}"
+    return f"{text} {f.unit}" if f.unit else text
+
+
 def _is_number(v) -> bool:
     return isinstance(v, (int, float)) and not isinstance(v, bool)
 
 
-def _check_value(path: str, value, check: str):
-    """Validates one value; returns it normalised (float/int/list/Path string)."""
-    if check in ("pos", "nonneg", "real", "angle"):
-        if not _is_number(value):
-            raise InputError(f"{path} must be a number, got {json.dumps(value)}")
-        v = float(value)
-        if not math.isfinite(v):
-            raise InputError(f"{path} must be a finite number, got {value}")
-        if check == "pos" and not v > 0:
-            raise InputError(f"{path} must be positive, got {value}")
-        if check == "nonneg" and not v >= 0:
-            raise InputError(f"{path} must be non-negative, got {value}")
-        if check == "angle" and not 0 < v < 90:
-            raise InputError(f"{path} must be an angle in degrees between 0 and 90, got {value}")
-        return v
-    if check in ("int_pos", "int_even"):
-        if isinstance(value, bool) or not (isinstance(value, int) or
-                                           (isinstance(value, float) and value.is_integer())):
-            raise InputError(f"{path} must be an integer, got {json.dumps(value)}")
-        v = int(value)
-        if v < 1:
-            raise InputError(f"{path} must be at least 1, got {value}")
-        if check == "int_even" and v % 2:
-            raise InputError(f"{path} must be even (E is the node at mid-length), got {value}")
-        return v
-    if check == "point":
-        if not (isinstance(value, list) and len(value) == 2):
-            raise InputError(f"{path} must be a point [x, y], got {json.dumps(value)}")
-        return [_check_value(f"{path}[{i}]", x, "real") for i, x in enumerate(value)]
-    if check == "points2":
-        if not (isinstance(value, list) and len(value) == 2):
-            raise InputError(f"{path} must be two points [[x, y], [x, y]], got {json.dumps(value)}")
-        return [_check_value(f"{path}[{i}]", p, "point") for i, p in enumerate(value)]
-    if check == "eigen":
-        if value not in EIGEN_METHODS:
-            raise InputError(f"{path} must be one of {', '.join(EIGEN_METHODS)}, got "
-                             f"{json.dumps(value)}")
-        return value
-    if check == "path":
-        if not isinstance(value, str) or not value:
-            raise InputError(f"{path} must be a file path (string), got {json.dumps(value)}")
-        return value
-    raise AssertionError(check)
+def _in_range(x, f: Field) -> bool:
+    try:
+        x = float(x)
+    except OverflowError:  # an integer beyond the double range
+        return False
+    if f.open:
+        return f.lo < x < f.hi
+    return f.lo <= x <= f.hi
 
 
-def _check_section(path: str, data, spec: dict, optional_kind=False) -> dict:
-    if not isinstance(data, dict):
-        raise InputError(f"{path} must be an object, got {json.dumps(data)}")
-    out = {}
-    allowed = set(spec) | ({"kind"} if optional_kind else set())
-    for key in data:
-        if key not in allowed:
-            raise InputError(f"{path}.{key}: unknown field (allowed: {', '.join(sorted(allowed))})")
-    for key, check in spec.items():
-        sub = f"{path}.{key}"
-        if isinstance(check, dict):
-            if key not in data:
-                raise InputError(f"{sub}: missing field")
-            out[key] = _check_section(sub, data[key], check)
-            continue
-        optional = check.endswith("?")
-        check = check.rstrip("?")
-        if key not in data or data[key] is None:
-            if optional:
-                continue
-            raise InputError(f"{sub}: missing field")
-        out[key] = _check_value(sub, data[key], check)
-    return out
+def _check_real(path: str, value, f: Field) -> float:
+    if not _is_number(value):
+        raise InputError(f"{path} must be a number in {range_text(f)}, got {_show(value)}")
+    if isinstance(value, _NonFinite):
+        raise InputError(f"{path}: {value.text} is not a valid number in a case file (allowed: "
+                         f"{range_text(f)})")
+    if not _in_range(value, f):
+        raise InputError(f"{path} must be in {range_text(f)}, got {fmt_number(value)}")
+    return float(value)
+
+
+def _whole(value) -> bool:
+    """An integer, or a float with an integer value (JSON 8.0)."""
+    if isinstance(value, bool):
+        return False
+    return isinstance(value, int) or (isinstance(value, float) and math.isfinite(value)
+                                      and value.is_integer())
+
+
+def _check_int(path: str, value, f: Field) -> int:
+    what = "an even integer" if f.even else "an integer"
+    if not _whole(value):
+        raise InputError(f"{path} must be {what} in {range_text(f)}, got {_show(value)}")
+    if not _in_range(value, f) or (f.even and int(value) % 2):
+        raise InputError(f"{path} must be {what} in {range_text(f)}, got {fmt_number(value)}")
+    return int(value)
+
+
+def _check_point(path: str, value, f: Field) -> list:
+    if not (isinstance(value, list) and len(value) == 2):
+        raise InputError(f"{path} must be a point [x, y] with coordinates in {range_text(f)}, "
+                         f"got {_show(value)}")
+    return [_check_real(f"{path}[{i}]", x, f) for i, x in enumerate(value)]
+
+
+def _check_points(path: str, value, f: Field) -> list:
+    if not (isinstance(value, list) and len(value) == f.count):
+        raise InputError(f"{path} must be {f.count} points [[x, y], ...] with coordinates in "
+                         f"{range_text(f)}, got {_show(value)}")
+    return [_check_point(f"{path}[{i}]", p, f) for i, p in enumerate(value)]
+
+
+def _check_choice(path: str, value, f: Field) -> str:
+    if not (isinstance(value, str) and value in f.choices):
+        raise InputError(f"{path} must be one of {', '.join(f.choices)}, got {_show(value)}")
+    return value
+
+
+def _check_harmonics(path: str, value, f: Field):
+    if value == "auto" and isinstance(value, str):
+        return value
+    if _whole(value) and (value == 1 or _in_range(value, f)):
+        return int(value)
+    raise InputError(f"{path} must be 1, an integer in {range_text(f)} or \"auto\", got "
+                     f"{_show(value)}")
+
+
+def _check_path(path: str, value, f: Field) -> str:
+    if not isinstance(value, str) or not value or "\0" in value:
+        raise InputError(f"{path} must be a file path (string), got {_show(value)}")
+    return value
+
+
+def _check_text(path: str, value, f: Field) -> str:
+    if not isinstance(value, str):
+        raise InputError(f"{path} must be a string, got {_show(value)}")
+    try:
+        value.encode("utf-8")
+    except UnicodeEncodeError:  # a lone surrogate escape (\ud800) would fail in plots, files
+        raise InputError(f"{path} must be valid Unicode text, got {_show(value)}") from None
+    return value
+
+
+_CHECKS = {"real": _check_real, "int": _check_int, "point": _check_point,
+           "points": _check_points, "choice": _check_choice, "harmonics": _check_harmonics,
+           "path": _check_path, "text": _check_text}
+
+
+def check_field(path: str, value, f: Field):
+    """Validates one value against its schema row; returns it normalised."""
+    return _CHECKS[f.type](path, value, f)
+
+
+def _object(path: str, value) -> dict:
+    if not isinstance(value, dict):
+        raise InputError(f"{path} must be an object, got {_show(value)}")
+    return value
+
+
+def _check_section(section: str, data: dict, spec: dict[str, Field], extra=("kind",)) -> dict:
+    """Validates ``data`` against the rows of one (section, kind) of the schema."""
+    tree: dict = {}  # the nesting the dotted names describe: name -> subtree or Field
+    for name, f in spec.items():
+        node = tree
+        *parents, leaf = name.split(".")
+        for p in parents:
+            node = node.setdefault(p, {})
+        node[leaf] = f
+
+    def walk(path: str, data, node: dict, allowed_extra=()) -> dict:
+        data = _object(path, data)
+        allowed = list(node) + list(allowed_extra)
+        for key in data:
+            if key not in allowed:
+                raise InputError(f"{path}.{key}: unknown field (allowed: "
+                                 f"{', '.join(sorted(allowed))})")
+        out = {}
+        for key, sub in node.items():
+            where = f"{path}.{key}"
+            if isinstance(sub, dict):
+                if key not in data:
+                    raise InputError(f"{where}: missing field")
+                out[key] = walk(where, data[key], sub)
+            elif key not in data or (data[key] is None and sub.default != REQUIRED):
+                if sub.default == REQUIRED:
+                    raise InputError(f"{where}: missing field")
+                if sub.default != OPTIONAL:  # absent or null: the default
+                    out[key] = copy.deepcopy(sub.default)
+            else:
+                out[key] = check_field(where, data[key], sub)
+        return out
+
+    return walk(section, data, tree, extra)
+
+
+def _kind_of(section: str, data: dict) -> str:
+    kinds = [k for s, k in SCHEMA if s == section]
+    kind = data.get("kind")
+    if not (isinstance(kind, str) and kind in kinds):
+        raise InputError(f"{section}.kind must be one of {', '.join(kinds)}, got {_show(kind)}")
+    return kind
+
+
+def _resolve(where: str, name: str, base_dir: Path) -> str:
+    p = Path(name)
+    p = p if p.is_absolute() else base_dir / p
+    try:
+        found = p.is_file()
+    except (OSError, ValueError):
+        found = False
+    if not found:
+        raise InputError(f"{where}: file not found: {p}")
+    return str(p)
 
 
 def validate(data: dict, base_dir: Path | str = ".") -> Case:
     """Validates a case dictionary; relative file paths are resolved against ``base_dir``."""
     base_dir = Path(base_dir)
     if not isinstance(data, dict):
-        raise InputError("case must be a JSON object")
+        raise InputError(f"case must be a JSON object, got {_show(data)}")
     for key in data:
-        if key not in ("name", "blade", "damper", "analysis", "description"):
-            raise InputError(f"{key}: unknown top-level field (allowed: name, description, "
-                             "blade, damper, analysis)")
-    for key in ("blade", "damper", "analysis"):
+        if key not in SECTIONS and key not in TOP_LEVEL:
+            raise InputError(f"{key}: unknown top-level field (allowed: "
+                             f"{', '.join(list(TOP_LEVEL) + list(SECTIONS))})")
+    for key in SECTIONS:
         if key not in data:
             raise InputError(f"{key}: missing section")
+    top = {}
+    for key, f in TOP_LEVEL.items():
+        if key in data:
+            top[key] = check_field(key, data[key], f)
+        elif f.default not in (REQUIRED, OPTIONAL):
+            top[key] = f.default
 
-    blade_in = data["blade"]
-    if not isinstance(blade_in, dict):
-        raise InputError("blade must be an object")
-    kind = blade_in.get("kind")
-    if kind == "beam":
-        blade = _check_section("blade", blade_in, _BEAM, optional_kind=True)
-    elif kind == "matrices":
-        blade = _check_section("blade", blade_in, _MATRICES, optional_kind=True)
-        blade.setdefault("zeta", 0.0)
+    sections = {}
+    for section in SECTIONS:
+        raw = _object(section, data[section])
+        kinds = [k for s, k in SCHEMA if s == section]
+        if kinds == [None]:
+            sections[section] = _check_section(section, raw, SCHEMA[(section, None)], extra=())
+        else:
+            kind = _kind_of(section, raw)
+            sections[section] = _check_section(section, raw, SCHEMA[(section, kind)])
+            sections[section]["kind"] = kind
+    blade, damper, analysis = sections["blade"], sections["damper"], sections["analysis"]
+
+    if blade["kind"] == "matrices":
         for key in ("M", "K", "C", "stress_K", "stress_M"):
             if key in blade:
-                p = Path(blade[key])
-                p = p if p.is_absolute() else base_dir / p
-                if not p.is_file():
-                    raise InputError(f"blade.{key}: file not found: {p}")
-                blade[key] = str(p)
-    else:
-        raise InputError(f"blade.kind must be 'beam' or 'matrices', got {json.dumps(kind)}")
-    blade["kind"] = kind
-
-    damper_in = data["damper"]
-    if not isinstance(damper_in, dict):
-        raise InputError("damper must be an object")
-    kind = damper_in.get("kind")
-    specs = {"asymmetric": _ASYMMETRIC, "jenkins": _JENKINS, "table": _TABLE}
-    if kind not in specs:
-        raise InputError("damper.kind must be 'asymmetric', 'jenkins' or 'table', got "
-                         f"{json.dumps(kind)}")
-    damper = _check_section("damper", damper_in, specs[kind], optional_kind=True)
-    damper["kind"] = kind
-    if kind == "table":
-        p = Path(damper["file"])
-        p = p if p.is_absolute() else base_dir / p
-        damper["file"] = str(p)
-        damper["rows"] = read_table_csv(p)
-
-    analysis = _check_section("analysis", data["analysis"], _ANALYSIS)
-    for key, default in ANALYSIS_DEFAULTS.items():
-        if default is not None:
-            analysis.setdefault(key, default)
+                blade[key] = _resolve(f"blade.{key}", blade[key], base_dir)
+    if damper["kind"] == "table":
+        damper["file"] = _resolve("damper.file", damper["file"], base_dir)
+        damper["rows"] = read_table_csv(Path(damper["file"]))
     if not analysis["f_max"] > analysis["f_min"]:
         raise InputError(f"analysis.f_max ({analysis['f_max']}) must exceed analysis.f_min "
                          f"({analysis['f_min']})")
+    return Case(blade=blade, damper=damper, analysis=analysis, name=top["name"],
+                base_dir=base_dir)
 
-    name = data.get("name", "case")
-    if not isinstance(name, str):
-        raise InputError("name must be a string")
-    return Case(blade=blade, damper=damper, analysis=analysis, name=name, base_dir=base_dir)
+
+#: Rows of a damper table: gamma [rad] and |k| [N m/rad] bounds.
+TABLE_GAMMA = Field("real", 1e-12, 1.0, "rad")
+TABLE_K = Field("real", 0.0, 1e15, "N.m/rad")
 
 
 def read_table_csv(path: Path) -> list[tuple[float, float, float]]:
     """Reads a damper table CSV ``gamma,k_re,k_im`` (header optional), checking every row."""
-    if not path.is_file():
-        raise InputError(f"damper.file: file not found: {path}")
+    try:
+        text = path.read_text()
+    except (OSError, UnicodeDecodeError, ValueError) as exc:
+        raise InputError(f"damper.file: cannot read {path}: {exc}") from None
     rows = []
-    for lineno, line in enumerate(path.read_text().splitlines(), 1):
+    for lineno, line in enumerate(text.splitlines(), 1):
         line = line.strip()
         if not line or line.startswith("#"):
             continue
@@ -226,9 +453,11 @@ def read_table_csv(path: Path) -> list[tuple[float, float, float]]:
         if len(values) != 3 or not all(math.isfinite(v) for v in values):
             raise InputError(f"damper.file {path}:{lineno}: expected three finite numbers "
                              f"gamma,k_re,k_im, got {line!r}")
-        if values[0] <= 0 or values[2] < 0:
-            raise InputError(f"damper.file {path}:{lineno}: gamma must be positive and k_im "
-                             f"non-negative, got {line!r}")
+        if not _in_range(values[0], TABLE_GAMMA) or values[2] < 0 or not all(
+                _in_range(abs(v), TABLE_K) for v in values[1:]):
+            raise InputError(f"damper.file {path}:{lineno}: gamma must be in "
+                             f"{range_text(TABLE_GAMMA)}, |k_re| and k_im in "
+                             f"{range_text(TABLE_K)} (k_im non-negative), got {line!r}")
         if rows and values[0] <= rows[-1][0]:
             raise InputError(f"damper.file {path}:{lineno}: gamma must be strictly ascending")
         rows.append(tuple(values))
@@ -244,15 +473,44 @@ def load_case(path: str | Path | None = None) -> Case:
         text = path.read_text()
     except OSError as exc:
         raise InputError(f"case file {path}: {exc.strerror}") from None
+    except (UnicodeDecodeError, ValueError) as exc:
+        raise InputError(f"case file {path}: not a UTF-8 text file ({exc})") from None
+    return loads_case(text, path.resolve().parent, source=f"case file {path}")
 
-    def reject_constant(name):
-        raise InputError(f"case file {path}: {name} is not a valid number in a case file")
 
+def schema_markdown() -> str:
+    """The schema as the Markdown table of the README ("Case files"; a test keeps them equal)."""
+    lines = ["| field | type | allowed | default | meaning |", "| --- | --- | --- | --- | --- |"]
+    for (section, kind), spec in SCHEMA.items():
+        for name, f in spec.items():
+            where = f"`{section}.{name}`" + (f" ({kind})" if kind else "")
+            if f.type in ("real", "int", "point", "points"):
+                allowed = range_text(f)
+                kind_text = {"real": "number", "int": "even integer" if f.even else "integer",
+                             "point": "[x, y]", "points": f"{f.count} points"}[f.type]
+            elif f.type == "harmonics":
+                allowed, kind_text = f"1, {range_text(f)} or `auto`", "integer or `auto`"
+            elif f.type == "choice":
+                allowed, kind_text = ", ".join(f"`{c}`" for c in f.choices), "string"
+            else:
+                allowed, kind_text = "an existing file", "path"
+            default = {REQUIRED: "required", OPTIONAL: "optional"}.get(f.default) \
+                if isinstance(f.default, str) and f.default in (REQUIRED, OPTIONAL) else \
+                f"`{f.default}`" if isinstance(f.default, str) else fmt_number(f.default)
+            lines.append(f"| {where} | {kind_text} | {allowed} | {default} | {f.doc} |")
+    return "\n".join(lines) + "\n"
+
+
+def loads_case(text: str, base_dir: Path | str = ".", source: str = "case") -> Case:
+    """Parses and validates the JSON text of a case; ``source`` names it in messages. NaN and
+    Infinity literals are kept until validation, so that the message names their field."""
     try:
-        data = json.loads(text, parse_constant=reject_constant)
+        data = json.loads(text, parse_constant=_NonFinite)
     except json.JSONDecodeError as exc:
-        raise InputError(f"case file {path}: invalid JSON: {exc}") from None
-    return validate(data, path.resolve().parent)
+        raise InputError(f"{source}: invalid JSON: {exc}") from None
+    except RecursionError:
+        raise InputError(f"{source}: invalid JSON: nested too deeply") from None
+    return validate(data, base_dir)
 
 
 def beam_params(blade: dict) -> dict:

@@ -81,8 +81,11 @@ def _point_json(p: dict) -> dict:
 
 def _emit(args, data: dict, table) -> None:
     if args.json:
-        json.dump(data, sys.stdout, indent=2, allow_nan=False)
-        sys.stdout.write("\n")
+        try:  # all or nothing: a non-finite number is a numerical failure, not half a file
+            text = json.dumps(data, indent=2, allow_nan=False)
+        except ValueError:
+            raise UdmapError("a result is not a finite number", 4) from None
+        sys.stdout.write(text + "\n")
     else:
         table(data)
 
@@ -152,8 +155,8 @@ def cmd_response(args) -> None:
     case = load_case(args.case)
     a = case.analysis
     if not a["f_min"] <= args.freq <= a["f_max"]:
-        raise InputError(f"--freq {args.freq} Hz is outside the band [{a['f_min']}, "
-                         f"{a['f_max']}] Hz of the case")
+        raise InputError(f"--freq {args.freq} Hz is outside the band [analysis.f_min, "
+                         f"analysis.f_max] = [{a['f_min']}, {a['f_max']}] Hz of the case")
     blade, damper = build_blade(case), build_damper(case)
     model = build_model(case, blade, damper)
     data = _summary(model, blade, damper)
@@ -204,8 +207,8 @@ def cmd_dti(args) -> None:
     blade = build_blade(case)
     a = case.analysis
     if args.freq is not None and not a["f_min"] <= args.freq <= a["f_max"]:
-        raise InputError(f"--freq {args.freq} Hz is outside the band [{a['f_min']}, "
-                         f"{a['f_max']}] Hz of the case")
+        raise InputError(f"--freq {args.freq} Hz is outside the band [analysis.f_min, "
+                         f"analysis.f_max] = [{a['f_min']}, {a['f_max']}] Hz of the case")
     points = hbm.dti(blade, case.damper, args.forces, freq=args.freq, peak=args.peak,
                      f_min=a["f_min"], f_max=a["f_max"])
     data = {"points": [{k: _finite(p[k]) for k in ("F_E", "f", "gamma_1", "sigma_1", "gamma_max")}
