@@ -9,7 +9,7 @@ module udmap_damper
   use udmap_damper_loops, only: ramp_type, loop_type, loop_workspace_type, trace_ramp, &
     & cf_only_ramp, steady_loop, loop_moment, loop_stiffness
   use udmap_damper_stiffness_table, only: stiffness_table_type, build_stiffness_table, &
-    & table_stiffness, table_stiffness_derivative, table_stiffness_exact
+    & table_stiffness, table_stiffness_derivative, table_stiffness_exact, table_energy_slope
   use udmap_damper_jenkins, only: jenkins_stiffness, jenkins_stiffness_derivative, &
     & jenkins_loop_moment
   use udmap_damper_measured, only: measured_table_type, new_measured_table, &
@@ -59,6 +59,13 @@ module udmap_damper
     procedure :: set_CF
     !> The steady loop M_r(tau) at amplitude gamma_a, gamma = gamma_a cos(tau).
     procedure :: loop
+    !> Number of jumps of k(gamma) (PHYSICS.md 2.5; asymmetric kind with lift-off only).
+    procedure :: jump_count
+    !> Jump i (ascending gamma_c): its amplitude and the one-sided k and dk/dgamma.
+    procedure :: jump
+    !> lim E(gamma)/gamma at large amplitude [N m] (2 Delta_M when the plateaus bound the
+    !> moment; less with lift-off; huge if it grows without bound).
+    procedure :: energy_slope
   end type damper_type
 
 contains
@@ -265,6 +272,40 @@ contains
         & UDMAP_EINPUT)
     end select
   end subroutine loop
+
+  !> Number of jumps of k(gamma) (PHYSICS.md 2.5).
+  pure integer function jump_count(self) result(n)
+    class(damper_type), intent(in) :: self
+    n = 0
+    if (self%kind == DAMPER_ASYMMETRIC) n = self%table%n_jump
+  end function jump_count
+
+  !> Jump i (1..jump_count, ascending): gamma_c [rad] and the one-sided values
+  !> k(gamma_c-), k(gamma_c+) [N m/rad] and dk/dgamma there [N m/rad^2], at the current CF.
+  pure subroutine jump(self, i, gamma_c, k_minus, k_plus, dk_minus, dk_plus)
+    class(damper_type), intent(in) :: self
+    integer, intent(in) :: i
+    real(wp), intent(out) :: gamma_c
+    complex(wp), intent(out) :: k_minus, k_plus
+    complex(wp), intent(out), optional :: dk_minus, dk_plus
+    gamma_c = self%CF_scale*self%table%jump_gamma(i)
+    k_minus = self%table%jump_k(1, i)
+    k_plus = self%table%jump_k(2, i)
+    if (present(dk_minus)) dk_minus = self%table%jump_dk(1, i)/self%CF_scale
+    if (present(dk_plus)) dk_plus = self%table%jump_dk(2, i)/self%CF_scale
+  end subroutine jump
+
+  !> lim E(gamma)/gamma for gamma -> infinity [N m] (E the energy dissipated per cycle):
+  !> 2 (M_max - M_min) when the plateaus bound the moment (every kind but an asymmetric damper
+  !> whose gaps keep opening); it scales with CF like the moments.
+  pure real(wp) function energy_slope(self) result(dEdp)
+    class(damper_type), intent(in) :: self
+    dEdp = 2*(self%M_max - self%M_min)
+    if (self%kind == DAMPER_ASYMMETRIC) then
+      dEdp = table_energy_slope(self%table)
+      if (dEdp < huge(1.0_wp)) dEdp = self%CF_scale*dEdp
+    end if
+  end function energy_slope
 
   !> Fills the CF-dependent fields of the asymmetric kind from the reference table.
   pure subroutine update_scaled(self)

@@ -15,6 +15,10 @@
 !> Geometries whose plateaus are not frozen (an open gap keeps growing) have no exact
 !> elongation law; there the march goes on to 1000 gamma_b and the loop of the last topology
 !> interval (affine in the amplitude) serves all larger amplitudes.
+!> With lift-off the steady loop can change its shape abruptly between two topology intervals
+!> (PHYSICS.md 2.5): k then jumps at the common end gamma_c of the two intervals, which the
+!> tracer locates exactly (an event coincidence, not a tolerance), and both one-sided values
+!> come from the two intervals' loops. Checking each interval end costs one loop evaluation.
 module udmap_damper_stiffness_table
   use udmap_kinds, only: wp, pi
   use udmap_error, only: error_type, fatal_error, UDMAP_ENUMERIC
@@ -26,12 +30,16 @@ module udmap_damper_stiffness_table
   private
   public :: stiffness_table_type, build_stiffness_table
   public :: table_stiffness, table_stiffness_exact, table_stiffness_derivative
+  public :: table_energy_slope
 
   !> Largest number of topology intervals below gamma_b before giving up.
   integer, parameter :: MAX_INTERVALS = 400
   !> Chebyshev degrees tried per piece; relative tail accepted.
   integer, parameter :: DEG_START = 16, DEG_MAX = 64
   real(wp), parameter :: CHEB_TOL = 1e-11_wp
+  !> A step of k at an interval end larger than this (relative to k_stuck) is a jump; where
+  !> k is continuous the two loops agree to rounding (1e-13 and below).
+  real(wp), parameter :: JUMP_TOL = 1e-8_wp
 
   !> k(gamma) of one asymmetric damper at its reference CF.
   type :: stiffness_table_type
@@ -54,6 +62,11 @@ module udmap_damper_stiffness_table
     integer :: n_piece = 0
     real(wp), allocatable :: piece_a(:), piece_b(:), coef(:,:)
     integer, allocatable :: piece_int(:), piece_deg(:)
+    !> Jumps of k (PHYSICS.md 2.5): amplitudes gamma_c (ascending) and the one-sided values
+    !> k(gamma_c-), k(gamma_c+) with their derivatives dk/dgamma.
+    integer :: n_jump = 0
+    real(wp), allocatable :: jump_gamma(:)
+    complex(wp), allocatable :: jump_k(:,:), jump_dk(:,:)
   end type stiffness_table_type
 
 contains
@@ -153,6 +166,7 @@ contains
       tab%p_end = tab%int_b(i)
     end do
     if (.not. tab%use_elongation) tab%p_end = max(tab%p_end, tab%int_a(n))
+    call find_jumps(tab)
 
   contains
 
@@ -240,7 +254,62 @@ contains
     end if
   end function table_stiffness_derivative
 
+  !> lim E(gamma)/gamma for gamma -> infinity [N m]: the energy dissipated per cycle and unit
+  !> amplitude at large amplitude (2 Delta_M with frozen plateaus; with an open gap that keeps
+  !> growing, from the last interval's loop; huge when its energy grows faster than linearly).
+  pure real(wp) function table_energy_slope(tab) result(dEdp)
+    type(stiffness_table_type), intent(in) :: tab
+    real(wp) :: E0, E1, E2
+    if (tab%use_elongation) then
+      dEdp = 2*(tab%base%M_max - tab%base%M_min)
+    else
+      call loop_energy(tab%loops(tab%n_int), E0, E1, E2)
+      if (.not. tab%loops(tab%n_int)%slipped) then
+        dEdp = 0
+      else if (E2*tab%loops(tab%n_int)%p0 > 1e-9_wp*abs(E1)) then
+        dEdp = huge(1.0_wp)
+      else
+        dEdp = E1
+      end if
+    end if
+  end function table_energy_slope
+
   ! ------------------------------------------------------------------ internals
+
+  !> Records the jumps of k at the interval ends (and where the elongation law takes over).
+  subroutine find_jumps(tab)
+    type(stiffness_table_type), intent(inout) :: tab
+    real(wp) :: g(tab%n_int), scale
+    complex(wp) :: km(tab%n_int), kp(tab%n_int), dkm(tab%n_int), dkp(tab%n_int)
+    integer :: i, m
+    scale = JUMP_TOL*max(abs(tab%k_stuck), tiny(1.0_wp))
+    m = 0
+    do i = 1, tab%n_int
+      if (i == tab%n_int .and. .not. tab%use_elongation) exit
+      if (tab%int_b(i) <= tab%p_const .and. i > 1) cycle
+      m = m + 1
+      g(m) = tab%int_b(i)
+      call loop_stiffness(tab%loops(i), g(m), km(m), dkm(m))
+      if (i == 1) then
+        km(m) = tab%k_small
+        dkm(m) = 0
+      end if
+      if (i < tab%n_int) then
+        call loop_stiffness(tab%loops(i+1), g(m), kp(m), dkp(m))
+      else
+        call elongated_stiffness(tab%base, g(m), kp(m), dkp(m))
+      end if
+      if (abs(kp(m) - km(m)) <= scale) m = m - 1
+    end do
+    tab%n_jump = m
+    tab%jump_gamma = g(1:m)
+    allocate(tab%jump_k(2, m), tab%jump_dk(2, m))
+    tab%jump_k(1,:) = km(1:m)
+    tab%jump_k(2,:) = kp(1:m)
+    tab%jump_dk(1,:) = dkm(1:m)
+    tab%jump_dk(2,:) = dkp(1:m)
+  end subroutine find_jumps
+
 
   !> The constant k of the first topology interval.
   pure complex(wp) function constant_k(loop) result(k)
