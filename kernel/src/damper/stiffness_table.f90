@@ -206,7 +206,8 @@ contains
     real(wp) :: d, E, k_re
     if (gamma <= tab%p_const) then
       k = tab%k_small
-    else if (gamma >= tab%p_end) then
+    else if (gamma > tab%p_end) then
+      ! (at p_end itself the piece below: k(gamma_c-) if k jumps there)
       if (tab%use_elongation) then
         call elongated_stiffness(tab%base, gamma, k)
       else
