@@ -3,7 +3,7 @@
 !> a rotational Jenkins element, or a measured table.
 module udmap_damper
   use udmap_kinds, only: wp, pi
-  use udmap_error, only: error_type, fatal_error, UDMAP_EINPUT
+  use udmap_error, only: error_type, fatal_error, UDMAP_EINPUT, UDMAP_EPHYSICS
   use udmap_damper_params, only: asymmetric_params_type
   use udmap_damper_tracer, only: damper_geometry_type, new_damper_geometry
   use udmap_damper_loops, only: ramp_type, loop_type, loop_workspace_type, trace_ramp, &
@@ -21,6 +21,10 @@ module udmap_damper
 
   !> Damper kinds (case file "kind": "asymmetric", "jenkins", "table").
   integer, parameter, public :: DAMPER_ASYMMETRIC = 1, DAMPER_JENKINS = 2, DAMPER_TABLE = 3
+  !> A face with |mu - tan(beta)| <= NEUTRAL_TOL tan(beta) is a neutral wedge; its one-sided
+  !> dampers are traced at tan(beta) (1 -+ NEUTRAL_SIDE) and agree if they differ by at most
+  !> NEUTRAL_AGREE (relative; continuity in mu gives 1e-6 there, the jump at tan(beta) O(1)).
+  real(wp), parameter :: NEUTRAL_TOL = 1e-8_wp, NEUTRAL_SIDE = 1e-6_wp, NEUTRAL_AGREE = 1e-4_wp
 
   !> A damper and everything derived from it for evaluating k(gamma).
   type :: damper_type
@@ -72,11 +76,25 @@ contains
 
   !> The asymmetric damper of PHYSICS.md 2.1: traces the virgin ramp, the base cycle and the
   !> loops below gamma_b, and tabulates k(gamma).
-  subroutine new_asymmetric_damper(damper, params, error)
+  !>
+  !> The neutral wedge: with mu = tan(beta) of a face the edge of its friction cone is radial,
+  !> the damper can slide along that face at no change of its forces, and the answers for mu
+  !> just below and just above tan(beta) differ by O(1) (blade A at 45 deg: F_lim_backbone
+  !> 25.47 N below, 11.29 N above). The tracer counts rates below TOL_RATE = 1e-9 as zero, so it
+  !> cannot tell the two sides apart within a few 1e-9 of tan(beta): there (NEUTRAL_TOL, ten
+  !> times that) the damper is traced at tan(beta) (1 -+ NEUTRAL_SIDE) and, when both sides
+  !> agree (the limit exists), the side below is used; else an error names mu and the angle.
+  recursive subroutine new_asymmetric_damper(damper, params, error)
     type(damper_type), intent(out) :: damper
     type(asymmetric_params_type), intent(in) :: params
     type(error_type), allocatable, intent(out) :: error
+    integer :: face
 
+    face = neutral_face(params)
+    if (face > 0) then
+      call neutral_wedge(damper, params, face, error)
+      return
+    end if
     call new_damper_geometry(damper%geometry, params, error)
     if (allocated(error)) return
     call trace_ramp(damper%geometry, params%CF, damper%ramp, error)
@@ -92,6 +110,68 @@ contains
     call update_scaled(damper)
     damper%revision = 1
   end subroutine new_asymmetric_damper
+
+  !> The face (1 flat, 2 curved) whose tan(beta) equals mu to NEUTRAL_TOL, else 0.
+  pure integer function neutral_face(params) result(face)
+    type(asymmetric_params_type), intent(in) :: params
+    real(wp) :: t(2)
+    integer :: i
+    face = 0
+    t = tan([params%beta_L_deg, params%beta_R_deg]*pi/180)
+    do i = 1, 2
+      if (abs(params%mu - t(i)) <= NEUTRAL_TOL*t(i)) face = i
+    end do
+  end function neutral_face
+
+  !> The neutral wedge (see new_asymmetric_damper): the one-sided dampers at
+  !> tan(beta) (1 -+ NEUTRAL_SIDE) compared over 1e-2..1e3 gamma_b.
+  recursive subroutine neutral_wedge(damper, params, face, error)
+    type(damper_type), intent(out) :: damper
+    type(asymmetric_params_type), intent(in) :: params
+    integer, intent(in) :: face
+    type(error_type), allocatable, intent(out) :: error
+    type(asymmetric_params_type) :: side
+    type(damper_type) :: above
+    real(wp) :: beta, t, g, worst
+    integer :: i
+    character(len=32) :: bm, bb, bw
+    character(len=:), allocatable :: name
+    if (face == 1) then
+      beta = params%beta_L_deg
+      name = "beta_L_deg"
+    else
+      beta = params%beta_R_deg
+      name = "beta_R_deg"
+    end if
+    t = tan(beta*pi/180)
+    side = params
+    side%mu = t*(1 + NEUTRAL_SIDE)
+    call new_asymmetric_damper(above, side, error)
+    if (allocated(error)) return
+    side%mu = t*(1 - NEUTRAL_SIDE)
+    call new_asymmetric_damper(damper, side, error)
+    if (allocated(error)) return
+    worst = max(abs(above%gamma_b/damper%gamma_b - 1), &
+      & abs(above%M_max - damper%M_max)/(damper%M_max - damper%M_min), &
+      & abs(above%M_min - damper%M_min)/(damper%M_max - damper%M_min), &
+      & abs(above%energy_slope() - damper%energy_slope())/(damper%M_max - damper%M_min))
+    do i = 0, 50
+      g = damper%gamma_b*10.0_wp**(-2 + 5*i/50.0_wp)
+      worst = max(worst, abs(above%stiffness(g) - damper%stiffness(g))/damper%k_stuck)
+    end do
+    if (.not. (worst <= NEUTRAL_AGREE)) then
+      write(bm, '(g0.10)') params%mu
+      write(bb, '(g0.10)') beta
+      write(bw, '(es9.2)') worst
+      call fatal_error(error, "asymmetric damper: mu = "//trim(bm)//" equals tan("//name// &
+        & " = "//trim(bb)//" deg) (a neutral wedge: the friction cone's edge is radial and "// &
+        & "the damper slides along that face at no change of its forces); the loops for mu "// &
+        & "just below and just above tan(beta) differ (by "//trim(adjustl(bw))//" of "// &
+        & "k_stuck), so the answer is not defined: change mu or "//name, UDMAP_EPHYSICS)
+      return
+    end if
+    damper%params%mu = params%mu
+  end subroutine neutral_wedge
 
   !> A rotational Jenkins element: kt [N m/rad] > 0, M_slip [N m] > 0.
   subroutine new_jenkins_damper(damper, kt, M_slip, error)
