@@ -531,8 +531,11 @@ class DesignContext:
             row["gamma_b"], row["M_max"], row["M_min"] = info.gamma_b, info.M_max, info.M_min
             row["lift_off"] = bool(info.lift_off)
             model = self._model_for(case, self._blade(case), damper)
-            F_lim = model.limit_force()
-            row["F_lim"] = F_lim
+            row["F_lim"] = model.limit_force()
+            # PHYSICS.md 5: with lift-off the backbone may level off below F_lim; F_adm and the
+            # HCF check use the smaller limit
+            row["F_lim_backbone"] = model.limit_force_backbone()
+            F_lim = min(row["F_lim"], row["F_lim_backbone"])
             notes = []
             if len(self.forces):
                 p = self._points.backbone(model, self.forces)
@@ -545,6 +548,10 @@ class DesignContext:
                                  "F_E at or above F_lim or the backbone's asymptote)")
                 row["gamma_P"], row["f_res"], row["sigma_a"] = gamma_P, f_res, sigma_a
                 row["hcf_ok"] = (p["hcf_ok"] != 0).tolist()
+                row["jump"] = self._points.jumps(model, len(p))
+                for i in np.flatnonzero(row["jump"]):
+                    notes.append(f"F_E = {self.spec['labels'][i]} N: gamma_P at a jump of "
+                                 "k(gamma) (PHYSICS.md 2.5)")
             stage = "F_adm: "
             if model.has_stress:
                 pts = self._points
@@ -629,6 +636,14 @@ class _PointBuffer:
         if status:
             model._err.check(status)
         return self._view[:n]
+
+    def jumps(self, model, n: int) -> list[bool]:
+        """Per point of the last :meth:`backbone` call: gamma_P at a jump of k."""
+        from .model import _backbone_jumps, c_int_p
+        flags = np.zeros(max(n, 1), dtype=np.intc)
+        model._err.check(_backbone_jumps(model._err.ptr, model._ptr, n,
+                                         flags.ctypes.data_as(c_int_p)))
+        return [bool(f) for f in flags[:n]]
 
     def sigma_a(self, model, forces):
         """The resonant stress amplitudes for ``forces`` (inf where unbounded)."""
