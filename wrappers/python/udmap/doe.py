@@ -353,7 +353,8 @@ _UNIT_GRIDS: dict = {}
 def admissible_force(sigma_at, F_lim: float, sigma_all: float, rtol: float = 1e-12,
                      n: int = ADM_GRID, decades: float = ADM_DECADES, sigma_one=None) -> float:
     """``F_adm``: the largest ``F_E <= F_lim/2`` with ``sigma_a(F_E) <= sigma_all``, solved
-    continuously (INTERFACES.md "Design of experiments output").
+    continuously (INTERFACES.md "Design of experiments output"); the caller passes the smaller
+    of F_lim and F_lim_backbone (PHYSICS.md 5).
 
     ``sigma_at(forces)`` returns the resonant stress amplitudes of the backbone for an array of
     forces (``inf`` where the response is unbounded); ``sigma_one(F)``, if given, the same for
@@ -834,7 +835,7 @@ def add_doe_parser(sub) -> argparse.ArgumentParser:
                    help="scrambled Sobol (default), Latin hypercube, or full grid")
     p.add_argument("--forces", default=None, metavar="F1,...",
                    help="forces F_E [N] with per-force columns gamma_P@F, f_res@F, sigma_a@F, "
-                        "hcf_ok@F")
+                        "hcf_ok@F, jump@F")
     p.add_argument("--seed", type=int, default=0, help="sampling seed (default 0)")
     g = p.add_mutually_exclusive_group()
     g.add_argument("--workers", type=int, default=None, metavar="K",
