@@ -51,6 +51,8 @@ module udmap_damper_loops
     real(wp) :: lo = 0, hi = 0
     !> Cycles traced until the loop repeated.
     integer :: cycles = 0
+    !> The shakedown was extrapolated (the loop repeats only in the limit).
+    logical :: extrapolated = .false.
   end type loop_type
 
   !> The monotonic virgin path: CF ramp, then gamma from 0 up to the upward plateau. States at
@@ -143,7 +145,7 @@ contains
     type(error_type), allocatable, intent(out) :: error
     type(validity_type), intent(inout), optional :: val
     type(damper_state_type) :: st, start
-    real(wp) :: x(12), dx(12), dx_prev(12), rho, room, lambda
+    real(wp) :: x(12), dx(12), dx_prev(12), rho, room, lambda, val_lo, val_hi
     integer :: j, c, n_geo, m
     character(len=40) :: buf, bm, bl, br
 
@@ -153,10 +155,15 @@ contains
       j = j - 1
     end do
     st = ramp%states(j)
+    if (present(val)) then
+      val_lo = val%lo
+      val_hi = val%hi
+    end if
     call trace_gamma(geo, st, p, 1.0_wp, error, val=val)
     if (allocated(error)) return
     n_geo = 0
     dx_prev = 0
+    loop%extrapolated = .false.
     do c = 1, MAX_CYCLES
       start = st
       call reset_record(work%desc)
@@ -188,6 +195,12 @@ contains
           room = 0.5_wp*drift_room(st, dx)
           if (rho < 1 .and. rho/(1 - rho) <= room) then
             lambda = rho/(1 - rho)
+            ! The limit is the fixed point of this cycle map, whatever the transient that
+            ! led there: the amplitudes it holds for are those of the cycles still to come.
+            if (present(val)) then
+              val%lo = val_lo
+              val%hi = val_hi
+            end if
           else if (room < 1e100_wp) then
             ! whole cycles m with rho (rho^m - 1)/(rho - 1) <= room
             lambda = log(1 + room*(rho - 1)/rho)/log(rho)
@@ -200,6 +213,7 @@ contains
             lambda = 0
           end if
           if (lambda > 0) then
+            loop%extrapolated = .true.
             x = x + lambda*dx
             st%q = x(1:3)
             st%w = x(4:6)

@@ -21,7 +21,7 @@
 !> come from the two intervals' loops. Checking each interval end costs one loop evaluation.
 module udmap_damper_stiffness_table
   use udmap_kinds, only: wp, pi
-  use udmap_error, only: error_type, fatal_error, UDMAP_ENUMERIC
+  use udmap_error, only: error_type, fatal_error, UDMAP_ENUMERIC, UDMAP_EPHYSICS
   use udmap_damper_tracer, only: damper_geometry_type, validity_type
   use udmap_damper_loops, only: loop_type, ramp_type, base_cycle_type, loop_workspace_type, &
     & steady_loop, trace_base_cycle, loop_stiffness, loop_k_re, loop_energy, &
@@ -34,6 +34,8 @@ module udmap_damper_stiffness_table
 
   !> Largest number of topology intervals below gamma_b before giving up.
   integer, parameter :: MAX_INTERVALS = 400
+  !> Largest number of intervals whose loops repeat only in the limit (extrapolated shakedown).
+  integer, parameter :: MAX_SHAKEN = 40
   !> Chebyshev degrees tried per piece; relative tail accepted.
   integer, parameter :: DEG_START = 16, DEG_MAX = 64
   real(wp), parameter :: CHEB_TOL = 1e-11_wp
@@ -65,6 +67,8 @@ module udmap_damper_stiffness_table
     !> Jumps of k (PHYSICS.md 2.5): amplitudes gamma_c (ascending) and the one-sided values
     !> k(gamma_c-), k(gamma_c+) with their derivatives dk/dgamma.
     integer :: n_jump = 0
+    !> Intervals whose loops repeat only in the limit (extrapolated shakedown).
+    integer :: n_shaken = 0
     real(wp), allocatable :: jump_gamma(:)
     complex(wp), allocatable :: jump_k(:,:), jump_dk(:,:)
   end type stiffness_table_type
@@ -81,8 +85,9 @@ contains
     type(loop_type), allocatable :: loops(:), tmp(:)
     type(validity_type) :: val
     real(wp) :: p, lo, hi, hi_prev, p_stop
-    integer :: n, i
+    integer :: n, i, n_shaken
     logical :: slip_free_run
+    character(len=32) :: bm, bl, br
 
     call trace_base_cycle(geo, ramp, tab%base, error)
     if (allocated(error)) return
@@ -95,6 +100,7 @@ contains
 
     allocate(loops(16))
     n = 0
+    n_shaken = 0
     ! First interval from a tiny amplitude (every vertex proportional to it: k constant).
     ! Start at 1e-3 gamma_b, where the loop's forces stand well above the resolution of the
     ! preload forces (a tiny loop cannot tell a contact on its cone from one near it), and
@@ -111,6 +117,17 @@ contains
     if (allocated(error)) return
     hi_prev = max(min(loops(1)%hi, p_stop), loops(1)%p0)
     do while (hi_prev < p_stop*(1 - 1e-12_wp))
+      if (n_shaken > MAX_SHAKEN) then
+        ! every amplitude shakes down along its own number of cycles: no affine pieces
+        write(bm, '(g0.8)') geo%mu
+        write(bl, '(g0.8)') geo%beta_deg(1)
+        write(br, '(g0.8)') geo%beta_deg(2)
+        call fatal_error(error, "stiffness table: with mu = "//trim(bm)//", beta_L = "// &
+          & trim(bl)//" deg, beta_R = "//trim(br)//" deg the damper loops shake down only "// &
+          & "asymptotically over a range of amplitudes (the limit loop changes its topology "// &
+          & "from one amplitude to the next): k(gamma) cannot be tabulated", UDMAP_EPHYSICS)
+        return
+      end if
       if (n >= MAX_INTERVALS) then
         call fatal_error(error, "stiffness table: more than 400 changes of the loop topology "// &
           & "below gamma_b", UDMAP_ENUMERIC)
@@ -183,6 +200,8 @@ contains
       call steady_loop(geo, ramp, pp, loops(n), work, error, val)
       if (allocated(error)) return
       tab%lift_off = tab%lift_off .or. loops(n)%opened
+      if (loops(n)%extrapolated) n_shaken = n_shaken + 1
+      tab%n_shaken = n_shaken
     end subroutine next_loop
 
     !> The topology interval [plo, phi] that contains pp.

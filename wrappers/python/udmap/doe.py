@@ -550,9 +550,6 @@ class DesignContext:
                 row["gamma_P"], row["f_res"], row["sigma_a"] = gamma_P, f_res, sigma_a
                 row["hcf_ok"] = (p["hcf_ok"] != 0).tolist()
                 row["jump"] = self._points.jumps(model, len(p))
-                for i in np.flatnonzero(row["jump"]):
-                    notes.append(f"F_E = {self.spec['labels'][i]} N: gamma_P at a jump of "
-                                 "k(gamma) (PHYSICS.md 2.5)")
             stage = "F_adm: "
             if model.has_stress:
                 pts = self._points
