@@ -145,7 +145,7 @@ contains
     type(error_type), allocatable, intent(out) :: error
     type(validity_type), intent(inout), optional :: val
     type(damper_state_type) :: st, start
-    real(wp) :: x(12), dx(12), dx_prev(12), rho, room, lambda, val_lo, val_hi
+    real(wp) :: x(12), dx(12), dx_prev(12), rho, room, lambda
     integer :: j, c, n_geo, m
     character(len=40) :: buf, bm, bl, br
 
@@ -155,10 +155,6 @@ contains
       j = j - 1
     end do
     st = ramp%states(j)
-    if (present(val)) then
-      val_lo = val%lo
-      val_hi = val%hi
-    end if
     call trace_gamma(geo, st, p, 1.0_wp, error, val=val)
     if (allocated(error)) return
     n_geo = 0
@@ -195,12 +191,6 @@ contains
           room = 0.5_wp*drift_room(st, dx)
           if (rho < 1 .and. rho/(1 - rho) <= room) then
             lambda = rho/(1 - rho)
-            ! The limit is the fixed point of this cycle map, whatever the transient that
-            ! led there: the amplitudes it holds for are those of the cycles still to come.
-            if (present(val)) then
-              val%lo = val_lo
-              val%hi = val_hi
-            end if
           else if (room < 1e100_wp) then
             ! whole cycles m with rho (rho^m - 1)/(rho - 1) <= room
             lambda = log(1 + room*(rho - 1)/rho)/log(rho)
