@@ -180,6 +180,8 @@ contains
       ! limit, rho > 1, or one outside it), by a whole number of cycles, so that the state is
       ! one the cycles themselves reach; the next cycle checks it (same_forces). Any affine
       ! combination of equilibria with the same modes is an equilibrium.
+      ! (most loops repeat after one or two cycles: nothing to do for the first)
+      if (c == 1) cycle
       x = [st%q, st%w, st%q_p, st%w_p]
       dx = x - [start%q, start%w, start%q_p, start%w_p]
       n_geo = n_geo + 1

@@ -314,6 +314,13 @@ contains
     integer :: i, m
     scale = JUMP_TOL*max(abs(tab%k_stuck), tiny(1.0_wp))
     m = 0
+    ! the loop changes its shape abruptly only where a contact opens (or the loops shake down
+    ! to a limit): dampers without either pay nothing here
+    if (.not. (tab%lift_off .or. tab%n_shaken > 0)) then
+      tab%n_jump = 0
+      allocate(tab%jump_gamma(0), tab%jump_k(2, 0), tab%jump_dk(2, 0))
+      return
+    end if
     do i = 1, tab%n_int
       if (i == tab%n_int .and. .not. tab%use_elongation) exit
       if (tab%int_b(i) <= tab%p_const .and. i > 1) cycle
