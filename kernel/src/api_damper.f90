@@ -269,6 +269,54 @@ contains
     end do
   end subroutine check_amplitudes
 
+  !> int udmap_damper_jump_count(error, damper, int *n): the number of jumps of k(gamma)
+  !> (PHYSICS.md 2.5; 0 without lift-off).
+  function udmap_damper_jump_count(herr, hdamper, n) result(stat) &
+      & bind(C, name="udmap_damper_jump_count")
+    type(c_ptr), value :: herr, hdamper
+    integer(c_int), intent(out) :: n
+    integer(c_int) :: stat
+    type(damper_type), pointer :: d
+    type(error_type), allocatable :: error
+    call clear_error(herr)
+    n = 0
+    call damper_from_handle(hdamper, d, "damper", error)
+    if (.not. allocated(error)) n = d%jump_count()
+    stat = set_error(herr, error)
+  end function udmap_damper_jump_count
+
+  !> int udmap_damper_jump_get(error, damper, int i, double *gamma_c, double k_minus[2],
+  !> double k_plus[2]): jump i (0-based, ascending gamma_c) at the current CF: its amplitude
+  !> [rad] and the one-sided stiffnesses (re, im) [N m/rad] below and above it.
+  function udmap_damper_jump_get(herr, hdamper, i, gamma_c, k_minus, k_plus) result(stat) &
+      & bind(C, name="udmap_damper_jump_get")
+    type(c_ptr), value :: herr, hdamper
+    integer(c_int), value :: i
+    real(c_double), intent(out) :: gamma_c, k_minus(2), k_plus(2)
+    integer(c_int) :: stat
+    type(damper_type), pointer :: d
+    type(error_type), allocatable :: error
+    real(wp) :: g
+    complex(wp) :: km, kp
+    call clear_error(herr)
+    gamma_c = 0
+    k_minus = 0
+    k_plus = 0
+    call damper_from_handle(hdamper, d, "damper", error)
+    if (.not. allocated(error)) then
+      if (i < 0 .or. i >= d%jump_count()) then
+        call fatal_error(error, "udmap_damper_jump_get: 'i' must lie in [0, number of jumps)", &
+          & UDMAP_EINPUT)
+      else
+        call d%jump(i + 1, g, km, kp)
+        gamma_c = g
+        k_minus = [real(km, wp), aimag(km)]
+        k_plus = [real(kp, wp), aimag(kp)]
+      end if
+    end if
+    stat = set_error(herr, error)
+  end function udmap_damper_jump_get
+
   !> Hands the new damper to C, or frees it on error.
   subroutine finish_new(d, error, hdamper)
     type(damper_type), pointer, intent(inout) :: d

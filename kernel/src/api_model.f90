@@ -10,7 +10,8 @@ module udmap_api_model
   use udmap_blade, only: blade_type
   use udmap_damper, only: damper_type
   use udmap_model, only: model_type, analysis_type, point_type, curve_type, new_model, &
-    & set_damper, limit_force, backbone_curve, backbone, response, response_curves
+    & set_damper, limit_force, backbone_curve, backbone, response, response_curves, &
+    & limit_force_backbone
   implicit none
   private
   public :: c_analysis_type, c_point_type, c_model_type
@@ -36,6 +37,8 @@ module udmap_api_model
   type :: c_model_type
     type(model_type) :: model
     type(curve_type), allocatable :: curves(:)
+    !> Per point of the last udmap_model_backbone call: gamma_P lies at a jump of k.
+    logical, allocatable :: jump(:)
   end type c_model_type
 
 contains
@@ -149,6 +152,58 @@ contains
     stat = set_error(errh, error)
   end function udmap_model_limit_force
 
+  !> int udmap_model_limit_force_backbone(error, model, double *F_lim_backbone) [N]: the level
+  !> F_bb approaches without structural damping (PHYSICS.md 5); equal to F_lim unless lift-off
+  !> lowers it. With zeta = 0 the unbounded flag and, always, hcf_ok and the regime are
+  !> judged against the smaller of F_lim and F_lim_backbone.
+  function udmap_model_limit_force_backbone(errh, modelh, F) result(stat) &
+      & bind(C, name="udmap_model_limit_force_backbone")
+    type(c_ptr), value :: errh, modelh
+    real(c_double), intent(out) :: F
+    integer(c_int) :: stat
+    type(error_type), allocatable :: error
+    type(c_model_type), pointer :: m
+    real(wp) :: value
+    call clear_error(errh)
+    F = 0
+    if (.not.c_associated(modelh)) then
+      error = error_from_handle("model")
+    else
+      call c_f_pointer(modelh, m)
+      call limit_force(m%model, value, error)
+      if (.not.allocated(error)) F = limit_force_backbone(m%model)
+    end if
+    stat = set_error(errh, error)
+  end function udmap_model_limit_force_backbone
+
+  !> int udmap_model_backbone_jumps(error, model, n, int *jump): per point of the last
+  !> udmap_model_backbone call (n of them) 1 if gamma_P is the amplitude gamma_c of a jump of
+  !> k(gamma), with k interpolated between its one-sided values (PHYSICS.md 2.5), else 0.
+  function udmap_model_backbone_jumps(errh, modelh, n, jump) result(stat) &
+      & bind(C, name="udmap_model_backbone_jumps")
+    type(c_ptr), value :: errh, modelh
+    integer(c_int), value :: n
+    integer(c_int), intent(out) :: jump(*)
+    integer(c_int) :: stat
+    type(error_type), allocatable :: error
+    type(c_model_type), pointer :: m
+    call clear_error(errh)
+    if (.not.c_associated(modelh)) then
+      error = error_from_handle("model")
+    else
+      call c_f_pointer(modelh, m)
+      if (.not.allocated(m%jump)) then
+        call fatal_error(error, "backbone_jumps: no udmap_model_backbone call yet", UDMAP_EINPUT)
+      else if (n /= size(m%jump)) then
+        call fatal_error(error, "backbone_jumps: n must equal the number of points of the "// &
+          & "last udmap_model_backbone call", UDMAP_EINPUT)
+      else
+        jump(1:n) = merge(1_c_int, 0_c_int, m%jump)
+      end if
+    end if
+    stat = set_error(errh, error)
+  end function udmap_model_backbone_jumps
+
   !> int udmap_model_backbone_curve(error, model, n, gamma, F_bb, f_res): F_bb [N] and the
   !> peak frequency [Hz] at n amplitudes [rad].
   function udmap_model_backbone_curve(errh, modelh, n, gamma, F_bb, f_res) result(stat) &
@@ -219,11 +274,13 @@ contains
       call fatal_error(error, "backbone: n must not be negative", UDMAP_EINPUT)
     else
       call c_f_pointer(modelh, m)
+      if (allocated(m%jump)) deallocate(m%jump)
       call backbone(m%model, F_E(1:n), p, error)
       if (.not.allocated(error)) then
         do i = 1, n
           call to_c_point(p(i), points(i))
         end do
+        m%jump = p(1:n)%jump
       end if
     end if
     stat = set_error(errh, error)

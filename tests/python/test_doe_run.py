@@ -191,7 +191,9 @@ def test_admissible_force_without_structural_damping(tmp_path):
 
 @pytest.mark.parametrize("vary,needle", [
     (["mu=0.2:3.0"], "damper jams"),  # blade A's damper jams above mu ~ 2.1
-    (["beta_L_deg=4:14", "beta_R_deg=4:14"], "does not repeat"),  # shallow faces ratchet
+    # shallow faces shake down only asymptotically: a limit loop for some, for others (no
+    # limit, or limits that change topology from amplitude to amplitude) a physics error
+    (["beta_L_deg=4:14", "beta_R_deg=4:14"], "only asymptotically"),
 ], ids=["jam", "ratchet"])
 def test_a_design_that_fails_is_recorded_and_the_run_completes(tmp_path, vary, needle):
     out = tmp_path / "fail.csv"

@@ -234,9 +234,10 @@ def _spec(labels=("1", "2.5")):
 
 def test_columns_follow_the_interface():
     assert doe_io.columns(_spec()) == [
-        "design", "mu", "neck_elements", "F_lim", "gamma_b", "M_max", "M_min", "lift_off",
-        "gamma_P@1", "f_res@1", "sigma_a@1", "hcf_ok@1",
-        "gamma_P@2.5", "f_res@2.5", "sigma_a@2.5", "hcf_ok@2.5", "F_adm", "status", "message"]
+        "design", "mu", "neck_elements", "F_lim", "F_lim_backbone", "gamma_b", "M_max",
+        "M_min", "lift_off", "gamma_P@1", "f_res@1", "sigma_a@1", "hcf_ok@1", "jump@1",
+        "gamma_P@2.5", "f_res@2.5", "sigma_a@2.5", "hcf_ok@2.5", "jump@2.5", "F_adm",
+        "status", "message"]
     assert doe.parse_forces("2, 5.50,10") == ([2.0, 5.5, 10.0], ["2", "5.50", "10"])
     with pytest.raises(InputError, match="--forces: 2 is given twice"):
         doe.parse_forces("2,2")

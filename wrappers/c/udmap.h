@@ -127,6 +127,14 @@ int udmap_damper_stiffness(udmap_error error, udmap_damper damper, int n, const 
 int udmap_damper_stiffness_derivative(udmap_error error, udmap_damper damper, int n,
                                       const double *gamma, double *dk_re, double *dk_im);
 
+/* Jumps of k(gamma) (PHYSICS.md 2.5; with lift-off the steady loop can change its shape
+ * abruptly at gamma_c): their number (0 without), and jump i (0-based, ascending) at the current
+ * CF: gamma_c [rad] and the one-sided stiffnesses k(gamma_c-), k(gamma_c+) as {re, im}
+ * [N m/rad]. At gamma_c itself udmap_damper_stiffness returns k(gamma_c-). */
+int udmap_damper_jump_count(udmap_error error, udmap_damper damper, int *n);
+int udmap_damper_jump_get(udmap_error error, udmap_damper damper, int i, double *gamma_c,
+                          double k_minus[2], double k_plus[2]);
+
 /* The steady loop M_r(tau) at amplitude gamma_a, gamma = gamma_a cos(tau), at n equally spaced
  * tau in [0, 2 pi) (asymmetric and jenkins kinds). */
 int udmap_damper_loop(udmap_error error, udmap_damper damper, double gamma_a, int n,
@@ -173,7 +181,7 @@ typedef struct {
   double u_E;      /* displacement amplitude at E [m] */
   double k_re, k_im; /* damper stiffness at gamma_P [N m/rad] */
   int regime;      /* 0 stuck, 1 partial slip, 2 full slip, 3 at or above F_lim */
-  int hcf_ok;      /* F_E <= 0.5 F_lim and sigma_a <= sigma_all */
+  int hcf_ok;      /* F_E <= 0.5 min(F_lim, F_lim_backbone) and sigma_a <= sigma_all */
   int unbounded;   /* zeta = 0 and F_E >= F_lim (or above the backbone's asymptote, if that is
                       lower, e.g. with lift-off): no finite response; numbers are 0, regime 3 */
   int nroots;      /* number of gamma_P roots (all in roots[], ascending; beyond
@@ -182,6 +190,11 @@ typedef struct {
 } udmap_point;
 
 int udmap_model_limit_force(udmap_error error, udmap_model model, double *F_lim);
+/* F_lim_backbone [N] (PHYSICS.md 5): the level F_bb approaches at large amplitude without
+ * structural damping, lim gamma k_Im(gamma) / |phi_E/phi_g|; F_lim unless lift-off lowers it.
+ * The unbounded flag (zeta = 0), hcf_ok and the regime of the points use the smaller of the
+ * two. */
+int udmap_model_limit_force_backbone(udmap_error error, udmap_model model, double *F_lim_backbone);
 
 /* Backbone F_bb(gamma) and the peak frequency for n amplitudes. */
 int udmap_model_backbone_curve(udmap_error error, udmap_model model, int n, const double *gamma,
@@ -190,6 +203,11 @@ int udmap_model_backbone_curve(udmap_error error, udmap_model model, int n, cons
 /* Peaks of the non-linear response for n forces (PHYSICS.md 4). */
 int udmap_model_backbone(udmap_error error, udmap_model model, int n, const double *F_E,
                          udmap_point *points);
+
+/* Per point of the last udmap_model_backbone call (n must equal its count): 1 if gamma_P is the
+ * amplitude gamma_c of a jump of k(gamma) and k (k_re, k_im of the point) is interpolated
+ * between the one-sided values so that the layer peaks at F_E (PHYSICS.md 2.5), else 0. */
+int udmap_model_backbone_jumps(udmap_error error, udmap_model model, int n, int *jump);
 
 /* Response at the excitation frequency f_exc [Hz] for n forces (PHYSICS.md 4, last paragraph).
  * f_exc must lie in the band. The response at a fixed frequency is finite even above F_lim, so

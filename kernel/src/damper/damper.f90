@@ -3,13 +3,13 @@
 !> a rotational Jenkins element, or a measured table.
 module udmap_damper
   use udmap_kinds, only: wp, pi
-  use udmap_error, only: error_type, fatal_error, UDMAP_EINPUT
+  use udmap_error, only: error_type, fatal_error, UDMAP_EINPUT, UDMAP_EPHYSICS
   use udmap_damper_params, only: asymmetric_params_type
   use udmap_damper_tracer, only: damper_geometry_type, new_damper_geometry
   use udmap_damper_loops, only: ramp_type, loop_type, loop_workspace_type, trace_ramp, &
     & cf_only_ramp, steady_loop, loop_moment, loop_stiffness
   use udmap_damper_stiffness_table, only: stiffness_table_type, build_stiffness_table, &
-    & table_stiffness, table_stiffness_derivative, table_stiffness_exact
+    & table_stiffness, table_stiffness_derivative, table_stiffness_exact, table_energy_slope
   use udmap_damper_jenkins, only: jenkins_stiffness, jenkins_stiffness_derivative, &
     & jenkins_loop_moment
   use udmap_damper_measured, only: measured_table_type, new_measured_table, &
@@ -21,6 +21,10 @@ module udmap_damper
 
   !> Damper kinds (case file "kind": "asymmetric", "jenkins", "table").
   integer, parameter, public :: DAMPER_ASYMMETRIC = 1, DAMPER_JENKINS = 2, DAMPER_TABLE = 3
+  !> A face with |mu - tan(beta)| <= NEUTRAL_TOL tan(beta) is a neutral wedge; its one-sided
+  !> dampers are traced at tan(beta) (1 -+ NEUTRAL_SIDE) and agree if they differ by at most
+  !> NEUTRAL_AGREE (relative; continuity in mu gives 1e-6 there, the jump at tan(beta) O(1)).
+  real(wp), parameter :: NEUTRAL_TOL = 1e-8_wp, NEUTRAL_SIDE = 1e-6_wp, NEUTRAL_AGREE = 1e-4_wp
 
   !> A damper and everything derived from it for evaluating k(gamma).
   type :: damper_type
@@ -59,17 +63,38 @@ module udmap_damper
     procedure :: set_CF
     !> The steady loop M_r(tau) at amplitude gamma_a, gamma = gamma_a cos(tau).
     procedure :: loop
+    !> Number of jumps of k(gamma) (PHYSICS.md 2.5; asymmetric kind with lift-off only).
+    procedure :: jump_count
+    !> Jump i (ascending gamma_c): its amplitude and the one-sided k and dk/dgamma.
+    procedure :: jump
+    !> lim E(gamma)/gamma at large amplitude [N m] (2 Delta_M when the plateaus bound the
+    !> moment; less with lift-off; huge if it grows without bound).
+    procedure :: energy_slope
   end type damper_type
 
 contains
 
   !> The asymmetric damper of PHYSICS.md 2.1: traces the virgin ramp, the base cycle and the
   !> loops below gamma_b, and tabulates k(gamma).
-  subroutine new_asymmetric_damper(damper, params, error)
+  !>
+  !> The neutral wedge: with mu = tan(beta) of a face the edge of its friction cone is radial,
+  !> the damper can slide along that face at no change of its forces, and the answers for mu
+  !> just below and just above tan(beta) differ by O(1) (blade A at 45 deg: F_lim_backbone
+  !> 25.47 N below, 11.29 N above). The tracer counts rates below TOL_RATE = 1e-9 as zero, so it
+  !> cannot tell the two sides apart within a few 1e-9 of tan(beta): there (NEUTRAL_TOL, ten
+  !> times that) the damper is traced at tan(beta) (1 -+ NEUTRAL_SIDE) and, when both sides
+  !> agree (the limit exists), the side below is used; else an error names mu and the angle.
+  recursive subroutine new_asymmetric_damper(damper, params, error)
     type(damper_type), intent(out) :: damper
     type(asymmetric_params_type), intent(in) :: params
     type(error_type), allocatable, intent(out) :: error
+    integer :: face
 
+    face = neutral_face(params)
+    if (face > 0) then
+      call neutral_wedge(damper, params, face, error)
+      return
+    end if
     call new_damper_geometry(damper%geometry, params, error)
     if (allocated(error)) return
     call trace_ramp(damper%geometry, params%CF, damper%ramp, error)
@@ -85,6 +110,68 @@ contains
     call update_scaled(damper)
     damper%revision = 1
   end subroutine new_asymmetric_damper
+
+  !> The face (1 flat, 2 curved) whose tan(beta) equals mu to NEUTRAL_TOL, else 0.
+  pure integer function neutral_face(params) result(face)
+    type(asymmetric_params_type), intent(in) :: params
+    real(wp) :: t(2)
+    integer :: i
+    face = 0
+    t = tan([params%beta_L_deg, params%beta_R_deg]*pi/180)
+    do i = 1, 2
+      if (abs(params%mu - t(i)) <= NEUTRAL_TOL*t(i)) face = i
+    end do
+  end function neutral_face
+
+  !> The neutral wedge (see new_asymmetric_damper): the one-sided dampers at
+  !> tan(beta) (1 -+ NEUTRAL_SIDE) compared over 1e-2..1e3 gamma_b.
+  recursive subroutine neutral_wedge(damper, params, face, error)
+    type(damper_type), intent(out) :: damper
+    type(asymmetric_params_type), intent(in) :: params
+    integer, intent(in) :: face
+    type(error_type), allocatable, intent(out) :: error
+    type(asymmetric_params_type) :: side
+    type(damper_type) :: above
+    real(wp) :: beta, t, g, worst
+    integer :: i
+    character(len=32) :: bm, bb, bw
+    character(len=:), allocatable :: name
+    if (face == 1) then
+      beta = params%beta_L_deg
+      name = "beta_L_deg"
+    else
+      beta = params%beta_R_deg
+      name = "beta_R_deg"
+    end if
+    t = tan(beta*pi/180)
+    side = params
+    side%mu = t*(1 + NEUTRAL_SIDE)
+    call new_asymmetric_damper(above, side, error)
+    if (allocated(error)) return
+    side%mu = t*(1 - NEUTRAL_SIDE)
+    call new_asymmetric_damper(damper, side, error)
+    if (allocated(error)) return
+    worst = max(abs(above%gamma_b/damper%gamma_b - 1), &
+      & abs(above%M_max - damper%M_max)/(damper%M_max - damper%M_min), &
+      & abs(above%M_min - damper%M_min)/(damper%M_max - damper%M_min), &
+      & abs(above%energy_slope() - damper%energy_slope())/(damper%M_max - damper%M_min))
+    do i = 0, 50
+      g = damper%gamma_b*10.0_wp**(-2 + 5*i/50.0_wp)
+      worst = max(worst, abs(above%stiffness(g) - damper%stiffness(g))/damper%k_stuck)
+    end do
+    if (.not. (worst <= NEUTRAL_AGREE)) then
+      write(bm, '(g0.10)') params%mu
+      write(bb, '(g0.10)') beta
+      write(bw, '(es9.2)') worst
+      call fatal_error(error, "asymmetric damper: mu = "//trim(bm)//" equals tan("//name// &
+        & " = "//trim(bb)//" deg) (a neutral wedge: the friction cone's edge is radial and "// &
+        & "the damper slides along that face at no change of its forces); the loops for mu "// &
+        & "just below and just above tan(beta) differ (by "//trim(adjustl(bw))//" of "// &
+        & "k_stuck), so the answer is not defined: change mu or "//name, UDMAP_EPHYSICS)
+      return
+    end if
+    damper%params%mu = params%mu
+  end subroutine neutral_wedge
 
   !> A rotational Jenkins element: kt [N m/rad] > 0, M_slip [N m] > 0.
   subroutine new_jenkins_damper(damper, kt, M_slip, error)
@@ -265,6 +352,40 @@ contains
         & UDMAP_EINPUT)
     end select
   end subroutine loop
+
+  !> Number of jumps of k(gamma) (PHYSICS.md 2.5).
+  pure integer function jump_count(self) result(n)
+    class(damper_type), intent(in) :: self
+    n = 0
+    if (self%kind == DAMPER_ASYMMETRIC) n = self%table%n_jump
+  end function jump_count
+
+  !> Jump i (1..jump_count, ascending): gamma_c [rad] and the one-sided values
+  !> k(gamma_c-), k(gamma_c+) [N m/rad] and dk/dgamma there [N m/rad^2], at the current CF.
+  pure subroutine jump(self, i, gamma_c, k_minus, k_plus, dk_minus, dk_plus)
+    class(damper_type), intent(in) :: self
+    integer, intent(in) :: i
+    real(wp), intent(out) :: gamma_c
+    complex(wp), intent(out) :: k_minus, k_plus
+    complex(wp), intent(out), optional :: dk_minus, dk_plus
+    gamma_c = self%CF_scale*self%table%jump_gamma(i)
+    k_minus = self%table%jump_k(1, i)
+    k_plus = self%table%jump_k(2, i)
+    if (present(dk_minus)) dk_minus = self%table%jump_dk(1, i)/self%CF_scale
+    if (present(dk_plus)) dk_plus = self%table%jump_dk(2, i)/self%CF_scale
+  end subroutine jump
+
+  !> lim E(gamma)/gamma for gamma -> infinity [N m] (E the energy dissipated per cycle):
+  !> 2 (M_max - M_min) when the plateaus bound the moment (every kind but an asymmetric damper
+  !> whose gaps keep opening); it scales with CF like the moments.
+  pure real(wp) function energy_slope(self) result(dEdp)
+    class(damper_type), intent(in) :: self
+    dEdp = 2*(self%M_max - self%M_min)
+    if (self%kind == DAMPER_ASYMMETRIC) then
+      dEdp = table_energy_slope(self%table)
+      if (dEdp < huge(1.0_wp)) dEdp = self%CF_scale*dEdp
+    end if
+  end function energy_slope
 
   !> Fills the CF-dependent fields of the asymmetric kind from the reference table.
   pure subroutine update_scaled(self)

@@ -15,7 +15,7 @@ module udmap_damper_loops
   use udmap_error, only: error_type, fatal_error, UDMAP_EPHYSICS
   use udmap_damper_tracer, only: damper_geometry_type, damper_state_type, branch_record_type, &
     & validity_type, virgin_state, ramp_CF, trace_gamma, trace_to_plateau, record_start, &
-    & reset_record, same_forces, CONTACT_OPEN
+    & reset_record, same_forces, contact_forces, CONTACT_OPEN, CONTACT_STICK
   implicit none
   private
   public :: half_loop_type, loop_type, ramp_type, base_cycle_type, loop_workspace_type
@@ -25,6 +25,12 @@ module udmap_damper_loops
 
   !> Cycles after which a loop that has not repeated is an error (a ratcheting damper).
   integer, parameter :: MAX_CYCLES = 200
+  !> A shakedown whose cycle-to-cycle ratio rho is this close to 1 is not extrapolated (a
+  !> neutral wedge: the loop drifts without a limit that 200 cycles could resolve).
+  real(wp), parameter :: RHO_MAX = 1 - 1e-6_wp
+  !> Successive cycle-to-cycle changes of the state count as geometric (one dominant mode)
+  !> when they are parallel to this relative accuracy.
+  real(wp), parameter :: PARALLEL_TOL = 1e-7_wp
 
   !> One branch of a loop: vertices in the travel s from the reversal, with p-derivatives.
   type :: half_loop_type
@@ -45,6 +51,8 @@ module udmap_damper_loops
     real(wp) :: lo = 0, hi = 0
     !> Cycles traced until the loop repeated.
     integer :: cycles = 0
+    !> The shakedown was extrapolated (the loop repeats only in the limit).
+    logical :: extrapolated = .false.
   end type loop_type
 
   !> The monotonic virgin path: CF ramp, then gamma from 0 up to the upward plateau. States at
@@ -137,8 +145,9 @@ contains
     type(error_type), allocatable, intent(out) :: error
     type(validity_type), intent(inout), optional :: val
     type(damper_state_type) :: st, start
-    integer :: j, c
-    character(len=40) :: buf
+    real(wp) :: x(12), dx(12), dx_prev(12), rho, room, lambda
+    integer :: j, c, n_geo, m
+    character(len=40) :: buf, bm, bl, br
 
     j = ramp%n
     do while (j > 1)
@@ -148,6 +157,9 @@ contains
     st = ramp%states(j)
     call trace_gamma(geo, st, p, 1.0_wp, error, val=val)
     if (allocated(error)) return
+    n_geo = 0
+    dx_prev = 0
+    loop%extrapolated = .false.
     do c = 1, MAX_CYCLES
       start = st
       call reset_record(work%desc)
@@ -159,16 +171,66 @@ contains
       call trace_gamma(geo, st, p, 1.0_wp, error, work%asc, val)
       if (allocated(error)) return
       if (same_forces(geo, start, st, ramp%CF)) exit
+      ! Shakedown: with the event sequence of the cycle fixed, one cycle is an affine map of
+      ! the state (q, w at gamma = p, with their p-derivatives), x -> A x + b. When the changes
+      ! of successive cycles are parallel, dx_c+1 = rho dx_c (one dominant mode of A), m more
+      ! cycles add rho (1 - rho^m)/(1 - rho) dx exactly, and m -> infinity gives the limit
+      ! (rho < 1). The jump is taken only as far as the contacts keep their modes with half
+      ! of the room to spare (else the sequence would leave this affine piece: an unstable
+      ! limit, rho > 1, or one outside it), by a whole number of cycles, so that the state is
+      ! one the cycles themselves reach; the next cycle checks it (same_forces). Any affine
+      ! combination of equilibria with the same modes is an equilibrium.
+      ! (most loops repeat after one or two cycles: nothing to do for the first)
+      if (c == 1) cycle
+      x = [st%q, st%w, st%q_p, st%w_p]
+      dx = x - [start%q, start%w, start%q_p, start%w_p]
+      n_geo = n_geo + 1
+      if (any(st%mode /= start%mode)) n_geo = 0
+      if (n_geo >= 3) then
+        rho = dot_product(dx, dx_prev)/max(dot_product(dx_prev, dx_prev), tiny(1.0_wp))
+        if (rho > 0 .and. abs(rho - 1) > 1 - RHO_MAX .and. &
+          & norm2(dx - rho*dx_prev) <= PARALLEL_TOL*norm2(dx)) then
+          room = 0.5_wp*drift_room(st, dx)
+          if (rho < 1 .and. rho/(1 - rho) <= room) then
+            lambda = rho/(1 - rho)
+          else if (room < 1e100_wp) then
+            ! whole cycles m with rho (rho^m - 1)/(rho - 1) <= room
+            lambda = log(1 + room*(rho - 1)/rho)/log(rho)
+            m = 0
+            if (lambda >= 2 .and. lambda < 1e6_wp) m = floor(lambda)
+            lambda = 0
+            if (m >= 2) lambda = rho*(rho**m - 1)/(rho - 1)
+          else
+            ! a drift that no contact stops: the damper ratchets (an error below)
+            lambda = 0
+          end if
+          if (lambda > 0) then
+            loop%extrapolated = .true.
+            x = x + lambda*dx
+            st%q = x(1:3)
+            st%w = x(4:6)
+            st%q_p = x(7:9)
+            st%w_p = x(10:12)
+            n_geo = 0
+          end if
+        end if
+      end if
+      dx_prev = dx
     end do
     if (c > MAX_CYCLES) then
       write(buf, '(es12.5)') p
+      write(bm, '(g0.8)') geo%mu
+      write(bl, '(g0.8)') geo%beta_deg(1)
+      write(br, '(g0.8)') geo%beta_deg(2)
       call fatal_error(error, "damper loop at amplitude "//trim(adjustl(buf))// &
-        & " rad does not repeat after 200 cycles (the damper ratchets or shakes down only "// &
-        & "asymptotically)", UDMAP_EPHYSICS)
+        & " rad does not repeat after 200 cycles: with mu = "//trim(bm)//", beta_L = "// &
+        & trim(bl)//" deg, beta_R = "//trim(br)//" deg the damper ratchets or shakes down "// &
+        & "only asymptotically, without a limit loop (mu = tan(beta) is a neutral wedge)", &
+        & UDMAP_EPHYSICS)
       return
     end if
     loop%p0 = p
-    loop%cycles = c
+    loop%cycles = min(c, MAX_CYCLES)
     call to_half(work%desc, p, -1, loop%desc)
     call to_half(work%asc, p, 1, loop%asc)
     loop%slipped = work%desc%slipped .or. work%asc%slipped
@@ -180,6 +242,31 @@ contains
       loop%lo = p
       loop%hi = p
     end if
+
+  contains
+
+    !> How many steps dx the state can move before a contact reaches the end of its mode
+    !> (N = 0 for a closed contact, |T| = mu N for a stuck one); contact forces are linear in
+    !> (q, w) for fixed modes.
+    real(wp) function drift_room(s0, d) result(room)
+      type(damper_state_type), intent(in) :: s0
+      real(wp), intent(in) :: d(12)
+      real(wp) :: g(3), sl(3), N(3), T(3), dN(3), dT(3), m, dm
+      integer :: i
+      call contact_forces(geo, s0%mode, s0%q, s0%gamma, s0%w, g, sl, N, T)
+      call contact_forces(geo, s0%mode, d(1:3), 0.0_wp, d(4:6), g, sl, dN, dT)
+      room = huge(1.0_wp)
+      do i = 1, 3
+        if (s0%mode(i) == CONTACT_OPEN) cycle
+        if (dN(i) < 0) room = min(room, N(i)/(-dN(i)))
+        if (s0%mode(i) == CONTACT_STICK) then
+          m = geo%mu*N(i) - sign(1.0_wp, T(i))*T(i)
+          dm = geo%mu*dN(i) - sign(1.0_wp, T(i))*dT(i)
+          if (dm < 0) room = min(room, m/(-dm))
+        end if
+      end do
+      room = max(room, 0.0_wp)
+    end function drift_room
   end subroutine steady_loop
 
   !> The base cycle: from the upward plateau of the ramp, down to the next plateau and up again,

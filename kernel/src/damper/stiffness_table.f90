@@ -15,9 +15,13 @@
 !> Geometries whose plateaus are not frozen (an open gap keeps growing) have no exact
 !> elongation law; there the march goes on to 1000 gamma_b and the loop of the last topology
 !> interval (affine in the amplitude) serves all larger amplitudes.
+!> With lift-off the steady loop can change its shape abruptly between two topology intervals
+!> (PHYSICS.md 2.5): k then jumps at the common end gamma_c of the two intervals, which the
+!> tracer locates exactly (an event coincidence, not a tolerance), and both one-sided values
+!> come from the two intervals' loops. Checking each interval end costs one loop evaluation.
 module udmap_damper_stiffness_table
   use udmap_kinds, only: wp, pi
-  use udmap_error, only: error_type, fatal_error, UDMAP_ENUMERIC
+  use udmap_error, only: error_type, fatal_error, UDMAP_ENUMERIC, UDMAP_EPHYSICS
   use udmap_damper_tracer, only: damper_geometry_type, validity_type
   use udmap_damper_loops, only: loop_type, ramp_type, base_cycle_type, loop_workspace_type, &
     & steady_loop, trace_base_cycle, loop_stiffness, loop_k_re, loop_energy, &
@@ -26,12 +30,20 @@ module udmap_damper_stiffness_table
   private
   public :: stiffness_table_type, build_stiffness_table
   public :: table_stiffness, table_stiffness_exact, table_stiffness_derivative
+  public :: table_energy_slope
 
   !> Largest number of topology intervals below gamma_b before giving up.
   integer, parameter :: MAX_INTERVALS = 400
+  !> Largest number of jumps of k in a table with extrapolated shakedowns (limit loops): more
+  !> mean limits that change from one amplitude to the next (blade A's damper at 10 deg: 242 of
+  !> 353 interval ends; at 89 deg 0 of 278, at 5 deg 8 of 17).
+  integer, parameter :: MAX_SHAKEN_JUMPS = 50
   !> Chebyshev degrees tried per piece; relative tail accepted.
   integer, parameter :: DEG_START = 16, DEG_MAX = 64
   real(wp), parameter :: CHEB_TOL = 1e-11_wp
+  !> A step of k at an interval end larger than this (relative to k_stuck) is a jump; where
+  !> k is continuous the two loops agree to rounding (1e-13 and below).
+  real(wp), parameter :: JUMP_TOL = 1e-8_wp
 
   !> k(gamma) of one asymmetric damper at its reference CF.
   type :: stiffness_table_type
@@ -54,6 +66,13 @@ module udmap_damper_stiffness_table
     integer :: n_piece = 0
     real(wp), allocatable :: piece_a(:), piece_b(:), coef(:,:)
     integer, allocatable :: piece_int(:), piece_deg(:)
+    !> Jumps of k (PHYSICS.md 2.5): amplitudes gamma_c (ascending) and the one-sided values
+    !> k(gamma_c-), k(gamma_c+) with their derivatives dk/dgamma.
+    integer :: n_jump = 0
+    !> Intervals whose loops repeat only in the limit (extrapolated shakedown).
+    integer :: n_shaken = 0
+    real(wp), allocatable :: jump_gamma(:)
+    complex(wp), allocatable :: jump_k(:,:), jump_dk(:,:)
   end type stiffness_table_type
 
 contains
@@ -68,8 +87,9 @@ contains
     type(loop_type), allocatable :: loops(:), tmp(:)
     type(validity_type) :: val
     real(wp) :: p, lo, hi, hi_prev, p_stop
-    integer :: n, i
+    integer :: n, i, n_shaken
     logical :: slip_free_run
+    character(len=32) :: bm, bl, br
 
     call trace_base_cycle(geo, ramp, tab%base, error)
     if (allocated(error)) return
@@ -82,6 +102,7 @@ contains
 
     allocate(loops(16))
     n = 0
+    n_shaken = 0
     ! First interval from a tiny amplitude (every vertex proportional to it: k constant).
     ! Start at 1e-3 gamma_b, where the loop's forces stand well above the resolution of the
     ! preload forces (a tiny loop cannot tell a contact on its cone from one near it), and
@@ -99,8 +120,12 @@ contains
     hi_prev = max(min(loops(1)%hi, p_stop), loops(1)%p0)
     do while (hi_prev < p_stop*(1 - 1e-12_wp))
       if (n >= MAX_INTERVALS) then
-        call fatal_error(error, "stiffness table: more than 400 changes of the loop topology "// &
-          & "below gamma_b", UDMAP_ENUMERIC)
+        if (n_shaken > 0) then
+          call shakedown_error()
+        else
+          call fatal_error(error, "stiffness table: more than 400 changes of the loop "// &
+            & "topology below gamma_b", UDMAP_ENUMERIC)
+        end if
         return
       end if
       ! Probe just past the kink, then trace again in the middle of the interval found, far
@@ -153,8 +178,24 @@ contains
       tab%p_end = tab%int_b(i)
     end do
     if (.not. tab%use_elongation) tab%p_end = max(tab%p_end, tab%int_a(n))
+    call find_jumps(tab)
+    ! Limit loops that jump from one amplitude to the next define no function k(gamma).
+    if (n_shaken > 0 .and. tab%n_jump > MAX_SHAKEN_JUMPS) call shakedown_error()
 
   contains
+
+    !> Loops that shake down only asymptotically, to limits whose topology changes from one
+    !> amplitude to the next (hundreds of intervals, most of their ends jumps of k).
+    subroutine shakedown_error()
+      write(bm, '(g0.8)') geo%mu
+      write(bl, '(g0.8)') geo%beta_deg(1)
+      write(br, '(g0.8)') geo%beta_deg(2)
+      call fatal_error(error, "stiffness table: with mu = "//trim(bm)//", beta_L = "// &
+        & trim(bl)//" deg, beta_R = "//trim(br)//" deg the damper loops shake down only "// &
+        & "asymptotically over a range of amplitudes, to limit loops that change their "// &
+        & "topology from one amplitude to the next: k(gamma) cannot be tabulated", &
+        & UDMAP_EPHYSICS)
+    end subroutine shakedown_error
 
     !> Traces the loop at amplitude pp as the next topology interval.
     subroutine next_loop(pp)
@@ -169,6 +210,8 @@ contains
       call steady_loop(geo, ramp, pp, loops(n), work, error, val)
       if (allocated(error)) return
       tab%lift_off = tab%lift_off .or. loops(n)%opened
+      if (loops(n)%extrapolated) n_shaken = n_shaken + 1
+      tab%n_shaken = n_shaken
     end subroutine next_loop
 
     !> The topology interval [plo, phi] that contains pp.
@@ -192,7 +235,8 @@ contains
     real(wp) :: d, E, k_re
     if (gamma <= tab%p_const) then
       k = tab%k_small
-    else if (gamma >= tab%p_end) then
+    else if (gamma > tab%p_end) then
+      ! (at p_end itself the piece below: k(gamma_c-) if k jumps there)
       if (tab%use_elongation) then
         call elongated_stiffness(tab%base, gamma, k)
       else
@@ -240,7 +284,69 @@ contains
     end if
   end function table_stiffness_derivative
 
+  !> lim E(gamma)/gamma for gamma -> infinity [N m]: the energy dissipated per cycle and unit
+  !> amplitude at large amplitude (2 Delta_M with frozen plateaus; with an open gap that keeps
+  !> growing, from the last interval's loop; huge when its energy grows faster than linearly).
+  pure real(wp) function table_energy_slope(tab) result(dEdp)
+    type(stiffness_table_type), intent(in) :: tab
+    real(wp) :: E0, E1, E2
+    if (tab%use_elongation) then
+      dEdp = 2*(tab%base%M_max - tab%base%M_min)
+    else
+      call loop_energy(tab%loops(tab%n_int), E0, E1, E2)
+      if (.not. tab%loops(tab%n_int)%slipped) then
+        dEdp = 0
+      else if (E2*tab%loops(tab%n_int)%p0 > 1e-9_wp*abs(E1)) then
+        dEdp = huge(1.0_wp)
+      else
+        dEdp = E1
+      end if
+    end if
+  end function table_energy_slope
+
   ! ------------------------------------------------------------------ internals
+
+  !> Records the jumps of k at the interval ends (and where the elongation law takes over).
+  subroutine find_jumps(tab)
+    type(stiffness_table_type), intent(inout) :: tab
+    real(wp) :: g(tab%n_int), scale
+    complex(wp) :: km(tab%n_int), kp(tab%n_int), dkm(tab%n_int), dkp(tab%n_int)
+    integer :: i, m
+    scale = JUMP_TOL*max(abs(tab%k_stuck), tiny(1.0_wp))
+    m = 0
+    ! the loop changes its shape abruptly only where a contact opens (or the loops shake down
+    ! to a limit): dampers without either pay nothing here
+    if (.not. (tab%lift_off .or. tab%n_shaken > 0)) then
+      tab%n_jump = 0
+      allocate(tab%jump_gamma(0), tab%jump_k(2, 0), tab%jump_dk(2, 0))
+      return
+    end if
+    do i = 1, tab%n_int
+      if (i == tab%n_int .and. .not. tab%use_elongation) exit
+      if (tab%int_b(i) <= tab%p_const .and. i > 1) cycle
+      m = m + 1
+      g(m) = tab%int_b(i)
+      call loop_stiffness(tab%loops(i), g(m), km(m), dkm(m))
+      if (i == 1) then
+        km(m) = tab%k_small
+        dkm(m) = 0
+      end if
+      if (i < tab%n_int) then
+        call loop_stiffness(tab%loops(i+1), g(m), kp(m), dkp(m))
+      else
+        call elongated_stiffness(tab%base, g(m), kp(m), dkp(m))
+      end if
+      if (abs(kp(m) - km(m)) <= scale) m = m - 1
+    end do
+    tab%n_jump = m
+    tab%jump_gamma = g(1:m)
+    allocate(tab%jump_k(2, m), tab%jump_dk(2, m))
+    tab%jump_k(1,:) = km(1:m)
+    tab%jump_k(2,:) = kp(1:m)
+    tab%jump_dk(1,:) = dkm(1:m)
+    tab%jump_dk(2,:) = dkp(1:m)
+  end subroutine find_jumps
+
 
   !> The constant k of the first topology interval.
   pure complex(wp) function constant_k(loop) result(k)

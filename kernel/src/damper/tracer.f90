@@ -45,6 +45,8 @@ module udmap_damper_tracer
     real(wp) :: cn(3) = 0, ct(3) = 0
     !> Normal and tangential stiffnesses [N/m] and the friction coefficient.
     real(wp) :: kn(3) = 0, kt(3) = 0, mu = 0
+    !> Face inclinations [deg] (for messages).
+    real(wp) :: beta_deg(2) = 0
     !> Force rate per unit gamma (max of kn |cn|, kt |ct|), a scale for tolerances [N/rad].
     real(wp) :: rate_scale = 0
     !> Moment rate per unit gamma (rate_scale times the largest lever arm) [N m/rad].
@@ -125,6 +127,7 @@ contains
       geo%ct(i) = dot_product(t, a)
     end do
     geo%mu = params%mu
+    geo%beta_deg = [params%beta_L_deg, params%beta_R_deg]
     geo%rate_scale = max(maxval(geo%kn*abs(geo%cn)), maxval(geo%kt*abs(geo%ct)))
     geo%moment_scale = geo%rate_scale*max(maxval(abs(geo%cn)), maxval(abs(geo%ct)))
   end subroutine new_damper_geometry

@@ -18,6 +18,13 @@
 !> with dk/du from the damper's stiffness derivative (no receptance evaluation).
 !> Two Newton steps usually reach rtol = 1e-12.
 !>
+!> Jumps of k(gamma) (PHYSICS.md 2.5): F_bb jumps with k at gamma_c. Grid intervals that hold
+!> a jump are split there into continuous pieces, each bracketed and refined as above, and the
+!> jump itself is a root when F_E lies between F_bb(gamma_c-) and F_bb(gamma_c+): gamma_P = gamma_c
+!> with k = (1 - s) k- + s k+, s solved by safeguarded Newton (the envelope theorem again,
+!> d ln F_bb/ds = Re(H_gg (k+ - k-)/(1 + k H_gg))). gamma_c is exact (the tracer's event
+!> coincidence), so no answer depends on rtol beyond rtol itself.
+!>
 !> The peak frequency matters beyond rtol: the response curve is tangent to F_E there, and a
 !> frequency error delta tilts it by delta/zeta^2 in d ln F/d ln omega. The layer peak search
 !> returns its last (superlinear) secant estimate, which is good to far better than rtol.
@@ -27,7 +34,8 @@ module udmap_backbone
   use udmap_layer, only: layer_peak_type, layer_peak, PEAK_OK, PEAK_BELOW_BAND
   use udmap_eigen_start, only: secular_root, direct_eigen_start
   use udmap_model_data, only: model_type, point_type, backbone_eval_type, limit_force_or_huge, &
-    & fill_point, check_forces, damper_fingerprint, EIGEN_AUTO, EIGEN_DIRECT, REGIME_LIMIT
+    & fill_point, check_forces, damper_fingerprint, limit_force_backbone, EIGEN_AUTO, &
+    & EIGEN_DIRECT, REGIME_LIMIT
   implicit none
   private
   public :: backbone_curve, backbone, ensure_table, cover_table, eval_backbone, backbone_roots
@@ -62,7 +70,7 @@ contains
   !> start%peak%omega + Re sqrt(lambda) - Re sqrt(start%lambda), else at Re sqrt(lambda). With a
   !> start, its psi slope is the hint of the first Newton step and its peak gives the width.
   subroutine layer_backbone(model, gamma, rtol, e, error, start, lambda_start, loose, predict, &
-      & offset_guess)
+      & offset_guess, k_fixed, dk_fixed)
     type(model_type), intent(inout) :: model
     real(wp), intent(in) :: gamma, rtol
     type(backbone_eval_type), intent(out) :: e
@@ -76,10 +84,17 @@ contains
     logical, intent(in), optional :: predict
     !> Predicted omega_peak - Re sqrt(lambda) [rad/s].
     real(wp), intent(in), optional :: offset_guess
+    !> The damper stiffness and dk/dgamma to use instead of the damper's at gamma (the
+    !> one-sided or interpolated values at a jump).
+    complex(wp), intent(in), optional :: k_fixed, dk_fixed
     real(wp) :: omega0, width, tol, dpsi
     logical :: ok
     e%gamma = gamma
-    e%k = model%damper%stiffness(gamma)
+    if (present(k_fixed)) then
+      e%k = k_fixed
+    else
+      e%k = model%damper%stiffness(gamma)
+    end if
     if (model%analysis%eigen_method == EIGEN_DIRECT) then
       call direct_eigen_start(model%blade, e%k, model%analysis%dense_max, e%lambda, error)
       if (allocated(error)) return
@@ -127,7 +142,11 @@ contains
       return
     end if
     e%F_bb = gamma/e%peak%amplitude
-    e%slope = backbone_slope(model, e)
+    if (present(dk_fixed)) then
+      e%slope = 1 + real(e%peak%r%gg*gamma*dk_fixed/(1 + e%k*e%peak%r%gg), wp)
+    else
+      e%slope = backbone_slope(model, e)
+    end if
   end subroutine layer_backbone
 
   !> Re sqrt(lambda) in real arithmetic.
@@ -231,6 +250,7 @@ contains
     if (grid_gamma(model, j_lo + 1) <= gamma_lin) j_lo = j_lo + 1
     model%table%j_lo = j_lo
     model%table%j_hi = j_lo - 1
+    model%table%n_side = 0
     model%table%revision = model%damper%revision
     model%table%fingerprint = damper_fingerprint(model%damper)
     if (j_limit(model) <= j_lo) then
@@ -412,29 +432,33 @@ contains
     end associate
   end subroutine eval_backbone
 
-  !> The root of F_bb = F_E between nodes j and j+1 (which bracket it) to rtol in gamma,
-  !> with the layer peak there.
-  subroutine refine_root(model, F_E, j, e, error)
+  !> The root of F_bb = F_E between the backbone points na and nb (grid nodes or the sides of a
+  !> jump, which bracket it, F_bb continuous between them) to rtol in gamma, with the layer
+  !> peak there.
+  subroutine refine_root(model, F_E, na, nb, e, error)
     type(model_type), intent(inout) :: model
     real(wp), intent(in) :: F_E
-    integer, intent(in) :: j
+    type(backbone_eval_type), intent(in) :: na, nb
     type(backbone_eval_type), intent(out) :: e
     type(error_type), allocatable, intent(out) :: error
     type(backbone_eval_type) :: prev
     real(wp) :: ua, ub, fa, fb, sa, sb, du, t, p, dp, lo, hi, x, f, dx, tol
     integer :: it
     logical :: have_prev, rising, full
-    associate(na => model%table%node(j), nb => model%table%node(j + 1))
-      ua = log(na%gamma)
-      ub = log(nb%gamma)
-      fa = log(na%F_bb/F_E)
-      fb = log(nb%F_bb/F_E)
-      sa = na%slope
-      sb = nb%slope
-    end associate
+    ua = log(na%gamma)
+    ub = log(nb%gamma)
+    fa = log(na%F_bb/F_E)
+    fb = log(nb%F_bb/F_E)
+    sa = na%slope
+    sb = nb%slope
     if (fb == 0) then
-      call eval_backbone(model, model%table%node(j + 1)%gamma, e, error, &
-        & start=model%table%node(j + 1))
+      if (.not.(abs(nb%k - model%damper%stiffness(nb%gamma)) > 0)) then
+        call eval_backbone(model, nb%gamma, e, error, start=nb)
+      else
+        ! the upper side of a jump: its own k
+        call layer_backbone(model, nb%gamma, peak_rtol(model), e, error, start=nb, &
+          & k_fixed=nb%k, dk_fixed=model%damper%stiffness_derivative(nb%gamma))
+      end if
       return
     end if
     du = ub - ua
@@ -463,10 +487,9 @@ contains
       if (have_prev) then
         call eval_backbone(model, exp(x), e, error, start=prev, loose=.not.full)
       else if (t < 0.5_wp) then
-        call eval_backbone(model, exp(x), e, error, start=model%table%node(j), loose=.not.full)
+        call eval_backbone(model, exp(x), e, error, start=na, loose=.not.full)
       else
-        call eval_backbone(model, exp(x), e, error, start=model%table%node(j + 1), &
-          & loose=.not.full)
+        call eval_backbone(model, exp(x), e, error, start=nb, loose=.not.full)
       end if
       if (allocated(error)) return
       f = log(e%F_bb/F_E)
@@ -497,16 +520,26 @@ contains
   end subroutine refine_root
 
   !> Every root of F_bb(gamma) = F_E (ascending) and, at the largest, the backbone point.
-  !> The table must already cover F_E (cover_table).
-  subroutine backbone_roots(model, F_E, roots, e, error)
+  !> The table must already cover F_E (cover_table). A root in a jump of k (PHYSICS.md 2.5)
+  !> is gamma_c; `jump` says whether the largest root is one.
+  subroutine backbone_roots(model, F_E, roots, e, error, jump)
     type(model_type), intent(inout) :: model
     real(wp), intent(in) :: F_E
     real(wp), allocatable, intent(out) :: roots(:)
     type(backbone_eval_type), intent(out) :: e
     type(error_type), allocatable, intent(out) :: error
+    logical, intent(out), optional :: jump
+    type(backbone_eval_type) :: left, last
     real(wp) :: found(256)
-    integer :: j, n
+    integer :: j, n, i, i_next
+    logical :: last_jump, have_last
     n = 0
+    last_jump = .false.
+    have_last = .false.
+    if (present(jump)) jump = .false.
+    call ensure_sides(model, error)
+    if (allocated(error)) return
+    i_next = 1
     associate(t => model%table)
       if (F_E <= t%node(t%j_lo)%F_bb) then
         ! stuck: F_bb is linear through the origin below the first node
@@ -515,24 +548,162 @@ contains
         call eval_backbone(model, found(1), e, error)
         if (allocated(error)) return
       end if
+      if (n == 1) then
+        last = e
+        have_last = .true.
+      end if
+      do while (i_next <= t%n_side)
+        if (t%side(1, i_next)%gamma >= t%node(t%j_lo)%gamma) exit
+        i_next = i_next + 1
+      end do
       do j = t%j_lo, t%j_hi - 1
-        ! a root in (gamma_j, gamma_j+1]: a sign change, or a zero at gamma_j+1
-        if (.not.((t%node(j)%F_bb < F_E .and. t%node(j + 1)%F_bb >= F_E) .or. &
-            & (t%node(j)%F_bb > F_E .and. t%node(j + 1)%F_bb <= F_E))) cycle
-        if (n >= size(found)) exit
-        call refine_root(model, F_E, j, e, error)
+        ! jumps at gamma_c in [gamma_j, gamma_j+1) split the interval into continuous pieces
+        left = t%node(j)
+        do i = i_next, t%n_side
+          if (t%side(1, i)%gamma >= t%node(j + 1)%gamma) exit
+          i_next = i + 1
+          if (t%side(1, i)%gamma > left%gamma) call piece(left, t%side(1, i))
+          if (allocated(error)) return
+          ! the jump: F_bb takes every value between its sides at gamma_c
+          if (brackets(t%side(1, i)%F_bb, t%side(2, i)%F_bb) .and. n < size(found)) then
+            call jump_root(model, F_E, t%side(1, i), t%side(2, i), last, error)
+            if (allocated(error)) return
+            n = n + 1
+            found(n) = last%gamma
+            last_jump = .true.
+            have_last = .true.
+          end if
+          left = t%side(2, i)
+        end do
+        call piece(left, t%node(j + 1))
         if (allocated(error)) return
-        n = n + 1
-        found(n) = e%gamma
       end do
     end associate
+    if (have_last) e = last
+    if (present(jump)) jump = last_jump
     if (n == 0) then
       call fatal_error(error, "backbone: no amplitude found for the force (internal: the "// &
         & "table does not cover it)", UDMAP_ENUMERIC)
       return
     end if
     roots = found(1:n)
+
+  contains
+
+    !> A root in (F_a, F_b]: a sign change, or a zero at the upper end.
+    logical function brackets(Fa, Fb)
+      real(wp), intent(in) :: Fa, Fb
+      brackets = (Fa < F_E .and. Fb >= F_E) .or. (Fa > F_E .and. Fb <= F_E)
+    end function brackets
+
+    !> The root on the continuous piece from a to b, if they bracket one.
+    subroutine piece(a, b)
+      type(backbone_eval_type), intent(in) :: a, b
+      if (.not.brackets(a%F_bb, b%F_bb) .or. n >= size(found)) return
+      call refine_root(model, F_E, a, b, last, error)
+      if (allocated(error)) return
+      n = n + 1
+      found(n) = last%gamma
+      last_jump = .false.
+      have_last = .true.
+    end subroutine piece
   end subroutine backbone_roots
+
+  !> The backbone points at both sides of every jump of k (PHYSICS.md 2.5) that the grid
+  !> reaches, each computed once per table.
+  subroutine ensure_sides(model, error)
+    type(model_type), intent(inout) :: model
+    type(error_type), allocatable, intent(out) :: error
+    type(backbone_eval_type), allocatable :: grown(:,:)
+    real(wp) :: gamma_c
+    complex(wp) :: km, kp, dkm, dkp
+    integer :: i, j, n
+    associate(t => model%table)
+      n = model%damper%jump_count()
+      if (n == 0 .or. t%n_side == n) return
+      if (.not.allocated(t%side)) then
+        allocate(t%side(2, n))
+      else if (size(t%side, 2) /= n) then
+        allocate(grown(2, n))
+        call move_alloc(grown, t%side)
+        t%n_side = 0
+      end if
+      do i = t%n_side + 1, n
+        call model%damper%jump(i, gamma_c, km, kp, dkm, dkp)
+        if (gamma_c >= t%node(t%j_hi)%gamma) exit
+        if (gamma_c <= t%node(t%j_lo)%gamma) then
+          ! below the grid k is constant: no jump can lie there; keep the bookkeeping simple
+          t%side(1, i) = t%node(t%j_lo)
+          t%side(2, i) = t%node(t%j_lo)
+          t%n_side = i
+          cycle
+        end if
+        j = nint(model%analysis%grid_per_decade*log10(gamma_c/t%gamma_ref))
+        j = min(max(j, t%j_lo), t%j_hi)
+        call layer_backbone(model, gamma_c, peak_rtol(model), t%side(1, i), error, &
+          & start=t%node(j), offset_guess=interp_offset(model, gamma_c), k_fixed=km, &
+          & dk_fixed=dkm)
+        if (allocated(error)) return
+        call layer_backbone(model, gamma_c, peak_rtol(model), t%side(2, i), error, &
+          & start=t%side(1, i), k_fixed=kp, dk_fixed=dkp)
+        if (allocated(error)) return
+        t%n_side = i
+      end do
+    end associate
+  end subroutine ensure_sides
+
+  !> The root of F_bb = F_E inside the jump between the sides a (k-) and b (k+) at gamma_c:
+  !> the layer with k = (1 - s) k- + s k+ whose peak is F_E (PHYSICS.md 2.5). ln F_bb(s) is
+  !> smooth in s with the slope Re(H_gg (k+ - k-)/(1 + k H_gg)) at the peak (envelope
+  !> theorem); safeguarded Newton in the bracket [0, 1] to rtol.
+  subroutine jump_root(model, F_E, a, b, e, error)
+    type(model_type), intent(inout) :: model
+    real(wp), intent(in) :: F_E
+    type(backbone_eval_type), intent(in) :: a, b
+    type(backbone_eval_type), intent(out) :: e
+    type(error_type), allocatable, intent(out) :: error
+    type(backbone_eval_type) :: prev
+    complex(wp) :: dk
+    real(wp) :: s, lo, hi, f, fa, fb, df, ds
+    integer :: it
+    logical :: rising
+    dk = b%k - a%k
+    fa = log(a%F_bb/F_E)
+    fb = log(b%F_bb/F_E)
+    if (fb == 0) then
+      e = b
+      return
+    end if
+    rising = fb > fa
+    lo = 0
+    hi = 1
+    s = fa/(fa - fb)
+    prev = a
+    if (s > 0.5_wp) prev = b
+    do it = 1, 100
+      call layer_backbone(model, a%gamma, peak_rtol(model), e, error, start=prev, &
+        & k_fixed=a%k + s*dk, dk_fixed=(1 - s)*model%damper%stiffness_derivative(a%gamma))
+      if (allocated(error)) return
+      f = log(e%F_bb/F_E)
+      if ((f > 0) .eqv. rising) then
+        hi = s
+      else
+        lo = s
+      end if
+      df = real(e%peak%r%gg*dk/(1 + e%k*e%peak%r%gg), wp)
+      ds = 0
+      if (df /= 0) ds = -f/df
+      if (f == 0 .or. abs(f) <= 0.1_wp*model%analysis%rtol .or. hi - lo <= 1e-15_wp) return
+      prev = e
+      if (.not.(s + ds > lo .and. s + ds < hi)) then
+        s = 0.5_wp*(lo + hi)
+      else
+        s = s + ds
+      end if
+    end do
+    call fatal_error(error, "backbone: the root inside a jump of k(gamma) did not converge", &
+      & UDMAP_ENUMERIC)
+  end subroutine jump_root
 
   !> F_bb(gamma) [N] and the peak frequency f_res [Hz] for amplitudes gamma [rad].
   subroutine backbone_curve(model, gamma, F_bb, f_res, error)
@@ -582,7 +753,7 @@ contains
     type(backbone_eval_type) :: e
     real(wp), allocatable :: roots(:)
     real(wp) :: F_lim, F_max, F_reach
-    logical :: reached
+    logical :: reached, jump
     integer :: i
     allocate(points(size(F_E)))
     call check_forces(F_E, "backbone", error)
@@ -590,10 +761,11 @@ contains
     if (size(F_E) == 0) return
     call ensure_table(model, error)
     if (allocated(error)) return
-    F_lim = limit_force_or_huge(model)
     ! without structural damping friction bounds the response only below the asymptote of
     ! F_bb: F_lim in theory, lower when the damper dissipates less than 2 Delta_M per unit
-    ! rotation at large amplitude (e.g. with lift-off); forces F_bb never reaches are unbounded
+    ! rotation at large amplitude (e.g. with lift-off, F_lim_backbone of PHYSICS.md 5); forces
+    ! F_bb never reaches are unbounded
+    F_lim = min(limit_force_or_huge(model), limit_force_backbone(model))
     F_max = 0
     do i = 1, size(F_E)
       if (.not.(model%undamped .and. F_E(i) >= F_lim)) F_max = max(F_max, F_E(i))
@@ -616,9 +788,10 @@ contains
         allocate(points(i)%roots(0))
         cycle
       end if
-      call backbone_roots(model, F_E(i), roots, e, error)
+      call backbone_roots(model, F_E(i), roots, e, error, jump)
       if (allocated(error)) return
       call fill_point(model, points(i), F_E(i), F_lim, e%peak%omega, e%peak%r, e%k, roots)
+      points(i)%jump = jump
     end do
   end subroutine backbone
 end module udmap_backbone

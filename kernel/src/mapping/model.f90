@@ -12,7 +12,7 @@
 !>   call response_curves(model, F_E, layers, curves, error)
 module udmap_model
   use udmap_model_data, only: analysis_type, point_type, curve_type, model_type, new_model, &
-    & set_damper, limit_force, EIGEN_AUTO, EIGEN_DIRECT, EIGEN_MODAL, REGIME_STUCK, REGIME_PARTIAL_SLIP, &
+    & set_damper, limit_force, limit_force_backbone, EIGEN_AUTO, EIGEN_DIRECT, EIGEN_MODAL, REGIME_STUCK, REGIME_PARTIAL_SLIP, &
     & REGIME_FULL_SLIP, REGIME_LIMIT, BRANCH_LOWER, BRANCH_UPPER, BRANCH_TURNING
   use udmap_backbone, only: backbone_curve, backbone
   use udmap_response, only: response
@@ -20,6 +20,7 @@ module udmap_model
   implicit none
   private
   public :: analysis_type, point_type, curve_type, model_type
+  public :: limit_force_backbone
   public :: new_model, set_damper, limit_force, backbone_curve, backbone, response, &
     & response_curves
   public :: EIGEN_AUTO, EIGEN_DIRECT, EIGEN_MODAL

@@ -14,7 +14,7 @@ module udmap_model_data
   public :: analysis_type, point_type, curve_type, model_type, backbone_table_type, &
     & backbone_eval_type
   public :: new_model, set_damper, limit_force, limit_force_or_huge, regime_of, fill_point, &
-    & check_forces, &
+    & check_forces, limit_force_backbone, &
     & damper_fingerprint
   public :: EIGEN_AUTO, EIGEN_DIRECT, EIGEN_MODAL
   public :: REGIME_STUCK, REGIME_PARTIAL_SLIP, REGIME_FULL_SLIP, REGIME_LIMIT
@@ -88,6 +88,9 @@ module udmap_model_data
     logical :: hcf_ok = .false.
     !> No structural damping and F_E >= F_lim: no finite response (numbers are 0).
     logical :: unbounded = .false.
+    !> gamma_P is the amplitude gamma_c of a jump of k(gamma) and k is interpolated between
+    !> its one-sided values (PHYSICS.md 2.5).
+    logical :: jump = .false.
     !> Every gamma_P root [rad], ascending.
     real(wp), allocatable :: roots(:)
   end type point_type
@@ -128,6 +131,10 @@ module udmap_model_data
     !> Nodes present; below node(j_lo)%gamma the damper is stuck (k constant), F_bb linear.
     integer :: j_lo = 0, j_hi = -1
     type(backbone_eval_type), allocatable :: node(:)
+    !> The damper's jumps of k (PHYSICS.md 2.5): the backbone points at gamma_c with k(gamma_c-)
+    !> and k(gamma_c+), side(1:2, i), computed once the grid reaches gamma_c (n_side of them).
+    integer :: n_side = 0
+    type(backbone_eval_type), allocatable :: side(:,:)
   end type backbone_table_type
 
   !> A blade and a damper coupled over a band. It borrows both (they must outlive it and
@@ -312,6 +319,22 @@ contains
     if (model%damper%M_max - model%damper%M_min > 0) &
       & F_lim = 2*(model%damper%M_max - model%damper%M_min)/(pi*model%phi_ratio)
   end function limit_force_or_huge
+
+  !> F_lim_backbone (PHYSICS.md 5) [N]: the level that F_bb of the blade without structural
+  !> damping approaches at large amplitude, lim gamma k_Im(gamma) / |phi_E/phi_g|, since there
+  !> k -> 0 and the layer peak tends to |phi_E/phi_g| / k_Im. With
+  !> E/gamma -> dE/dgamma = 2 Delta_M (plateaus that bound the moment) it is F_lim exactly;
+  !> with lift-off the damper dissipates less per unit rotation and the level lies below.
+  !> huge when no limit is known (no slip moment range, or E growing faster than gamma).
+  pure real(wp) function limit_force_backbone(model) result(F)
+    type(model_type), intent(in) :: model
+    real(wp) :: dEdp
+    F = limit_force_or_huge(model)
+    if (F == huge(1.0_wp)) return
+    dEdp = model%damper%energy_slope()
+    if (dEdp < huge(1.0_wp)) F = dEdp/(pi*model%phi_ratio)
+    if (dEdp == 2*(model%damper%M_max - model%damper%M_min)) F = limit_force_or_huge(model)
+  end function limit_force_backbone
 
   !> Regime of a response point: REGIME_LIMIT when F_E >= F_lim, else by gamma_P against
   !> the damper's gamma_s and gamma_b.

@@ -13,7 +13,7 @@ module udmap_response
   use udmap_layer, only: bare_receptances
   use udmap_root_finding, only: brent_type, brent_start, brent_next, brent_update
   use udmap_model_data, only: model_type, point_type, limit_force_or_huge, fill_point, &
-    & check_forces
+    & check_forces, limit_force_backbone
   use udmap_backbone, only: ensure_table, grid_gamma, max_decades, j_limit, j_rising
   implicit none
   private
@@ -50,7 +50,8 @@ contains
     if (size(F_E) == 0) return
     call ensure_table(model, error)
     if (allocated(error)) return
-    F_lim = limit_force_or_huge(model)
+    ! the HCF check and the regime against the smaller limit (PHYSICS.md 5)
+    F_lim = min(limit_force_or_huge(model), limit_force_backbone(model))
     omega = 2*pi*f_exc
     call bare_receptances(model%bare, omega, r, error, .false.)
     if (allocated(error)) return

@@ -104,13 +104,19 @@ def _print_points(data: dict) -> None:
     head = {k: v for k, v in data.items() if k != "points"}
     for k, v in head.items():
         print(f"{k:>10} = {v}")
+    jump = any(p.get("jump") for p in data["points"])
     _print_rows(["F_E [N]", "gamma_P [rad]", "f_res [Hz]", "sigma_a [MPa]", "u_E [m]",
-                 "k_re", "k_im", "regime", "hcf_ok"],
+                 "k_re", "k_im", "regime", "hcf_ok"] + (["jump"] if jump else []),
                 [[p["F_E"], p["gamma_P"], p["f_res"],
                   None if p["sigma_a"] is None else p["sigma_a"] / 1e6, p["u_E"],
                   p["k_re"], p["k_im"], p["regime_name"], str(p["hcf_ok"])]
+                 + ([str(bool(p.get("jump")))] if jump else [])
                  for p in data["points"]],
-                [".4g", ".6e", ".6f", ".4f", ".4e", ".6g", ".6g", "s", "s"])
+                [".4g", ".6e", ".6f", ".4f", ".4e", ".6g", ".6g", "s", "s"]
+                + (["s"] if jump else []))
+    if jump:
+        print("jump: gamma_P sits at a jump gamma_c of k(gamma), k interpolated between its "
+              "one-sided values (PHYSICS.md 2.5)")
 
 
 def cmd_table(args) -> None:
@@ -123,7 +129,11 @@ def cmd_table(args) -> None:
     data = {"gamma_b": damper.gamma_b, "gamma_s": damper.gamma_s, "M_max": damper.M_max,
             "M_min": damper.M_min, "k_stuck": damper.k_stuck, "lift_off": bool(damper.lift_off),
             "points": [{"gamma": float(g), "k_re": float(kk.real), "k_im": float(kk.imag)}
-                       for g, kk in zip(gammas, k)]}
+                       for g, kk in zip(gammas, k)],
+            # PHYSICS.md 2.5: k jumps at gamma_c; at gamma_c itself k is k(gamma_c-)
+            "jumps": [{"gamma_c": j["gamma_c"], "k_re_minus": j["k_minus"].real,
+                       "k_im_minus": j["k_minus"].imag, "k_re_plus": j["k_plus"].real,
+                       "k_im_plus": j["k_plus"].imag} for j in damper.jumps]}
 
     def table(d):
         for key in ("gamma_b", "gamma_s", "M_max", "M_min", "k_stuck", "lift_off"):
@@ -131,11 +141,19 @@ def cmd_table(args) -> None:
         _print_rows(["gamma [rad]", "k_re [N m/rad]", "k_im [N m/rad]"],
                     [[p["gamma"], p["k_re"], p["k_im"]] for p in d["points"]],
                     [".6e", ".8g", ".8g"])
+        if d["jumps"]:
+            print(f"k(gamma) jumps at {len(d['jumps'])} amplitude(s) gamma_c (PHYSICS.md 2.5):")
+            _print_rows(["gamma_c [rad]", "k_re(gamma_c-)", "k_im(gamma_c-)", "k_re(gamma_c+)",
+                         "k_im(gamma_c+)"],
+                        [[j["gamma_c"], j["k_re_minus"], j["k_im_minus"], j["k_re_plus"],
+                          j["k_im_plus"]] for j in d["jumps"]],
+                        [".10e", ".8g", ".8g", ".8g", ".8g"])
     _emit(args, data, table)
 
 
 def _summary(model, blade, damper) -> dict:
-    return {"F_lim": model.limit_force(), "gamma_b": damper.gamma_b, "gamma_s": damper.gamma_s,
+    return {"F_lim": model.limit_force(), "F_lim_backbone": model.limit_force_backbone(),
+            "gamma_b": damper.gamma_b, "gamma_s": damper.gamma_s,
             "f1_bare": float(blade.natural_frequencies(1)[0]),
             "lift_off": bool(damper.lift_off)}
 
@@ -161,7 +179,8 @@ def cmd_response(args) -> None:
     model = build_model(case, blade, damper)
     data = _summary(model, blade, damper)
     data["f_exc"] = args.freq
-    data["points"] = [_point_json(p) for p in model.response(args.freq, args.forces)]
+    data["points"] = [_point_json(dict(p, jump=False))
+                      for p in model.response(args.freq, args.forces)]
     _emit(args, data, _print_points)
 
 

@@ -49,6 +49,9 @@ _stiffness_derivative = declare("udmap_damper_stiffness_derivative",
 _loop = declare("udmap_damper_loop",
                 [_vp, _vp, ctypes.c_double, ctypes.c_int, c_double_p, c_double_p])
 _set_CF = declare("udmap_damper_set_CF", [_vp, _vp, ctypes.c_double])
+_jump_count = declare("udmap_damper_jump_count", [_vp, _vp, ctypes.POINTER(ctypes.c_int)])
+_jump_get = declare("udmap_damper_jump_get", [_vp, _vp, ctypes.c_int, c_double_p,
+                                              ctypes.c_double * 2, ctypes.c_double * 2])
 
 
 def _number(name: str, value) -> float:
@@ -205,6 +208,22 @@ class Damper:
         self._err.check(_loop(self._err.ptr, self._ptr, _number("gamma_a", gamma_a), n,
                               tau.ctypes.data_as(c_double_p), M.ctypes.data_as(c_double_p)))
         return tau, M
+
+    @property
+    def jumps(self) -> list[dict]:
+        """The jumps of k(gamma) (PHYSICS.md 2.5; with lift-off the steady loop can change its
+        shape abruptly): per jump ``gamma_c`` [rad] and the one-sided stiffnesses ``k_minus``,
+        ``k_plus`` (complex, N m/rad) below and above it, ascending; empty without."""
+        n = ctypes.c_int()
+        self._err.check(_jump_count(self._err.ptr, self._ptr, ctypes.byref(n)))
+        out = []
+        for i in range(n.value):
+            g = ctypes.c_double()
+            km, kp = (ctypes.c_double * 2)(), (ctypes.c_double * 2)()
+            self._err.check(_jump_get(self._err.ptr, self._ptr, i, ctypes.byref(g), km, kp))
+            out.append({"gamma_c": g.value, "k_minus": complex(km[0], km[1]),
+                        "k_plus": complex(kp[0], kp[1])})
+        return out
 
     def set_CF(self, CF) -> None:
         """New centrifugal load [N] (asymmetric kind): rescales, no new tracing."""

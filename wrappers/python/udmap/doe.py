@@ -353,7 +353,8 @@ _UNIT_GRIDS: dict = {}
 def admissible_force(sigma_at, F_lim: float, sigma_all: float, rtol: float = 1e-12,
                      n: int = ADM_GRID, decades: float = ADM_DECADES, sigma_one=None) -> float:
     """``F_adm``: the largest ``F_E <= F_lim/2`` with ``sigma_a(F_E) <= sigma_all``, solved
-    continuously (INTERFACES.md "Design of experiments output").
+    continuously (INTERFACES.md "Design of experiments output"); the caller passes the smaller
+    of F_lim and F_lim_backbone (PHYSICS.md 5).
 
     ``sigma_at(forces)`` returns the resonant stress amplitudes of the backbone for an array of
     forces (``inf`` where the response is unbounded); ``sigma_one(F)``, if given, the same for
@@ -531,8 +532,11 @@ class DesignContext:
             row["gamma_b"], row["M_max"], row["M_min"] = info.gamma_b, info.M_max, info.M_min
             row["lift_off"] = bool(info.lift_off)
             model = self._model_for(case, self._blade(case), damper)
-            F_lim = model.limit_force()
-            row["F_lim"] = F_lim
+            row["F_lim"] = model.limit_force()
+            # PHYSICS.md 5: with lift-off the backbone may level off below F_lim; F_adm and the
+            # HCF check use the smaller limit
+            row["F_lim_backbone"] = model.limit_force_backbone()
+            F_lim = min(row["F_lim"], row["F_lim_backbone"])
             notes = []
             if len(self.forces):
                 p = self._points.backbone(model, self.forces)
@@ -545,6 +549,7 @@ class DesignContext:
                                  "F_E at or above F_lim or the backbone's asymptote)")
                 row["gamma_P"], row["f_res"], row["sigma_a"] = gamma_P, f_res, sigma_a
                 row["hcf_ok"] = (p["hcf_ok"] != 0).tolist()
+                row["jump"] = self._points.jumps(model, len(p))
             stage = "F_adm: "
             if model.has_stress:
                 pts = self._points
@@ -629,6 +634,14 @@ class _PointBuffer:
         if status:
             model._err.check(status)
         return self._view[:n]
+
+    def jumps(self, model, n: int) -> list[bool]:
+        """Per point of the last :meth:`backbone` call: gamma_P at a jump of k."""
+        from .model import _backbone_jumps, c_int_p
+        flags = np.zeros(max(n, 1), dtype=np.intc)
+        model._err.check(_backbone_jumps(model._err.ptr, model._ptr, n,
+                                         flags.ctypes.data_as(c_int_p)))
+        return [bool(f) for f in flags[:n]]
 
     def sigma_a(self, model, forces):
         """The resonant stress amplitudes for ``forces`` (inf where unbounded)."""
@@ -819,7 +832,7 @@ def add_doe_parser(sub) -> argparse.ArgumentParser:
                    help="scrambled Sobol (default), Latin hypercube, or full grid")
     p.add_argument("--forces", default=None, metavar="F1,...",
                    help="forces F_E [N] with per-force columns gamma_P@F, f_res@F, sigma_a@F, "
-                        "hcf_ok@F")
+                        "hcf_ok@F, jump@F")
     p.add_argument("--seed", type=int, default=0, help="sampling seed (default 0)")
     g = p.add_mutually_exclusive_group()
     g.add_argument("--workers", type=int, default=None, metavar="K",

@@ -22,8 +22,8 @@ from pathlib import Path
 
 from ._lib import InputError
 
-SUMMARY_COLUMNS = ("F_lim", "gamma_b", "M_max", "M_min", "lift_off")
-FORCE_FIELDS = ("gamma_P", "f_res", "sigma_a", "hcf_ok")
+SUMMARY_COLUMNS = ("F_lim", "F_lim_backbone", "gamma_b", "M_max", "M_min", "lift_off")
+FORCE_FIELDS = ("gamma_P", "f_res", "sigma_a", "hcf_ok", "jump")
 META_FORMAT = "udmap-doe-1"
 # Record header of the journal of chunks waiting for an earlier one: "#chunk START COUNT BYTES".
 _JOURNAL_TAG = b"#chunk"
@@ -33,8 +33,9 @@ _RUN_KEYS = ("name", "blade", "damper", "analysis", "params", "forces", "labels"
 
 
 def columns(spec: dict) -> list[str]:
-    """The header: design, the varied parameters by name, F_lim, gamma_b, M_max, M_min,
-    lift_off, per force F gamma_P@F, f_res@F, sigma_a@F, hcf_ok@F, then F_adm, status, message."""
+    """The header: design, the varied parameters by name, F_lim, F_lim_backbone, gamma_b,
+    M_max, M_min, lift_off, per force F gamma_P@F, f_res@F, sigma_a@F, hcf_ok@F, jump@F (gamma_P
+    at a jump of k, PHYSICS.md 2.5), then F_adm, status, message."""
     cols = ["design"] + [p["name"] for p in spec["params"]] + list(SUMMARY_COLUMNS)
     for label in spec["labels"]:
         cols += [f"{field}@{label}" for field in FORCE_FIELDS]
@@ -75,18 +76,20 @@ def _reprs(values) -> list[str]:
 
 def row_cells(spec: dict, design: int, values, row: dict) -> list[str]:
     """The cells of one design's line. ``row``: ``status``, ``message`` and, as far as the
-    design got, ``F_lim``, ``gamma_b``, ``M_max``, ``M_min``, ``lift_off``, ``F_adm`` and the
-    per-force lists of floats ``gamma_P``, ``f_res``, ``sigma_a`` (None where unbounded or
-    without stress rows) and of booleans ``hcf_ok``."""
+    design got, ``F_lim``, ``F_lim_backbone``, ``gamma_b``, ``M_max``, ``M_min``, ``lift_off``,
+    ``F_adm`` and the per-force lists of floats ``gamma_P``, ``f_res``, ``sigma_a`` (None where
+    unbounded or without stress rows) and of booleans ``hcf_ok`` and ``jump``."""
     cells = [str(design)] + [cell(v) for v in values]
     cells += [cell(row.get(k)) for k in SUMMARY_COLUMNS]
     gamma_P = row.get("gamma_P")
     if gamma_P is None:
-        cells += [""] * (4 * len(spec["labels"]))
+        cells += [""] * (len(FORCE_FIELDS) * len(spec["labels"]))
     else:
-        for quad in zip(_reprs(gamma_P), _reprs(row["f_res"]), _reprs(row["sigma_a"]),
-                        ["true" if ok else "false" for ok in row["hcf_ok"]]):
-            cells += quad
+        jump = row.get("jump") or [False] * len(gamma_P)
+        for five in zip(_reprs(gamma_P), _reprs(row["f_res"]), _reprs(row["sigma_a"]),
+                        ["true" if ok else "false" for ok in row["hcf_ok"]],
+                        ["true" if j else "false" for j in jump]):
+            cells += five
     cells += [cell(row.get("F_adm")), row["status"], cell(row.get("message", ""))]
     return cells
 
@@ -107,7 +110,7 @@ def tally(spec: dict, cells: list[str], counts: dict) -> None:
     counts[status] = counts.get(status, 0) + 1
     base = 1 + len(spec["params"]) + len(SUMMARY_COLUMNS)
     for i, label in enumerate(spec["labels"]):
-        if cells[base + 4 * i + 3] == "true":
+        if cells[base + len(FORCE_FIELDS) * i + 3] == "true":
             key = f"hcf_ok@{label}"
             counts[key] = counts.get(key, 0) + 1
 
@@ -345,6 +348,7 @@ class Output:
                 types[p["name"]] = pa.int64()
         for label in self.spec["labels"]:
             types[f"hcf_ok@{label}"] = pa.bool_()
+            types[f"jump@{label}"] = pa.bool_()
         reader = pacsv.open_csv(self.path, convert_options=pacsv.ConvertOptions(
             column_types=types, strings_can_be_null=False, true_values=["true"],
             false_values=["false"]))

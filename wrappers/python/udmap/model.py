@@ -46,6 +46,8 @@ _new_model = declare("udmap_new_model", [_vp, _vp, _vp, ctypes.POINTER(_Analysis
 _delete_model = declare("udmap_delete_model", [ctypes.POINTER(_vp)], None)
 _set_damper = declare("udmap_model_set_damper", [_vp, _vp, _vp])
 _limit_force = declare("udmap_model_limit_force", [_vp, _vp, c_double_p])
+_limit_force_backbone = declare("udmap_model_limit_force_backbone", [_vp, _vp, c_double_p])
+_backbone_jumps = declare("udmap_model_backbone_jumps", [_vp, _vp, ctypes.c_int, c_int_p])
 _backbone_curve = declare("udmap_model_backbone_curve",
                           [_vp, _vp, ctypes.c_int, c_double_p, c_double_p, c_double_p])
 _backbone = declare("udmap_model_backbone",
@@ -123,6 +125,14 @@ class Model:
         self._err.check(_limit_force(self._err.ptr, self._ptr, ctypes.byref(value)))
         return value.value
 
+    def limit_force_backbone(self) -> float:
+        """F_lim_backbone [N] (PHYSICS.md 5): the level the backbone approaches at large
+        amplitude without structural damping; F_lim unless lift-off lowers it. The unbounded
+        flag, hcf_ok and the regime of the points use the smaller of the two."""
+        value = ctypes.c_double()
+        self._err.check(_limit_force_backbone(self._err.ptr, self._ptr, ctypes.byref(value)))
+        return value.value
+
     def backbone_curve(self, gamma) -> tuple[np.ndarray, np.ndarray]:
         """F_bb(gamma) [N] and the peak frequency [Hz] for amplitudes gamma [rad]."""
         g, gp = as_doubles(np.atleast_1d(np.asarray(gamma, dtype=float)).ravel())
@@ -156,8 +166,16 @@ class Model:
         """The peaks of the non-linear response for the forces F_E [N] (PHYSICS.md 4): per
         force a dict with F_E, gamma_P [rad], f_res [Hz], sigma_a [Pa] (None without stress
         rows), u_E [m], k_re, k_im [N m/rad], regime (0..3) and regime_name, hcf_ok, roots (every
-        gamma_P root, ascending) and unbounded (with a message; the numbers are then None)."""
-        return self._points(_backbone, F_E)
+        gamma_P root, ascending), unbounded (with a message; the numbers are then None) and
+        jump (gamma_P is the amplitude of a jump of k(gamma), k interpolated between its
+        one-sided values so that the layer peaks at F_E; PHYSICS.md 2.5)."""
+        points = self._points(_backbone, F_E)
+        jumps = np.zeros(max(len(points), 1), dtype=np.intc)
+        self._err.check(_backbone_jumps(self._err.ptr, self._ptr, len(points),
+                                        jumps.ctypes.data_as(c_int_p)))
+        for p, j in zip(points, jumps):
+            p["jump"] = bool(j)
+        return points
 
     def response(self, f_exc: float, F_E) -> list[dict]:
         """The response at the excitation frequency f_exc [Hz] (inside the band) to the forces
