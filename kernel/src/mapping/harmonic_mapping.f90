@@ -29,7 +29,7 @@ module udmap_harmonic_mapping
     & harmonic_resize, harmonic_root, harmonic_force_root, harmonic_outputs, HARMONICS_MAX
   implicit none
   private
-  public :: backbone, response, response_curves, harmonics_near_modes
+  public :: backbone, response, response_curves, harmonics_near_modes, set_harmonics
 
   !> The ladder of H tried by the automatic choice.
   integer, parameter :: ladder(10) = [3, 5, 7, 9, 13, 17, 25, 33, 49, 64]
@@ -40,6 +40,26 @@ module udmap_harmonic_mapping
   real(wp), parameter :: rtol_h = 1.0e-10_wp
 
 contains
+
+  !> Changes the harmonics of a built model (1, H up to 64, or 0 for auto) and the tolerance
+  !> of the automatic choice; nothing else is recomputed.
+  subroutine set_harmonics(model, harmonics, harmonic_tol, error)
+    type(model_type), intent(inout) :: model
+    integer, intent(in) :: harmonics
+    real(wp), intent(in) :: harmonic_tol
+    type(error_type), allocatable, intent(out) :: error
+    if (harmonics < 0 .or. harmonics > HARMONICS_MAX) then
+      call fatal_error(error, "analysis.harmonics must be 1, an integer up to 64, or auto (0)", &
+        & UDMAP_EINPUT)
+      return
+    end if
+    if (.not.(harmonic_tol >= 1e-10_wp .and. harmonic_tol <= 0.1_wp)) then
+      call fatal_error(error, "analysis.harmonic_tol must lie in [1e-10, 0.1]", UDMAP_EINPUT)
+      return
+    end if
+    model%analysis%harmonics = harmonics
+    model%analysis%harmonic_tol = harmonic_tol
+  end subroutine set_harmonics
 
   !> The peaks of the non-linear response for the forces F_E [N] (PHYSICS.md 4 and 4.1).
   subroutine backbone(model, F_E, points, error)

@@ -19,12 +19,13 @@ module udmap_model
     & set_damper, limit_force, EIGEN_AUTO, EIGEN_DIRECT, EIGEN_MODAL, REGIME_STUCK, REGIME_PARTIAL_SLIP, &
     & REGIME_FULL_SLIP, REGIME_LIMIT, BRANCH_LOWER, BRANCH_UPPER, BRANCH_TURNING
   use udmap_backbone, only: backbone_curve
-  use udmap_harmonic_mapping, only: backbone, response, response_curves, harmonics_near_modes
+  use udmap_harmonic_mapping, only: backbone, response, response_curves, harmonics_near_modes, &
+    & set_harmonics
   implicit none
   private
   public :: analysis_type, point_type, curve_type, model_type
   public :: new_model, set_damper, limit_force, backbone_curve, backbone, response, &
-    & response_curves, harmonics_near_modes
+    & response_curves, harmonics_near_modes, set_harmonics
   public :: EIGEN_AUTO, EIGEN_DIRECT, EIGEN_MODAL
   public :: REGIME_STUCK, REGIME_PARTIAL_SLIP, REGIME_FULL_SLIP, REGIME_LIMIT
   public :: BRANCH_LOWER, BRANCH_UPPER, BRANCH_TURNING
