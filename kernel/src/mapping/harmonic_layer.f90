@@ -27,6 +27,7 @@ module udmap_harmonic_layer
   private
   public :: harmonic_workspace_type, harmonic_state_type, harmonic_outputs_type
   public :: harmonic_setup, harmonic_solve, harmonic_peak, harmonic_root, harmonic_force_root, &
+    & harmonic_peak_root, &
     & harmonic_outputs, harmonic_resize, largest_excursion
   public :: HARMONICS_MAX
 
@@ -532,6 +533,75 @@ contains
       & "for F_E = ", F_E, " N"
     call fatal_error(error, trim(buf), UDMAP_ENUMERIC)
   end subroutine harmonic_root
+
+  !> The backbone root and its peak at once: Newton on (ln gamma, ln omega) for
+  !> ln(|P|/F_E) = 0 and d ln|P|/d ln omega = 0 (= omega psi/(2 |P|^2)), from gamma_start,
+  !> omega_start; Jacobian by finite differences at the start, then Broyden updates. Each
+  !> iteration is one layer solve; the answer is the same root as harmonic_root (which nests a
+  !> peak search in a secant on gamma), found with a third of the layer solves. ok = .false.
+  !> when it does not converge in 30 iterations (then use harmonic_root).
+  subroutine harmonic_peak_root(ws, blade, F_E, gamma_start, omega_start, omega_lo, omega_hi, &
+      & rtol, s, ok, error)
+    type(harmonic_workspace_type), intent(inout) :: ws
+    type(blade_type), intent(in) :: blade
+    real(wp), intent(in) :: F_E, gamma_start, omega_start, omega_lo, omega_hi, rtol
+    type(harmonic_state_type), intent(inout) :: s
+    logical, intent(out) :: ok
+    type(error_type), allocatable, intent(out) :: error
+    real(wp) :: z(2), f(2), zt(2), ft(2), J(2, 2), dz(2), det, df(2), h, fn, ftn
+    integer :: it, k
+    real(wp), parameter :: dstep = 1.0e-4_wp
+    ok = .false.
+    z = [log(gamma_start), log(omega_start)]
+    call eval(z, f, error)
+    if (allocated(error)) return
+    ! finite-difference Jacobian at the start
+    do k = 1, 2
+      zt = z
+      zt(k) = z(k) + dstep
+      call eval(zt, ft, error)
+      if (allocated(error)) return
+      J(:, k) = (ft - f)/dstep
+    end do
+    call eval(z, f, error)
+    if (allocated(error)) return
+    fn = norm2(f)
+    do it = 1, 30
+      det = J(1,1)*J(2,2) - J(1,2)*J(2,1)
+      if (.not.(abs(det) > 0)) return
+      dz(1) = -( J(2,2)*f(1) - J(1,2)*f(2))/det
+      dz(2) = -(-J(2,1)*f(1) + J(1,1)*f(2))/det
+      ! steps at most 30 % in gamma and 2 % in omega, inside the band
+      h = min(1.0_wp, 0.3_wp/max(abs(dz(1)), tiny(1.0_wp)), 0.02_wp/max(abs(dz(2)), tiny(1.0_wp)))
+      dz = h*dz
+      zt = z + dz
+      if (exp(zt(2)) <= omega_lo .or. exp(zt(2)) >= omega_hi) return
+      call eval(zt, ft, error)
+      if (allocated(error)) return
+      ftn = norm2(ft)
+      ! Broyden's update of the Jacobian along the step
+      df = ft - f - matmul(J, dz)
+      J(:, 1) = J(:, 1) + df*dz(1)/dot_product(dz, dz)
+      J(:, 2) = J(:, 2) + df*dz(2)/dot_product(dz, dz)
+      z = zt
+      f = ft
+      fn = ftn
+      if (maxval(abs(dz)) <= rtol) then
+        ok = .true.
+        return
+      end if
+    end do
+  contains
+    subroutine eval(zv, fv, err)
+      real(wp), intent(in) :: zv(2)
+      real(wp), intent(out) :: fv(2)
+      type(error_type), allocatable, intent(out) :: err
+      call harmonic_solve(ws, blade, exp(zv(1)), exp(zv(2)), s, err)
+      if (allocated(err)) return
+      fv(1) = log(abs(s%P)/F_E)
+      fv(2) = s%omega*s%psi/(2*abs(s%P)**2)
+    end subroutine eval
+  end subroutine harmonic_peak_root
 
   !> The response at a given omega: the layer gamma with |P(omega)| = F_E, by secant steps on
   !> ln(|P|/F_E) against ln gamma from gamma_start. s holds the layer on return.

@@ -26,7 +26,8 @@ module udmap_harmonic_mapping
   use udmap_response, only: response_single => response
   use udmap_curves, only: curves_single => response_curves
   use udmap_harmonic_layer, only: harmonic_state_type, harmonic_outputs_type, harmonic_setup, &
-    & harmonic_resize, harmonic_root, harmonic_force_root, harmonic_outputs, HARMONICS_MAX
+    & harmonic_resize, harmonic_root, harmonic_peak_root, harmonic_force_root, &
+    & harmonic_outputs, HARMONICS_MAX
   implicit none
   private
   public :: backbone, response, response_curves, harmonics_near_modes, set_harmonics
@@ -313,6 +314,7 @@ contains
       type(error_type), allocatable, intent(out) :: err
       type(harmonic_state_type), intent(in), optional :: warm
       real(wp) :: slope, Fb(2), fr(2)
+      logical :: ok
       if (present(warm)) then
         st = warm
       else
@@ -321,14 +323,14 @@ contains
       call harmonic_resize(st, Hs)
       st%omega = omega0
       if (at_peak) then
-        ! the single-harmonic slope d ln F_bb/d ln gamma starts the secant
-        slope = 1
-        if (.not.present(warm)) then
-          call backbone_curve(model, [gamma0*(1 - 1.0e-4_wp), gamma0*(1 + 1.0e-4_wp)], Fb, fr, &
-            & err)
-          if (allocated(err)) return
-          slope = log(Fb(2)/Fb(1))/log((1 + 1.0e-4_wp)/(1 - 1.0e-4_wp))
-        end if
+        call harmonic_peak_root(model%harm, model%blade, p1%F_E, gamma0, omega0, &
+          & model%omega_lo, model%omega_hi, rtol_h, st, ok, err)
+        if (ok .or. allocated(err)) return
+        ! fallback: a secant on gamma around full peak searches, started with the
+        ! single-harmonic slope d ln F_bb/d ln gamma
+        call backbone_curve(model, [gamma0*(1 - 1.0e-4_wp), gamma0*(1 + 1.0e-4_wp)], Fb, fr, err)
+        if (allocated(err)) return
+        slope = log(Fb(2)/Fb(1))/log((1 + 1.0e-4_wp)/(1 - 1.0e-4_wp))
         call harmonic_root(model%harm, model%blade, p1%F_E, gamma0, slope, model%omega_lo, &
           & model%omega_hi, rtol_h, st, err)
       else

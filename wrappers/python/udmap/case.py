@@ -48,12 +48,15 @@ ANALYSIS_DEFAULTS: dict[str, Any] = {
     "eigen_method": "auto",   # eigenvalue start: auto, direct (zggev/ARPACK) or modal (secular)
     "dense_max": 200,         # largest ndof solved densely by zggev; larger ones use ARPACK
     "sweep_points": 400,      # bare-blade frequency samples for bracketing curve crossings
+    "harmonics": 1,           # 1, H <= 64 (harmonics 0..H, PHYSICS.md 4.1) or "auto"
+    "harmonic_tol": 1e-3,     # relative change of the outputs that stops "auto"
 }
 #: Kernel codes of analysis.eigen_method.
 EIGEN_METHODS = {"auto": 0, "direct": 1, "modal": 2}
 _ANALYSIS = {"f_min": "pos", "f_max": "pos", "sigma_all": "pos?", "rtol": "pos?",
              "grid_per_decade": "int_pos?", "layers": "int_pos?", "eigen_method": "eigen?",
-             "dense_max": "int_pos?", "sweep_points": "int_pos?"}
+             "dense_max": "int_pos?", "sweep_points": "int_pos?", "harmonics": "harmonics?",
+             "harmonic_tol": "pos?"}
 
 
 @dataclass
@@ -98,6 +101,13 @@ def _check_value(path: str, value, check: str):
             raise InputError(f"{path} must be at least 1, got {value}")
         if check == "int_even" and v % 2:
             raise InputError(f"{path} must be even (E is the node at mid-length), got {value}")
+        return v
+    if check == "harmonics":
+        if value == "auto":
+            return value
+        v = _check_value(path, value, "int_pos")
+        if v > 64:
+            raise InputError(f"{path} must be an integer from 1 to 64 or \"auto\", got {value}")
         return v
     if check == "point":
         if not (isinstance(value, list) and len(value) == 2):
@@ -299,4 +309,5 @@ def build_model(case: Case, blade=None, damper=None):
     return Model(blade, damper, a["f_min"], a["f_max"], sigma_all=a["sigma_all"],
                  rtol=a["rtol"], grid_per_decade=a["grid_per_decade"],
                  eigen_method=EIGEN_METHODS[a["eigen_method"]], dense_max=a["dense_max"],
-                 sweep_points=a["sweep_points"])
+                 sweep_points=a["sweep_points"], harmonics=a["harmonics"],
+                 harmonic_tol=a["harmonic_tol"])
