@@ -142,7 +142,8 @@ contains
     real(wp), intent(in) :: gamma, omega
     type(harmonic_state_type), intent(inout) :: s
     type(error_type), allocatable, intent(out) :: error
-    integer :: H, n, h1, it, ls, info
+    integer :: H, n, h1, it, ls, info, attempt
+    character(len=64) :: what
     real(wp), allocatable :: x(:), R(:), xt(:), Rt(:), J(:,:), dx(:), dRw(:)
     integer, allocatable :: ipiv(:)
     real(wp) :: rn, rnt, t, step, step_prev
@@ -173,64 +174,22 @@ contains
     end do
     allocate(x(n), R(n), xt(n), Rt(n), J(n, n), dx(n), ipiv(n), dRw(n))
     call pack_x(s, x)
-    call residual(x, R, error)
-    if (allocated(error)) return
-    rn = norm2(R)
-    step_prev = huge(1.0_wp)
-    do it = 1, newton_max
-      fresh = .false.
-      if (.not.s%jm_valid) then
-        call jacobian(x, error)
-        if (allocated(error)) return
-        fresh = .true.
+    ! a warm start that leads Newton astray (e.g. across a change of the contact topology) is
+    ! dropped for a cold one (all other harmonics 0), which is then the answer
+    do attempt = 1, 2
+      if (attempt == 2) then
+        if (all(x == 0)) exit
+        x = 0
+        s%jm_valid = .false.
       end if
-      call build_J(J)
-      dx = -R
-      call dgesv(n, 1, J, n, ipiv, dx, n, info)
-      if (info /= 0) then
-        call fail("the layer's Jacobian is singular")
-        return
-      end if
-      ! backtracking on |R|; a stale Jacobian that fails to descend is renewed first
-      t = 1
-      accepted = .false.
-      do ls = 1, 30
-        xt = x + t*dx
-        call residual(xt, Rt, error)
-        if (allocated(error)) return
-        rnt = norm2(Rt)
-        if (rnt <= (1 - 1.0e-4_wp*t)*rn .or. maxval(abs(t*dx)) <= newton_tol*xscale(x)) then
-          accepted = .true.
-          exit
-        end if
-        if (.not.fresh) exit
-        t = 0.5_wp*t
-      end do
-      if (.not.accepted) then
-        if (.not.fresh) then
-          s%jm_valid = .false.
-          call residual(x, R, error)
-          if (allocated(error)) return
-          cycle
-        end if
-        ! no descent even with a fresh Jacobian: accept if already at the rounding level
-        if (rn <= 1.0e-13_wp*xscale(x)) exit
-        call fail("Newton found no descent direction")
-        return
-      end if
-      step = maxval(abs(t*dx))
-      x = xt
-      R = Rt
-      rn = rnt
-      if (step <= newton_tol*xscale(x)) exit
-      ! slow contraction with a reused Jacobian (contacts changed state): renew it
-      if (.not.fresh .and. (t < 1 .or. step > 0.1_wp*step_prev)) s%jm_valid = .false.
-      step_prev = step
-      if (it == newton_max) then
-        call fail("Newton did not converge")
-        return
-      end if
+      call newton(x, what)
+      if (allocated(error)) return
+      if (len_trim(what) == 0) exit
     end do
+    if (len_trim(what) > 0) then
+      call fail(trim(what))
+      return
+    end if
     ! the moments at the solution (residual left them in s)
     call residual(x, R, error)
     if (allocated(error)) return
@@ -263,6 +222,69 @@ contains
     dP = (s%r(1)%dgg*s%M(1) + s%r(1)%gg*dM1)/s%r(1)%gE - s%P*s%r(1)%dgE/s%r(1)%gE
     s%psi = 2*real(conjg(s%P)*dP, wp)
   contains
+    !> Newton from x; what: empty on convergence, else why it stopped (error: a failed trace).
+    subroutine newton(x, what)
+      real(wp), intent(inout) :: x(:)
+      character(len=*), intent(out) :: what
+      what = ""
+      call residual(x, R, error)
+      if (allocated(error)) return
+      rn = norm2(R)
+      step_prev = huge(1.0_wp)
+      do it = 1, newton_max
+        fresh = .false.
+        if (.not.s%jm_valid) then
+          call jacobian(x, error)
+          if (allocated(error)) return
+          fresh = .true.
+        end if
+        call build_J(J)
+        dx = -R
+        call dgesv(n, 1, J, n, ipiv, dx, n, info)
+        if (info /= 0) then
+          what = "the layer's Jacobian is singular"
+          return
+        end if
+        ! backtracking on |R|; a stale Jacobian that fails to descend is renewed first
+        t = 1
+        accepted = .false.
+        do ls = 1, 30
+          xt = x + t*dx
+          call residual(xt, Rt, error)
+          if (allocated(error)) return
+          rnt = norm2(Rt)
+          if (rnt <= (1 - 1.0e-4_wp*t)*rn .or. maxval(abs(t*dx)) <= newton_tol*xscale(x)) then
+            accepted = .true.
+            exit
+          end if
+          if (.not.fresh) exit
+          t = 0.5_wp*t
+        end do
+        if (.not.accepted) then
+          if (.not.fresh) then
+            s%jm_valid = .false.
+            call residual(x, R, error)
+            if (allocated(error)) return
+            cycle
+          end if
+          ! no descent even with a fresh Jacobian: accept at the rounding level of the
+          ! piecewise-linear contact (far below what the outputs need)
+          if (rn <= 1.0e-11_wp*xscale(x)) return
+          what = "Newton found no descent direction"
+          return
+        end if
+        step = maxval(abs(t*dx))
+        x = xt
+        R = Rt
+        rn = rnt
+        if (step <= newton_tol*xscale(x)) return
+        ! slow contraction with a reused Jacobian (contacts changed state): renew it
+        if (.not.fresh .and. (t < 1 .or. step > 0.1_wp*step_prev)) s%jm_valid = .false.
+        step_prev = step
+      end do
+      what = "Newton did not converge"
+    end subroutine newton
+
     !> Scale of the unknowns: the layer amplitude, or a larger static offset.
     pure real(wp) function xscale(xv)
       real(wp), intent(in) :: xv(:)
@@ -494,24 +516,36 @@ contains
 
   !> The backbone root: the layer gamma whose peak force min_omega |P| equals F_E, by secant
   !> steps on ln(F_bb/F_E) against ln gamma from gamma_start (a single-harmonic root) with
-  !> the slope d ln F_bb/d ln gamma = slope0 as the first guess. s holds the root's peak.
+  !> the slope d ln F_bb/d ln gamma = slope0 as the first guess, and bisection once the root is
+  !> bracketed and the secant stalls. s holds the root's peak. Where F_bb jumps over F_E (a
+  !> damper whose loop changes shape abruptly with lift-off, PHYSICS.md 2.5) the bisection
+  !> closes on the jump gamma_c: jump is then set, s holds the layer just above it and below
+  !> the layer just below.
   subroutine harmonic_root(ws, blade, F_E, gamma_start, slope0, omega_lo, omega_hi, rtol, s, &
-      & error)
+      & error, jump, below)
     type(harmonic_workspace_type), intent(inout) :: ws
     type(blade_type), intent(in) :: blade
     real(wp), intent(in) :: F_E, gamma_start, slope0, omega_lo, omega_hi, rtol
     type(harmonic_state_type), intent(inout) :: s
     type(error_type), allocatable, intent(out) :: error
-    real(wp) :: u0, u1, f0, f1, slope, du
+    logical, intent(out), optional :: jump
+    type(harmonic_state_type), intent(out), optional :: below
+    type(harmonic_state_type) :: s_neg, s_pos
+    real(wp) :: u0, u1, f0, f1, slope, du, u_neg, u_pos, f_neg, f_pos
+    logical :: have_neg, have_pos
     integer :: it
     character(len=160) :: buf
+    if (present(jump)) jump = .false.
     u1 = log(gamma_start)
     slope = slope0
     if (.not.(abs(slope) > 0.05_wp .and. abs(slope) < 20)) slope = 1
-    do it = 1, 60
+    have_neg = .false.
+    have_pos = .false.
+    do it = 1, 20
       call harmonic_peak(ws, blade, exp(u1), omega_lo, omega_hi, rtol, s, error)
       if (allocated(error)) return
       f1 = log(abs(s%P)/F_E)
+      call keep_bracket(u1, f1)
       if (it > 1) then
         if (u1 /= u0 .and. f1 /= f0) slope = (f1 - f0)/(u1 - u0)
       end if
@@ -529,9 +563,61 @@ contains
       f0 = f1
       u1 = u1 + du
     end do
-    write(buf, '(a, i0, a, es12.5, a)') "harmonic backbone (H = ", s%H, "): no root found "// &
-      & "for F_E = ", F_E, " N"
-    call fatal_error(error, trim(buf), UDMAP_ENUMERIC)
+    if (.not.(have_neg .and. have_pos)) then
+      write(buf, '(a, i0, a, es12.5, a)') "harmonic backbone (H = ", s%H, "): no root found "// &
+        & "for F_E = ", F_E, " N"
+      call fatal_error(error, trim(buf), UDMAP_ENUMERIC)
+      return
+    end if
+    ! bisection in ln gamma
+    do it = 1, 200
+      if (abs(u_pos - u_neg) <= rtol) exit
+      u1 = 0.5_wp*(u_neg + u_pos)
+      s = s_neg
+      call harmonic_peak(ws, blade, exp(u1), omega_lo, omega_hi, rtol, s, error)
+      if (allocated(error)) return
+      f1 = log(abs(s%P)/F_E)
+      if (f1 == 0) return
+      call keep_bracket(u1, f1)
+    end do
+    if (min(-f_neg, f_pos) <= 1.0e-8_wp) then
+      ! a root where F_bb is continuous: the closer side
+      if (-f_neg < f_pos) then
+        s = s_neg
+      else
+        s = s_pos
+      end if
+      return
+    end if
+    ! F_bb jumps over F_E at gamma_c
+    if (present(jump)) jump = .true.
+    if (present(below)) then
+      if (u_neg < u_pos) then
+        below = s_neg
+      else
+        below = s_pos
+      end if
+    end if
+    if (u_neg < u_pos) then
+      s = s_pos
+    else
+      s = s_neg
+    end if
+  contains
+    subroutine keep_bracket(u, f)
+      real(wp), intent(in) :: u, f
+      if (f < 0) then
+        have_neg = .true.
+        u_neg = u
+        f_neg = f
+        s_neg = s
+      else
+        have_pos = .true.
+        u_pos = u
+        f_pos = f
+        s_pos = s
+      end if
+    end subroutine keep_bracket
   end subroutine harmonic_root
 
   !> The backbone root and its peak at once: Newton on (ln gamma, ln omega) for

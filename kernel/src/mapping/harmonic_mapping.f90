@@ -226,8 +226,10 @@ contains
     logical, intent(in) :: at_peak
     type(point_type), intent(out) :: point
     type(error_type), allocatable, intent(out) :: error
-    type(harmonic_state_type) :: s, s_prev
-    type(harmonic_outputs_type) :: out, out_prev
+    type(harmonic_state_type) :: s, s_prev, s_below
+    type(harmonic_outputs_type) :: out, out_prev, out_below
+    real(wp) :: w
+    logical :: jump
     real(wp), allocatable :: roots(:)
     real(wp) :: F_lim, omega1, change
     integer :: H, j, nr, n_new
@@ -272,6 +274,20 @@ contains
     point%u_E = abs(out%U1)
     point%gamma_max = out%gamma_max
     point%sigma_max = out%sigma_max
+    if (jump) then
+      ! F_bb jumps over F_E at gamma_c (PHYSICS.md 2.5): gamma_P = gamma_c, the other outputs
+      ! the convex combination of the layers on both sides that peaks at F_E (in ln F)
+      call harmonic_outputs(model%harm, s_below, model%blade%has_stress, out_below)
+      w = log(p1%F_E/abs(s_below%P))/log(abs(s%P)/abs(s_below%P))
+      point%gamma_P = sqrt(s%gamma*s_below%gamma)
+      roots(nr) = point%gamma_P
+      point%f_res = ((1 - w)*s_below%omega + w*s%omega)/(2*pi)
+      point%k = (1 - w)*s_below%M(1)/s_below%gamma + w*s%M(1)/s%gamma
+      point%sigma_a = (1 - w)*abs(out_below%S1) + w*abs(out%S1)
+      point%u_E = (1 - w)*abs(out_below%U1) + w*abs(out%U1)
+      point%gamma_max = (1 - w)*out_below%gamma_max + w*out%gamma_max
+      point%sigma_max = (1 - w)*out_below%sigma_max + w*out%sigma_max
+    end if
     point%harmonics = H
     point%gamma_h = out%gamma_h
     point%sigma_h = out%sigma_h
@@ -315,6 +331,7 @@ contains
       type(harmonic_state_type), intent(in), optional :: warm
       real(wp) :: slope, Fb(2), fr(2)
       logical :: ok
+      jump = .false.
       if (present(warm)) then
         st = warm
       else
@@ -332,7 +349,7 @@ contains
         if (allocated(err)) return
         slope = log(Fb(2)/Fb(1))/log((1 + 1.0e-4_wp)/(1 - 1.0e-4_wp))
         call harmonic_root(model%harm, model%blade, p1%F_E, gamma0, slope, model%omega_lo, &
-          & model%omega_hi, rtol_h, st, err)
+          & model%omega_hi, rtol_h, st, err, jump, s_below)
       else
         call harmonic_force_root(model%harm, model%blade, p1%F_E, gamma0, omega0, rtol_h, st, &
           & err)
