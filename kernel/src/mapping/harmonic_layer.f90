@@ -190,16 +190,12 @@ contains
       call fail(trim(what))
       return
     end if
-    ! the moments at the solution (residual left them in s)
-    call residual(x, R, error)
-    if (allocated(error)) return
+    ! s holds the moments at the solution (newton leaves them there)
     call unpack_x(x, s)
     s%lift_off = ws%aft%lift_off
     ! psi needs dM/dGamma at the solution: renew a Jacobian taken far from it
     if (maxval(abs(x - s%x_jm)) > 1.0e-3_wp*gamma) then
       call jacobian(x, error)
-      if (allocated(error)) return
-      call residual(x, R, error)
       if (allocated(error)) return
     end if
     s%P = (gamma + s%r(1)%gg*s%M(1))/s%r(1)%gE
@@ -269,7 +265,11 @@ contains
           end if
           ! no descent even with a fresh Jacobian: accept at the rounding level of the
           ! piecewise-linear contact (far below what the outputs need)
-          if (rn <= 1.0e-11_wp*xscale(x)) return
+          if (rn <= 1.0e-11_wp*xscale(x)) then
+            ! the moments of x again (the line search left those of its last trial)
+            call residual(x, R, error)
+            return
+          end if
           what = "Newton found no descent direction"
           return
         end if
@@ -330,15 +330,19 @@ contains
       if (allocated(err)) err%message = "harmonic layer: "//err%message
     end subroutine moments
 
-    !> Forward differences of the moments; leaves s%M0, s%M at xv.
+    !> Forward differences of the moments about xv, whose moments s%M0, s%M hold (and hold
+    !> again on return).
     subroutine jacobian(xv, err)
       real(wp), intent(in) :: xv(:)
       type(error_type), allocatable, intent(out) :: err
-      real(wp) :: m_base(2*H+1), m_pert(2*H+1), xp(size(xv)), d
+      real(wp) :: m_base(2*H+1), m_pert(2*H+1), xp(size(xv)), d, M0_base
+      complex(wp) :: Mc_base(H)
+      logical :: lift_base
       integer :: k
-      call moments(xv, err)
-      if (allocated(err)) return
       call pack_m(m_base)
+      M0_base = s%M0
+      Mc_base = s%M
+      lift_base = ws%aft%lift_off
       do k = 1, n
         xp = xv
         d = fd_step*max(gamma, abs(xv(k)))
@@ -348,8 +352,13 @@ contains
         call pack_m(m_pert)
         s%JM(:, k) = (m_pert - m_base)/d
       end do
-      call moments(xv, err)
-      if (allocated(err)) return
+      s%M0 = M0_base
+      s%M = Mc_base
+      s%G(1) = cmplx(gamma, 0.0_wp, wp)
+      do k = 2, H
+        s%G(k) = cmplx(xv(2*k-2), xv(2*k-1), wp)
+      end do
+      ws%aft%lift_off = lift_base
       s%x_jm = xv
       s%jm_valid = .true.
     end subroutine jacobian
