@@ -10,7 +10,9 @@ Records: method backbone / standard_condensed, settings gg10_H<H> and gg10_auto 
 and blade_a_jenkins; extras "harmonics", "ratio_to_H1", "speedup_vs_standard"); method
 backbone, setting dti_auto_F<F> (errors against the time integration; extras the values);
 method doe, setting auto (extra "designs_per_second").
-Usage: bench_harmonics.py [--json FILE]
+Also rewrites the tables of the README section "Multi-harmonic layers" (between the markers
+harmonics:begin and harmonics:end) from the measured records.
+Usage: bench_harmonics.py [--json FILE] [--from FILE (records of an earlier run: README only)]
 """
 from __future__ import annotations
 
@@ -90,16 +92,92 @@ def doe() -> list[dict]:
                    status=s["status"])]
 
 
+def _ms(t) -> str:
+    return f"{1e3 * t:.3g} ms" if t < 1 else f"{t:.3g} s"
+
+
+def gg10_table(records: list[dict], case: str) -> str:
+    rows = ["| H | layered backbone, gg10 cold | error vs standard H = 33 (gamma_P, sigma_a, f_res) "
+            "| ratio to H = 1 | standard method, same H, warm | its error | layered speed-up |",
+            "| --- | ---: | --- | ---: | ---: | --- | ---: |"]
+    by = {(r["method"], r["setting"]): r for r in records if r["case"] == case}
+    for label in ("H1", "H3", "H5", "H9", "H17", "auto"):
+        b = by.get(("backbone", f"gg10_{label}"))
+        if b is None:
+            continue
+        s = by.get(("standard_condensed", f"gg10_{label}"))
+        err = f"{b['error_gamma_P']:.1e}, {b['error_sigma_a']:.1e}, {b['error_f_res']:.1e}"
+        name = label[1:] if label != "auto" else f"auto (H used up to {b['harmonics']})"
+        if s is not None:
+            serr = f"{s['error_gamma_P']:.1e}, {s['error_sigma_a']:.1e}, {s['error_f_res']:.1e}"
+            rows.append(f"| {name} | {_ms(b['seconds_median'])} | {err} | "
+                        f"{b['ratio_to_H1']:.0f} | {_ms(s['seconds_median'])} | {serr} | "
+                        f"{b['speedup_vs_standard']:.1f} |")
+        else:
+            rows.append(f"| {name} | {_ms(b['seconds_median'])} | {err} | "
+                        f"{b['ratio_to_H1']:.0f} | | | |")
+    ref = by.get(("standard_condensed", "gg10_H33"))
+    if ref is not None:
+        rows.append(f"\nReference: the standard method at H = 33 took {_ms(ref['seconds_median'])}.")
+    return "\n".join(rows)
+
+
+def dti_table(records: list[dict]) -> str:
+    rows = ["| F_E [N] | H used | gamma_P | sigma_a | f_res | H = 1: gamma_P | sigma_a | f_res |",
+            "| ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |"]
+    for r in records:
+        if not r["setting"].startswith("dti_auto_F"):
+            continue
+        rows.append(
+            f"| {r['F_E']:g} | {r['harmonics']} | {100 * r['error_gamma_P']:+.2f} % | "
+            f"{100 * r['error_sigma_a']:+.2f} % | {r['error_f_res']:+.3f} Hz | "
+            f"{100 * (r['h1_gamma_P'] / r['dti_gamma_1'] - 1):+.2f} % | "
+            f"{100 * (r['h1_sigma_a'] / r['dti_sigma_1'] - 1):+.2f} % | "
+            f"{r['h1_f_res'] - r['dti_f']:+.3f} Hz |")
+    return "\n".join(rows)
+
+
+def readme(records: list[dict]) -> None:
+    path = ROOT / "README.md"
+    text = path.read_text()
+    begin, end = "<!-- harmonics:begin -->", "<!-- harmonics:end -->"
+    if begin not in text or end not in text:
+        return
+    doe_rec = next((r for r in records if r["method"] == "doe"), None)
+    body = ["", "Measured by `bench/bench_harmonics.py` (part of `make bench`); blade A, 2 shared "
+            "cores, times are medians of repeated cold runs (new model and the ten peaks).", "",
+            "**gg10, blade A's asymmetric damper** (F_E = 1..10 N; errors: the largest over the "
+            "ten forces, relative, against the standard method at H = 33):", "",
+            gg10_table(records, "blade_a"), "",
+            "**gg10, a Jenkins damper** (blade A with kt = the asymmetric damper's stuck "
+            "stiffness, M_slip = half its moment range):", "",
+            gg10_table(records, "blade_a_jenkins"), "",
+            "**Automatic H against the time integration** at its peak (PHYSICS.md 7, 512 steps "
+            "per period; deviations of the layered result and of the single-harmonic backbone):",
+            "", dti_table(records), ""]
+    if doe_rec is not None:
+        body += [f"DOE at auto (`doe --harmonics auto`, 8 designs varying mu and CF, one force): "
+                 f"{doe_rec['designs_per_second']:.2g} designs per second on one worker.", ""]
+    head, rest = text.split(begin, 1)
+    _, tail = rest.split(end, 1)
+    path.write_text(head + begin + "\n".join(body) + end + tail)
+
+
 def main() -> int:
     ap = argparse.ArgumentParser()
     ap.add_argument("--json", default=None)
+    ap.add_argument("--from", dest="source", default=None)
     args = ap.parse_args()
-    records = gg10("blade_a", "0") + gg10("blade_a_jenkins", "1") + dti() + doe()
+    if args.source:
+        records = json.loads(Path(args.source).read_text())
+    else:
+        records = gg10("blade_a", "0") + gg10("blade_a_jenkins", "1") + dti() + doe()
     text = json.dumps(records, indent=1, allow_nan=False)
     if args.json:
         Path(args.json).write_text(text + "\n")
-    else:
+    elif not args.source:
         print(text)
+    readme(records)
     return 0
 
 
