@@ -39,7 +39,9 @@ class _Point(ctypes.Structure):
                 ("regime", ctypes.c_int), ("hcf_ok", ctypes.c_int), ("unbounded", ctypes.c_int),
                 ("nroots", ctypes.c_int), ("roots", ctypes.c_double * MAX_ROOTS),
                 ("gamma_max", ctypes.c_double), ("sigma_max", ctypes.c_double),
-                ("harmonics", ctypes.c_int)]
+                ("harmonics", ctypes.c_int),
+                # the C struct's tail padding, named so that numpy sees the full item size
+                ("_pad", ctypes.c_int)]
 
 
 _vp = ctypes.c_void_p
