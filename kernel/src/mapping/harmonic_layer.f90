@@ -296,7 +296,14 @@ contains
       character(len=160) :: b
       write(b, '(a, i0, a, es12.5, a, g0.8, a)') " (H = ", H, ", layer gamma = ", gamma, &
         & " rad, f = ", omega/(2*pi), " Hz)"
-      call fatal_error(error, "harmonic layer: "//what//trim(b), UDMAP_ENUMERIC)
+      if (ws%aft%lift_off) then
+        ! the loop changes shape abruptly with the waveform: M_h(Gamma) jumps (PHYSICS.md 2.5)
+        call fatal_error(error, "harmonic layer: "//what//trim(b)//"; a damper contact lifts "// &
+          & "off on this layer and the damper moment jumps with the waveform, so the layer "// &
+          & "equations may have no solution: try fewer harmonics", UDMAP_ENUMERIC)
+      else
+        call fatal_error(error, "harmonic layer: "//what//trim(b), UDMAP_ENUMERIC)
+      end if
     end subroutine fail
 
     !> The damper moments for the unknowns x (stored in s%M0, s%M) and the residual.
