@@ -32,7 +32,8 @@ program harmonics_timing
   real(wp) :: FE(10), e_map(3), e_hbm(3), kt, ms, t_ref
   real(wp), allocatable :: t(:)
   integer, parameter :: Hs(6) = [1, 3, 5, 9, 17, 0]
-  integer :: i, k, r, nrep, kind, c0, c1, cr
+  integer :: i, k, r, nrep, kind
+  integer(8) :: c0, c1, cr
   character(len=16) :: arg
 
   call get_command_argument(1, arg)
