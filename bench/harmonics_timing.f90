@@ -5,6 +5,7 @@
 !> H = 33. Argument: 0 blade A's asymmetric damper, 1 a Jenkins damper (its stuck stiffness and
 !> half its moment range). One JSON object per line on stdout (bench/bench_harmonics.py).
 program harmonics_timing
+  use, intrinsic :: iso_fortran_env, only: int64
   use udmap_kinds, only: wp
   use udmap_error, only: error_type
   use udmap_beam, only: beam_params_type
@@ -33,7 +34,7 @@ program harmonics_timing
   real(wp), allocatable :: t(:)
   integer, parameter :: Hs(6) = [1, 3, 5, 9, 17, 0]
   integer :: i, k, r, nrep, kind
-  integer(8) :: c0, c1, cr
+  integer(int64) :: c0, c1, cr
   character(len=16) :: arg
 
   call get_command_argument(1, arg)
