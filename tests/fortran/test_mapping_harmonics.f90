@@ -123,6 +123,27 @@ program test_mapping_harmonics
   end if
   set%warm_start = 2
 
+  ! after a change of F_E alone the root starts from the last one (fewer traces), and equals
+  ! the root found cold by a new model
+  an%harmonics = 5
+  call new_model(model, blade, damper, an, error)
+  call backbone(model, [5.0_wp], ph, error)
+  k = model%harm%traces
+  call backbone(model, [5.5_wp], ph, error)
+  call check_no_error(suite, "F_E change, warm", error)
+  k = model%harm%traces - k
+  call new_model(model, blade, damper, an, error)
+  call backbone(model, [5.5_wp], p1b, error)
+  call check_no_error(suite, "F_E change, cold", error)
+  if (allocated(ph) .and. allocated(p1b)) then
+    call check_close(suite, "F_E change: warm gamma_P = cold", ph(1)%gamma_P, p1b(1)%gamma_P, &
+      & 1e-9_wp)
+    call check_close(suite, "F_E change: warm f_res = cold", ph(1)%f_res, p1b(1)%f_res, 1e-7_wp)
+    call check_close(suite, "F_E change: warm sigma_max = cold", ph(1)%sigma_max, &
+      & p1b(1)%sigma_max, 1e-7_wp)
+    call check_true(suite, "F_E change: fewer traces than cold", k < model%harm%traces)
+  end if
+
   ! a layer solved cold equals the same layer solved from a neighbour's solution
   call harmonic_resize(warm, 5)
   call harmonic_solve(model%harm, blade, 1.05e-3_wp, 2*pi*191.0_wp, warm, error)

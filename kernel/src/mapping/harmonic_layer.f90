@@ -44,22 +44,6 @@ module udmap_harmonic_layer
   real(wp), parameter :: newton_tol = 1.0e-12_wp
   integer, parameter :: newton_max = 60
 
-  !> The contact element the layers are traced through, and the scratch of the solves (one per
-  !> model; nothing shared).
-  type :: harmonic_workspace_type
-    class(hysteretic_element_type), allocatable :: element
-    type(aft_workspace_type) :: aft
-    !> Static moment of the loaded damper [N m].
-    real(wp) :: M_ref = 0
-    !> Static receptances H_gg(0), H_sg(0).
-    complex(wp) :: gg0 = 0, sg0 = 0
-    !> Damper revision and summary numbers the element was built for.
-    integer :: revision = -huge(1)
-    real(wp) :: fingerprint(5) = 0
-    !> Traces done (statistics).
-    integer :: traces = 0
-  end type harmonic_workspace_type
-
   !> A solved layer (gamma, omega) with harmonics 0..H; also the warm start of the next solve.
   type :: harmonic_state_type
     integer :: H = 0
@@ -79,6 +63,26 @@ module udmap_harmonic_layer
     !> A contact opened during the cycle.
     logical :: lift_off = .false.
   end type harmonic_state_type
+  !> The contact element the layers are traced through, and the scratch of the solves (one per
+  !> model; nothing shared).
+  type :: harmonic_workspace_type
+    class(hysteretic_element_type), allocatable :: element
+    type(aft_workspace_type) :: aft
+    !> Static moment of the loaded damper [N m].
+    real(wp) :: M_ref = 0
+    !> Static receptances H_gg(0), H_sg(0).
+    complex(wp) :: gg0 = 0, sg0 = 0
+    !> Damper revision and summary numbers the element was built for.
+    integer :: revision = -huge(1)
+    real(wp) :: fingerprint(5) = 0
+    !> Traces done (statistics).
+    integer :: traces = 0
+    !> The last backbone root at a fixed H, its force and the Jacobian of its root search:
+    !> the warm start of the next root after a change of F_E alone (last%H = 0: none).
+    type(harmonic_state_type) :: last
+    real(wp) :: last_F = 0, last_J(2, 2) = 0
+  end type harmonic_workspace_type
+
 
   !> Outputs of a solved layer at force |P|.
   type :: harmonic_outputs_type
@@ -194,7 +198,7 @@ contains
     call unpack_x(x, s)
     s%lift_off = ws%aft%lift_off
     ! psi needs dM/dGamma at the solution: renew a Jacobian taken far from it
-    if (maxval(abs(x - s%x_jm)) > 1.0e-3_wp*gamma) then
+    if (maxval(abs(x - s%x_jm)) > 1.0e-4_wp*gamma) then
       call jacobian(x, error)
       if (allocated(error)) return
     end if
@@ -643,13 +647,16 @@ contains
   !> peak search in a secant on gamma), found with a third of the layer solves. ok = .false.
   !> when it does not converge in 30 iterations (then use harmonic_root).
   subroutine harmonic_peak_root(ws, blade, F_E, gamma_start, omega_start, omega_lo, omega_hi, &
-      & rtol, s, ok, error)
+      & rtol, s, ok, error, J0)
     type(harmonic_workspace_type), intent(inout) :: ws
     type(blade_type), intent(in) :: blade
     real(wp), intent(in) :: F_E, gamma_start, omega_start, omega_lo, omega_hi, rtol
     type(harmonic_state_type), intent(inout) :: s
     logical, intent(out) :: ok
     type(error_type), allocatable, intent(out) :: error
+    !> In: a Jacobian to start from instead of finite differences (a neighbouring root's; all
+    !> zero: none); out: the Jacobian at the root.
+    real(wp), intent(inout), optional :: J0(2, 2)
     real(wp) :: z(2), f(2), zt(2), ft(2), J(2, 2), dz(2), det, df(2), h, fn, ftn
     integer :: it, k
     real(wp), parameter :: dstep = 1.0e-4_wp
@@ -657,16 +664,20 @@ contains
     z = [log(gamma_start), log(omega_start)]
     call eval(z, f, error)
     if (allocated(error)) return
-    ! finite-difference Jacobian at the start
-    do k = 1, 2
-      zt = z
-      zt(k) = z(k) + dstep
-      call eval(zt, ft, error)
+    J = 0
+    if (present(J0)) J = J0
+    if (all(J == 0)) then
+      ! finite-difference Jacobian at the start
+      do k = 1, 2
+        zt = z
+        zt(k) = z(k) + dstep
+        call eval(zt, ft, error)
+        if (allocated(error)) return
+        J(:, k) = (ft - f)/dstep
+      end do
+      call eval(z, f, error)
       if (allocated(error)) return
-      J(:, k) = (ft - f)/dstep
-    end do
-    call eval(z, f, error)
-    if (allocated(error)) return
+    end if
     fn = norm2(f)
     do it = 1, 30
       det = J(1,1)*J(2,2) - J(1,2)*J(2,1)
@@ -690,6 +701,7 @@ contains
       fn = ftn
       if (maxval(abs(dz)) <= rtol) then
         ok = .true.
+        if (present(J0)) J0 = J
         return
       end if
     end do

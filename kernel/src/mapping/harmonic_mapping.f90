@@ -216,6 +216,9 @@ contains
     if (allocated(error)) return
     model%harm%revision = model%damper%revision
     model%harm%fingerprint = fp
+    ! a new damper: no warm start from the old one's roots
+    model%harm%last = harmonic_state_type()
+    model%harm%last_F = 0
   end subroutine ensure_element
 
   !> The multi-harmonic counterpart of the single-harmonic point p1: every root refined, the
@@ -329,7 +332,7 @@ contains
       type(harmonic_state_type), intent(inout) :: st
       type(error_type), allocatable, intent(out) :: err
       type(harmonic_state_type), intent(in), optional :: warm
-      real(wp) :: slope, Fb(2), fr(2)
+      real(wp) :: slope, Fb(2), fr(2), Jb(2, 2)
       logical :: ok
       jump = .false.
       if (present(warm)) then
@@ -340,9 +343,31 @@ contains
       call harmonic_resize(st, Hs)
       st%omega = omega0
       if (at_peak) then
+        Jb = 0
+        if (.not.present(warm) .and. .not.auto .and. nr == 1 .and. &
+          & model%harm%last%H == Hs .and. model%harm%last_F > 0) then
+          ! after a change of F_E alone: from the last root at this H and its Jacobian
+          st = model%harm%last
+          Jb = model%harm%last_J
+          call harmonic_peak_root(model%harm, model%blade, p1%F_E, st%gamma, st%omega, &
+            & model%omega_lo, model%omega_hi, rtol_h, st, ok, err, Jb)
+          if (allocated(err)) return
+          if (ok) then
+            call remember(st, Jb)
+            return
+          end if
+          st = harmonic_state_type()
+          call harmonic_resize(st, Hs)
+          st%omega = omega0
+          Jb = 0
+        end if
         call harmonic_peak_root(model%harm, model%blade, p1%F_E, gamma0, omega0, &
-          & model%omega_lo, model%omega_hi, rtol_h, st, ok, err)
-        if (ok .or. allocated(err)) return
+          & model%omega_lo, model%omega_hi, rtol_h, st, ok, err, Jb)
+        if (allocated(err)) return
+        if (ok) then
+          if (.not.auto .and. nr == 1) call remember(st, Jb)
+          return
+        end if
         ! fallback: a secant on gamma around full peak searches, started with the
         ! single-harmonic slope d ln F_bb/d ln gamma
         call backbone_curve(model, [gamma0*(1 - 1.0e-4_wp), gamma0*(1 + 1.0e-4_wp)], Fb, fr, err)
@@ -355,6 +380,15 @@ contains
           & err)
       end if
     end subroutine solve_root
+
+    !> Keeps a root and its Jacobian for the next force (fixed H only).
+    subroutine remember(st, Jr)
+      type(harmonic_state_type), intent(in) :: st
+      real(wp), intent(in) :: Jr(2, 2)
+      model%harm%last = st
+      model%harm%last_F = p1%F_E
+      model%harm%last_J = Jr
+    end subroutine remember
   end subroutine multi_point
 
   pure subroutine sort(x)
