@@ -25,10 +25,13 @@
 !>       7 flat1_x, 8 flat1_y, 9 flat2_x, 10 flat2_y, 11 curved_x, 12 curved_y [m],
 !>       13 kn_flat, 14 kt_flat, 15 kn_curved, 16 kt_curved [N/m];
 !>     NDAMPER = 2, rotational Jenkins element (PHYSICS.md 2.4): 1 kt [N m/rad], 2 M_slip [N m].
-!>   ANALYS(NANALY), the analysis settings (udmap_analysis), 2 <= NANALY <= 5; entries beyond
+!>   ANALYS(NANALY), the analysis settings (udmap_analysis), 2 <= NANALY <= 7; entries beyond
 !>     NANALY take their defaults:
 !>     1 f_min, 2 f_max [Hz] (band of the resonance), 3 sigma_all [Pa] (default 80e6),
-!>     4 rtol (default 1e-12), 5 grid_per_decade (whole number, default 24).
+!>     4 rtol (default 1e-12), 5 grid_per_decade (whole number, default 24),
+!>     6 harmonics (whole number: 1 the single-harmonic method (default), 2..64 harmonics
+!>     0..H in multi-harmonic layers, 0 automatic; PHYSICS.md 4.1), 7 harmonic_tol (default
+!>     1e-3). With harmonics /= 1 GAMMAP and SIGMAA stay first-harmonic amplitudes.
 !>
 !> INFO: 0 success; -i: the i-th argument is invalid (for an array, one of its entries: the
 !> derived-type API and the C API give the message naming it); UDMAP_EPHYSICS = 3: a physics
@@ -61,7 +64,7 @@ module udmap_api_legacy
   !> Length of DAMPER for the asymmetric damper and for the Jenkins element.
   integer, parameter :: LEGACY_NDAMPER_ASYMMETRIC = 16, LEGACY_NDAMPER_JENKINS = 2
   !> Allowed lengths of ANALYS.
-  integer, parameter :: LEGACY_NANALYSIS_MIN = 2, LEGACY_NANALYSIS_MAX = 5
+  integer, parameter :: LEGACY_NANALYSIS_MIN = 2, LEGACY_NANALYSIS_MAX = 7
   !> REGIME value of a point without a finite response (zeta = 0 and F_E >= F_lim).
   integer, parameter :: LEGACY_REGIME_UNBOUNDED = 4
 
@@ -428,6 +431,12 @@ contains
         return
       end if
     end if
+    if (nanalysis >= 6) then
+      if (.not.whole(analysis(6))) then
+        info = int(-analysis_arg, c_int)
+        return
+      end if
+    end if
     bp%E = real(beam(1), wp)
     bp%rho = real(beam(2), wp)
     bp%zeta = real(beam(3), wp)
@@ -457,6 +466,8 @@ contains
     if (nanalysis >= 3) a%sigma_all = real(analysis(3), wp)
     if (nanalysis >= 4) a%rtol = real(analysis(4), wp)
     if (nanalysis >= 5) a%grid_per_decade = nint(analysis(5))
+    if (nanalysis >= 6) a%harmonics = nint(analysis(6))
+    if (nanalysis >= 7) a%harmonic_tol = real(analysis(7), wp)
     call new_model(model, blade, d, a, error)
     if (allocated(error)) then
       info = info_of(error, analysis_arg)

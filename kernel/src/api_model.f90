@@ -11,7 +11,7 @@ module udmap_api_model
   use udmap_damper, only: damper_type
   use udmap_model, only: model_type, analysis_type, point_type, curve_type, new_model, &
     & set_damper, limit_force, backbone_curve, backbone, response, response_curves, &
-    & limit_force_backbone
+    & limit_force_backbone, set_harmonics
   implicit none
   private
   public :: c_analysis_type, c_point_type, c_model_type
@@ -24,6 +24,8 @@ module udmap_api_model
     real(c_double) :: f_min, f_max, sigma_all, rtol
     integer(c_int) :: grid_per_decade
     integer(c_int) :: eigen_method, dense_max, sweep_points
+    integer(c_int) :: harmonics
+    real(c_double) :: harmonic_tol
   end type c_analysis_type
 
   !> struct udmap_point.
@@ -31,6 +33,8 @@ module udmap_api_model
     real(c_double) :: F_E, gamma_P, f_res, sigma_a, u_E, k_re, k_im
     integer(c_int) :: regime, hcf_ok, unbounded, nroots
     real(c_double) :: roots(max_roots)
+    real(c_double) :: gamma_max, sigma_max
+    integer(c_int) :: harmonics
   end type c_point_type
 
   !> What a udmap_model handle points to.
@@ -39,6 +43,8 @@ module udmap_api_model
     type(curve_type), allocatable :: curves(:)
     !> Per point of the last udmap_model_backbone call: gamma_P lies at a jump of k.
     logical, allocatable :: jump(:)
+    !> The points of the last backbone or response call (for their harmonic content).
+    type(point_type), allocatable :: last(:)
   end type c_model_type
 
 contains
@@ -55,6 +61,8 @@ contains
     analysis%eigen_method = a%eigen_method
     analysis%dense_max = a%dense_max
     analysis%sweep_points = a%sweep_points
+    analysis%harmonics = a%harmonics
+    analysis%harmonic_tol = a%harmonic_tol
   end subroutine udmap_analysis_defaults
 
   !> int udmap_new_model(error, blade, damper, const udmap_analysis *, udmap_model *): couples the
@@ -87,6 +95,8 @@ contains
       a%eigen_method = analysis%eigen_method
       a%dense_max = analysis%dense_max
       a%sweep_points = analysis%sweep_points
+      a%harmonics = analysis%harmonics
+      a%harmonic_tol = analysis%harmonic_tol
       allocate(m)
       call new_model(m%model, blade, damper, a, error)
       if (allocated(error)) then
@@ -253,6 +263,9 @@ contains
     if (allocated(p%roots)) nr = min(size(p%roots), max_roots)
     c%nroots = nr
     if (nr > 0) c%roots(1:nr) = p%roots(size(p%roots) - nr + 1:)
+    c%gamma_max = p%gamma_max
+    c%sigma_max = p%sigma_max
+    c%harmonics = p%harmonics
   end subroutine to_c_point
 
   !> int udmap_model_backbone(error, model, n, F_E, udmap_point *): the n resonance peaks.
@@ -281,6 +294,7 @@ contains
           call to_c_point(p(i), points(i))
         end do
         m%jump = p(1:n)%jump
+        call move_alloc(p, m%last)
       end if
     end if
     stat = set_error(errh, error)
@@ -312,10 +326,83 @@ contains
         do i = 1, n
           call to_c_point(p(i), points(i))
         end do
+        call move_alloc(p, m%last)
       end if
     end if
     stat = set_error(errh, error)
   end function udmap_model_response
+
+  !> int udmap_model_set_harmonics(error, model, harmonics, harmonic_tol): harmonics of the
+  !> platform rotation for the next calls (1: the single-harmonic method; H = 2..64: harmonics
+  !> 0..H in multi-harmonic layers; 0: automatic, raised until the outputs change by less than
+  !> harmonic_tol, in [1e-10, 0.1]). Keeps everything the model has cached.
+  function udmap_model_set_harmonics(errh, modelh, harmonics, harmonic_tol) result(stat) &
+      & bind(C, name="udmap_model_set_harmonics")
+    type(c_ptr), value :: errh, modelh
+    integer(c_int), value :: harmonics
+    real(c_double), value :: harmonic_tol
+    integer(c_int) :: stat
+    type(error_type), allocatable :: error
+    type(c_model_type), pointer :: m
+    call clear_error(errh)
+    if (.not.c_associated(modelh)) then
+      error = error_from_handle("model")
+    else
+      call c_f_pointer(modelh, m)
+      call set_harmonics(m%model, int(harmonics), real(harmonic_tol, wp), error)
+    end if
+    stat = set_error(errh, error)
+  end function udmap_model_set_harmonics
+
+  !> int udmap_model_point_harmonics(error, model, i, nmax, gamma_h, sigma_h, int *nh): the
+  !> harmonic content of point i (0-based) of the last udmap_model_backbone or
+  !> udmap_model_response call: |Gamma_h| [rad] and |sigma_h| [Pa] for h = 0..nh - 1 (at most
+  !> nmax values each). nh = 2 (harmonics 0 and 1, harmonic 0 not computed: 0) for a
+  !> single-harmonic point.
+  function udmap_model_point_harmonics(errh, modelh, i, nmax, gamma_h, sigma_h, nh) &
+      & result(stat) bind(C, name="udmap_model_point_harmonics")
+    type(c_ptr), value :: errh, modelh
+    integer(c_int), value :: i, nmax
+    real(c_double), intent(out) :: gamma_h(*), sigma_h(*)
+    integer(c_int), intent(out) :: nh
+    integer(c_int) :: stat
+    type(error_type), allocatable :: error
+    type(c_model_type), pointer :: m
+    integer :: k
+    real(wp) :: two(2)
+    call clear_error(errh)
+    nh = 0
+    if (.not.c_associated(modelh)) then
+      error = error_from_handle("model")
+    else
+      call c_f_pointer(modelh, m)
+      if (.not.allocated(m%last)) then
+        call fatal_error(error, "point_harmonics: no backbone or response computed yet", &
+          & UDMAP_EINPUT)
+      else if (i < 0 .or. i >= size(m%last)) then
+        call fatal_error(error, "point_harmonics: index out of range", UDMAP_EINPUT)
+      else if (nmax < 0) then
+        call fatal_error(error, "point_harmonics: nmax must not be negative", UDMAP_EINPUT)
+      else
+        associate(p => m%last(i + 1))
+          if (allocated(p%gamma_h)) then
+            nh = int(size(p%gamma_h), c_int)
+            k = min(int(nh), int(nmax))
+            gamma_h(1:k) = p%gamma_h(0:k-1)
+            sigma_h(1:k) = p%sigma_h(0:k-1)
+          else
+            nh = 2
+            two = [0.0_wp, p%gamma_P]
+            k = min(2, int(nmax))
+            gamma_h(1:k) = two(1:k)
+            two = [0.0_wp, p%sigma_a]
+            sigma_h(1:k) = two(1:k)
+          end if
+        end associate
+      end if
+    end if
+    stat = set_error(errh, error)
+  end function udmap_model_point_harmonics
 
   !> int udmap_model_curves(error, model, n, F_E, layers): computes and keeps the response
   !> curves of n forces.

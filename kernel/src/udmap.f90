@@ -12,6 +12,11 @@
 !>   call backbone(model, F_E, points, error)                  ! peaks, point_type(:)
 !>   call response(model, f_exc, F_E, points, error)           ! at a given frequency
 !>   call response_curves(model, F_E, layers, curves, error)   ! curve_type(:)
+!>   call set_harmonics(model, 0, 1e-3_wp, error)              ! multi-harmonic layers, auto H
+!>
+!> analysis%harmonics (or set_harmonics): 1 the single-harmonic method, H > 1 harmonics 0..H,
+!> 0 automatic (PHYSICS.md 4.1); points then carry gamma_max, sigma_max, harmonics, gamma_h(0:H)
+!> and sigma_h(0:H).
 !>
 !> Every procedure reports failure through `type(error_type), allocatable :: error`: allocated
 !> on failure, with error%stat (UDMAP_EINPUT, UDMAP_EPHYSICS, UDMAP_ENUMERIC) and a message
@@ -28,7 +33,7 @@ module udmap
   use udmap_damper, only: damper_type, asymmetric_params_type, new_asymmetric_damper, &
     & new_jenkins_damper, new_table_damper
   use udmap_model, only: analysis_type, point_type, curve_type, model_type, new_model, &
-    & limit_force, backbone_curve, backbone, response, response_curves, &
+    & limit_force, backbone_curve, backbone, response, response_curves, set_harmonics, &
     & REGIME_STUCK, REGIME_PARTIAL_SLIP, REGIME_FULL_SLIP, REGIME_LIMIT, &
     & BRANCH_LOWER, BRANCH_UPPER, BRANCH_TURNING
   use udmap_api_legacy, only: udmap_version_numbers, udmap_table_arrays, &
@@ -46,7 +51,7 @@ module udmap
     & new_table_damper, stiffness_table
   ! mapping (PHYSICS.md 3-5)
   public :: analysis_type, point_type, curve_type, model_type, new_model, limit_force, &
-    & backbone_curve, backbone, response, response_curves
+    & backbone_curve, backbone, response, response_curves, set_harmonics
   public :: REGIME_STUCK, REGIME_PARTIAL_SLIP, REGIME_FULL_SLIP, REGIME_LIMIT
   public :: BRANCH_LOWER, BRANCH_UPPER, BRANCH_TURNING
   ! plain arrays (kernel/src/api_legacy.f90)

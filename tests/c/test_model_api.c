@@ -141,6 +141,39 @@ int main(void) {
   status = udmap_model_curve_size(err, model, 3, &n);
   check(status == UDMAP_EINPUT, "curve index out of range");
 
+  /* multi-harmonic layers (PHYSICS.md 4.1): harmonics 0..3 on the same model, then back to
+   * the single-harmonic path with bit-identical numbers */
+  {
+    udmap_point h3[2], h1[2], b1[2];
+    double gh[8], sh[8];
+    int nh = 0;
+    check(analysis.harmonics == 1 && analysis.harmonic_tol == 1e-3, "harmonics defaults");
+    status = udmap_model_backbone(err, model, 2, forces, b1);
+    check(status == UDMAP_OK && b1[0].harmonics == 1 && b1[0].gamma_max == b1[0].gamma_P &&
+              b1[0].sigma_max == b1[0].sigma_a, "H = 1 point fields");
+    status = udmap_model_set_harmonics(err, model, 3, 1e-3);
+    check(status == UDMAP_OK, "set harmonics 3");
+    status = udmap_model_backbone(err, model, 2, forces, h3);
+    check(status == UDMAP_OK && h3[0].harmonics == 3 && h3[1].harmonics == 3, "backbone H = 3");
+    check(h3[0].gamma_max > 0 && fabs(h3[0].gamma_P / b1[0].gamma_P - 1) < 0.2,
+          "H = 3 near H = 1");
+    status = udmap_model_point_harmonics(err, model, 1, 8, gh, sh, &nh);
+    check(status == UDMAP_OK && nh == 4 && gh[1] == h3[1].gamma_P, "harmonic content");
+    check(gh[1] - gh[2] - gh[3] <= h3[1].gamma_max && h3[1].gamma_max <= gh[1] + gh[2] + gh[3],
+          "gamma_max between the bounds of its harmonics");
+    status = udmap_model_point_harmonics(err, model, 2, 8, gh, sh, &nh);
+    check(status == UDMAP_EINPUT, "harmonic content: index out of range");
+    status = udmap_model_set_harmonics(err, model, 65, 1e-3);
+    check(status == UDMAP_EINPUT, "harmonics 65 refused");
+    status = udmap_model_set_harmonics(err, model, 0, 0.5);
+    check(status == UDMAP_EINPUT, "harmonic_tol 0.5 refused");
+    status = udmap_model_set_harmonics(err, model, 1, 1e-3);
+    status = udmap_model_backbone(err, model, 2, forces, h1);
+    check(status == UDMAP_OK && h1[0].gamma_P == b1[0].gamma_P &&
+              h1[1].f_res == b1[1].f_res && h1[1].sigma_a == b1[1].sigma_a,
+          "back to H = 1: the same numbers");
+  }
+
   /* bad calls */
   forces[1] = -1;
   status = udmap_model_backbone(err, model, 3, forces, points);

@@ -190,6 +190,51 @@ contains
     call udmap_table_arrays(damper_a, 16, 1, [0.0_wp], k_re, k_im, base, info)
     call check_true(suite, "gamma = 0: INFO = -4", info == -4)
 
+    ! ANALYS(6) = harmonics, ANALYS(7) = harmonic_tol: H = 3 against the module API, and a
+    ! harmonics that is no whole number or out of range is an invalid ANALYS
+    block
+      type(blade_type), target :: bl
+      type(damper_type), target :: dm
+      type(model_type) :: md
+      type(analysis_type) :: an
+      type(point_type), allocatable :: pts(:)
+      type(error_type), allocatable :: err
+      type(asymmetric_params_type) :: dp
+      call udmap_backbone_arrays(beam_a, 14, damper_a, 16, [band, 80e6_wp, 1e-12_wp, 24.0_wp, &
+        & 3.0_wp, 1e-3_wp], 7, 2, forces(1:2), gamma_P(1:2), f_res(1:2), sigma_a(1:2), &
+        & u_E(1:2), regime(1:2), F_lim, info)
+      call check_true(suite, "ANALYS(6) = 3: info", info == 0)
+      call new_beam_blade(bl, beam_params_type(E=beam_a(1), rho=beam_a(2), zeta=beam_a(3), &
+        & neck_L=beam_a(4), neck_h=beam_a(5), neck_b=beam_a(6), platform_L=beam_a(7), &
+        & platform_m=beam_a(8), platform_J=beam_a(9), airfoil_L=beam_a(10), &
+        & airfoil_h=beam_a(11), airfoil_b=beam_a(12), neck_elements=nint(beam_a(13)), &
+        & airfoil_elements=nint(beam_a(14))), err)
+      dp = asymmetric_params_type(CF=damper_a(1), mu=damper_a(2), pitch=damper_a(3), &
+        & y_P=damper_a(4), beta_L_deg=damper_a(5), beta_R_deg=damper_a(6), &
+        & flat=reshape(damper_a(7:10), [2, 2]), curved=damper_a(11:12), &
+        & kn_flat=damper_a(13), kt_flat=damper_a(14), kn_curved=damper_a(15), &
+        & kt_curved=damper_a(16))
+      call new_asymmetric_damper(dm, dp, err)
+      an%f_min = band(1)
+      an%f_max = band(2)
+      an%harmonics = 3
+      call new_model(md, bl, dm, an, err)
+      call backbone(md, forces(1:2), pts, err)
+      call check_no_error(suite, "module backbone H = 3", err)
+      if (allocated(pts)) then
+        call check_close(suite, "ANALYS(6) = 3: gamma_P as the module API", gamma_P(2), &
+          & pts(2)%gamma_P, 1e-12_wp)
+        call check_close(suite, "ANALYS(6) = 3: sigma_a as the module API", sigma_a(2), &
+          & pts(2)%sigma_a, 1e-12_wp)
+      end if
+    end block
+    call udmap_backbone_arrays(beam_a, 14, damper_a, 16, [band, 80e6_wp, 1e-12_wp, 24.0_wp, &
+      & 2.5_wp], 6, 3, forces, gamma_P, f_res, sigma_a, u_E, regime, F_lim, info)
+    call check_true(suite, "ANALYS(6) = 2.5: INFO = -5", info == -5)
+    call udmap_backbone_arrays(beam_a, 14, damper_a, 16, [band, 80e6_wp, 1e-12_wp, 24.0_wp, &
+      & 65.0_wp], 6, 3, forces, gamma_P, f_res, sigma_a, u_E, regime, F_lim, info)
+    call check_true(suite, "ANALYS(6) = 65: INFO = -5", info == -5)
+
     ! The first mode (near 197 Hz with the damper) lies outside 300..400 Hz.
     call udmap_backbone_arrays(beam_a, 14, damper_a, 16, [300.0_wp, 400.0_wp], 2, 3, forces, &
       & gamma_P, f_res, sigma_a, u_E, regime, F_lim, info)

@@ -156,6 +156,11 @@ typedef struct {
   int dense_max;        /* largest ndof for the dense eigen-solver (zggev); larger banded models
                            use ARPACK shift-invert, default 200 */
   int sweep_points;     /* bare-blade samples over the band for the response curves, default 400 */
+  int harmonics;        /* harmonics of the platform rotation (PHYSICS.md 4.1): 1 (default) the
+                           single-harmonic method; H = 2..64 harmonics 0..H in multi-harmonic
+                           layers; 0 automatic (raised until the outputs change by less than
+                           harmonic_tol) */
+  double harmonic_tol;  /* relative change that stops the automatic choice, default 1e-3 */
 } udmap_analysis;
 
 void udmap_analysis_defaults(udmap_analysis *analysis);
@@ -187,6 +192,10 @@ typedef struct {
   int nroots;      /* number of gamma_P roots (all in roots[], ascending; beyond
                       UDMAP_MAX_ROOTS the largest ones) */
   double roots[UDMAP_MAX_ROOTS];
+  double gamma_max;  /* largest excursion of gamma(t) from its mean [rad] (gamma_P at H = 1) */
+  double sigma_max;  /* largest excursion of sigma(t) from its mean [Pa] (sigma_a at H = 1);
+                        with harmonics > 1 hcf_ok takes sigma_max instead of sigma_a */
+  int harmonics;     /* harmonics used (1: the single-harmonic method) */
 } udmap_point;
 
 int udmap_model_limit_force(udmap_error error, udmap_model model, double *F_lim);
@@ -195,6 +204,18 @@ int udmap_model_limit_force(udmap_error error, udmap_model model, double *F_lim)
  * The unbounded flag (zeta = 0), hcf_ok and the regime of the points use the smaller of the
  * two. */
 int udmap_model_limit_force_backbone(udmap_error error, udmap_model model, double *F_lim_backbone);
+
+/* Harmonics for the next backbone, response and curves calls (as udmap_analysis.harmonics and
+ * harmonic_tol), keeping every cache of the model (the bare blade, the single-harmonic backbone
+ * table, the contact element of the layers). */
+int udmap_model_set_harmonics(udmap_error error, udmap_model model, int harmonics,
+                              double harmonic_tol);
+
+/* Harmonic content of point i (0-based) of the last udmap_model_backbone or
+ * udmap_model_response call: gamma_h[h] = |Gamma_h| [rad], sigma_h[h] = |sigma_h| [Pa] for
+ * h = 0..*nh - 1 (at most nmax entries written; *nh = harmonics + 1, or 2 at H = 1). */
+int udmap_model_point_harmonics(udmap_error error, udmap_model model, int i, int nmax,
+                                double *gamma_h, double *sigma_h, int *nh);
 
 /* Backbone F_bb(gamma) and the peak frequency for n amplitudes. */
 int udmap_model_backbone_curve(udmap_error error, udmap_model model, int n, const double *gamma,

@@ -10,19 +10,23 @@
 !>   call backbone(model, F_E, points, error)
 !>   call response(model, f_exc, F_E, points, error)
 !>   call response_curves(model, F_E, layers, curves, error)
+!>
+!> analysis%harmonics = 1 (default) is the paper's single-harmonic method; H > 1 or 0 (auto)
+!> takes the multi-harmonic layers of PHYSICS.md 4.1 (udmap_harmonic_mapping) in backbone,
+!> response and response_curves.
 module udmap_model
   use udmap_model_data, only: analysis_type, point_type, curve_type, model_type, new_model, &
     & set_damper, limit_force, limit_force_backbone, EIGEN_AUTO, EIGEN_DIRECT, EIGEN_MODAL, REGIME_STUCK, REGIME_PARTIAL_SLIP, &
     & REGIME_FULL_SLIP, REGIME_LIMIT, BRANCH_LOWER, BRANCH_UPPER, BRANCH_TURNING
-  use udmap_backbone, only: backbone_curve, backbone
-  use udmap_response, only: response
-  use udmap_curves, only: response_curves
+  use udmap_backbone, only: backbone_curve
+  use udmap_harmonic_mapping, only: backbone, response, response_curves, harmonics_near_modes, &
+    & set_harmonics
   implicit none
   private
   public :: analysis_type, point_type, curve_type, model_type
   public :: limit_force_backbone
   public :: new_model, set_damper, limit_force, backbone_curve, backbone, response, &
-    & response_curves
+    & response_curves, harmonics_near_modes, set_harmonics
   public :: EIGEN_AUTO, EIGEN_DIRECT, EIGEN_MODAL
   public :: REGIME_STUCK, REGIME_PARTIAL_SLIP, REGIME_FULL_SLIP, REGIME_LIMIT
   public :: BRANCH_LOWER, BRANCH_UPPER, BRANCH_TURNING

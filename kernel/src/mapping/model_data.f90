@@ -9,6 +9,7 @@ module udmap_model_data
   use udmap_layer, only: bare_type, layer_peak_type
   use udmap_eigen_start, only: secular_type, new_secular
   use udmap_band_receptances, only: new_band_receptances
+  use udmap_harmonic_layer, only: harmonic_workspace_type, HARMONICS_MAX
   implicit none
   private
   public :: analysis_type, point_type, curve_type, model_type, backbone_table_type, &
@@ -65,6 +66,12 @@ module udmap_model_data
     !> Evaluate the bare receptances in the band through the checked interpolant of
     !> udmap_band_receptances (off: the blade's own evaluation every time).
     logical :: band_interpolation = .true.
+    !> Harmonics of the platform rotation (PHYSICS.md 4.1): 1 the single-harmonic method,
+    !> H > 1 harmonics 0..H in multi-harmonic layers, 0 automatic (raised until the outputs
+    !> change by less than harmonic_tol).
+    integer :: harmonics = 1
+    !> Relative change of the outputs that stops the automatic choice of H.
+    real(wp) :: harmonic_tol = 1e-3_wp
   end type analysis_type
 
   !> One point of the non-linear response: at resonance (backbone) or at a given frequency.
@@ -93,6 +100,13 @@ module udmap_model_data
     logical :: jump = .false.
     !> Every gamma_P root [rad], ascending.
     real(wp), allocatable :: roots(:)
+    !> Largest excursions of gamma(t) [rad] and sigma(t) [Pa] from their means (gamma_P and
+    !> sigma_a at H = 1).
+    real(wp) :: gamma_max = 0, sigma_max = 0
+    !> Harmonics used (1: the single-harmonic method).
+    integer :: harmonics = 1
+    !> |Gamma_h| [rad] and |sigma_h| [Pa], h = 0..harmonics (multi-harmonic points only).
+    real(wp), allocatable :: gamma_h(:), sigma_h(:)
   end type point_type
 
   !> One non-linear response curve, points in path order.
@@ -163,6 +177,8 @@ module udmap_model_data
     !> Bare-blade sweep over the band (for the response curves), computed on first use.
     real(wp), allocatable :: sweep_omega(:)
     type(receptances_type), allocatable :: sweep_r(:)
+    !> Contact element and scratch of the multi-harmonic layers (PHYSICS.md 4.1).
+    type(harmonic_workspace_type) :: harm
   end type model_type
 
 contains
@@ -209,6 +225,15 @@ contains
       end if
       if (a%sweep_points < 16 .or. a%sweep_points > 1000000) then
         call fatal_error(error, "analysis.sweep_points must lie in [16, 1e6]", UDMAP_EINPUT)
+        return
+      end if
+      if (a%harmonics < 0 .or. a%harmonics > HARMONICS_MAX) then
+        call fatal_error(error, "analysis.harmonics must be 1, an integer up to 64, or auto (0)", &
+          & UDMAP_EINPUT)
+        return
+      end if
+      if (.not.(a%harmonic_tol >= 1e-10_wp .and. a%harmonic_tol <= 0.1_wp)) then
+        call fatal_error(error, "analysis.harmonic_tol must lie in [1e-10, 0.1]", UDMAP_EINPUT)
         return
       end if
     end associate
@@ -370,6 +395,9 @@ contains
     call layer_response(r, k, g, s, uE)
     if (model%blade%has_stress) point%sigma_a = F_E*abs(s)
     point%u_E = F_E*abs(uE)
+    point%gamma_max = point%gamma_P
+    point%sigma_max = point%sigma_a
+    point%harmonics = 1
     point%regime = regime_of(model%damper, F_E, F_lim, point%gamma_P)
     ! criterion (8a) cannot be checked without F_lim: not admissible then
     point%hcf_ok = F_E <= 0.5_wp*F_lim .and. point%sigma_a <= model%analysis%sigma_all .and. &

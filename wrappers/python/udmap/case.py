@@ -145,7 +145,7 @@ SCHEMA: dict[tuple, dict[str, Field]] = {
         "sweep_points": _int(16, 1000000, "bare-blade frequency samples for bracketing "
                              "curve crossings",
                              default=400),
-        "harmonics": Field("harmonics", 2, 100, default=1,
+        "harmonics": Field("harmonics", 2, 64, default=1,
                            doc="1, harmonics 0..H, or auto (PHYSICS.md 4.1)"),
         "harmonic_tol": _real(1e-12, 0.1, "", "relative change that stops harmonics auto",
                               default=1e-3),
@@ -557,4 +557,5 @@ def build_model(case: Case, blade=None, damper=None):
     return Model(blade, damper, a["f_min"], a["f_max"], sigma_all=a["sigma_all"],
                  rtol=a["rtol"], grid_per_decade=a["grid_per_decade"],
                  eigen_method=EIGEN_METHODS[a["eigen_method"]], dense_max=a["dense_max"],
-                 sweep_points=a["sweep_points"])
+                 sweep_points=a["sweep_points"], harmonics=a["harmonics"],
+                 harmonic_tol=a["harmonic_tol"])

@@ -15,7 +15,7 @@ from ._lib import InputError, PhysicsError, UdmapError
 
 REGIME_NAMES = {0: "stuck", 1: "partial slip", 2: "full slip", 3: "at or above F_lim"}
 POINT_FIELDS = ("F_E", "gamma_P", "f_res", "sigma_a", "u_E", "k_re", "k_im", "regime",
-                "hcf_ok", "roots")
+                "hcf_ok", "roots", "gamma_max", "sigma_max", "harmonics")
 
 
 def _float_list(text: str) -> list[float]:
@@ -50,6 +50,26 @@ def _positive_int(text: str) -> int:
     if v < 1:
         raise argparse.ArgumentTypeError(f"must be at least 1, got {text}")
     return v
+
+
+def _harmonics(text: str):
+    """--harmonics H|auto (argparse type): an integer 1..64 or "auto"."""
+    if text == "auto":
+        return text
+    try:
+        v = int(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"expected an integer 1..64 or 'auto', got {text!r}")
+    if not 1 <= v <= 64:
+        raise argparse.ArgumentTypeError(f"must be an integer 1..64 or 'auto', got {text}")
+    return v
+
+
+def _with_harmonics(case, args):
+    """The case with --harmonics (if given) overriding analysis.harmonics."""
+    if getattr(args, "harmonics", None) is not None:
+        case.analysis["harmonics"] = args.harmonics
+    return case
 
 
 def _finite(x):
@@ -104,16 +124,28 @@ def _print_points(data: dict) -> None:
     head = {k: v for k, v in data.items() if k != "points"}
     for k, v in head.items():
         print(f"{k:>10} = {v}")
+    multi = any((p.get("harmonics") or 1) > 1 for p in data["points"])
     jump = any(p.get("jump") for p in data["points"])
-    _print_rows(["F_E [N]", "gamma_P [rad]", "f_res [Hz]", "sigma_a [MPa]", "u_E [m]",
-                 "k_re", "k_im", "regime", "hcf_ok"] + (["jump"] if jump else []),
-                [[p["F_E"], p["gamma_P"], p["f_res"],
-                  None if p["sigma_a"] is None else p["sigma_a"] / 1e6, p["u_E"],
-                  p["k_re"], p["k_im"], p["regime_name"], str(p["hcf_ok"])]
-                 + ([str(bool(p.get("jump")))] if jump else [])
-                 for p in data["points"]],
-                [".4g", ".6e", ".6f", ".4f", ".4e", ".6g", ".6g", "s", "s"]
-                + (["s"] if jump else []))
+    header = ["F_E [N]", "gamma_P [rad]", "f_res [Hz]", "sigma_a [MPa]", "u_E [m]",
+              "k_re", "k_im", "regime", "hcf_ok"]
+    fmt = [".4g", ".6e", ".6f", ".4f", ".4e", ".6g", ".6g", "s", "s"]
+    rows = [[p["F_E"], p["gamma_P"], p["f_res"],
+             None if p["sigma_a"] is None else p["sigma_a"] / 1e6, p["u_E"],
+             p["k_re"], p["k_im"], p["regime_name"], str(p["hcf_ok"])]
+            for p in data["points"]]
+    if multi:
+        # multi-harmonic layers: hcf_ok compares sigma_max with sigma_all
+        header += ["H", "gamma_max [rad]", "sigma_max [MPa]"]
+        fmt += ["d", ".6e", ".4f"]
+        for row, p in zip(rows, data["points"]):
+            row += [p.get("harmonics") or 1, p.get("gamma_max"),
+                    None if p.get("sigma_max") is None else p["sigma_max"] / 1e6]
+    if jump:
+        header.append("jump")
+        fmt.append("s")
+        for row, p in zip(rows, data["points"]):
+            row.append(str(bool(p.get("jump"))))
+    _print_rows(header, rows, fmt)
     if jump:
         print("jump: gamma_P sits at a jump gamma_c of k(gamma), k interpolated between its "
               "one-sided values (PHYSICS.md 2.5)")
@@ -160,7 +192,7 @@ def _summary(model, blade, damper) -> dict:
 
 def cmd_backbone(args) -> None:
     from .case import build_blade, build_damper, build_model, load_case
-    case = load_case(args.case)
+    case = _with_harmonics(load_case(args.case), args)
     blade, damper = build_blade(case), build_damper(case)
     model = build_model(case, blade, damper)
     data = _summary(model, blade, damper)
@@ -170,7 +202,7 @@ def cmd_backbone(args) -> None:
 
 def cmd_response(args) -> None:
     from .case import build_blade, build_damper, build_model, load_case
-    case = load_case(args.case)
+    case = _with_harmonics(load_case(args.case), args)
     a = case.analysis
     if not a["f_min"] <= args.freq <= a["f_max"]:
         raise InputError(f"--freq {args.freq} Hz is outside the band [analysis.f_min, "
@@ -186,7 +218,7 @@ def cmd_response(args) -> None:
 
 def cmd_curves(args) -> None:
     from .case import build_model, load_case
-    case = load_case(args.case)
+    case = _with_harmonics(load_case(args.case), args)
     model = build_model(case)
     layers = args.layers or case.analysis["layers"]
     curves = model.curves(args.forces, layers=layers)
@@ -267,12 +299,21 @@ def build_parser() -> argparse.ArgumentParser:
     p = add("table", cmd_table, "damper stiffness k(gamma) and base cycle", forces=False)
     p.add_argument("--gammas", type=_float_list, required=True,
                    help="rotation amplitudes [rad], comma-separated")
-    add("backbone", cmd_backbone, "resonance peaks (backbone) for each force")
+    harmonics_help = ("harmonics of the platform rotation: 1 (the single-harmonic method), H "
+                      "(harmonics 0..H in multi-harmonic layers) or auto; overrides "
+                      "analysis.harmonics")
+    p = add("backbone", cmd_backbone, "resonance peaks (backbone) for each force")
+    p.add_argument("--harmonics", type=_harmonics, default=None, metavar="H|auto",
+                   help=harmonics_help)
     p = add("curves", cmd_curves, "non-linear response curves by amplitude-layered mapping")
     p.add_argument("--layers", type=_positive_int, default=None,
                    help="number of amplitude layers (default from the case, 200)")
+    p.add_argument("--harmonics", type=_harmonics, default=None, metavar="H|auto",
+                   help=harmonics_help)
     p = add("response", cmd_response, "response at a given excitation frequency")
     p.add_argument("--freq", type=_positive, required=True, help="excitation frequency [Hz]")
+    p.add_argument("--harmonics", type=_harmonics, default=None, metavar="H|auto",
+                   help=harmonics_help)
     p = add("hbm", cmd_hbm, "standard convergence-based method (harmonic balance)")
     p.add_argument("--harmonics", type=_positive_int, default=1, help="harmonics 1..H (default 1)")
     p.add_argument("--variant", choices=("condensed", "full"), default="condensed",

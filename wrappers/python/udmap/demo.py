@@ -10,6 +10,9 @@ Files:
   backbone.csv                 the peaks for the demo forces (the summary table)
   backbone_curve.csv           F_bb(gamma) and its frequency
   stiffness.png/.csv           k_Re, k_Im vs gamma (the damper table), gamma_b marked
+  harmonics.png/.csv           GG diagram and gamma_P vs F_E with the single-harmonic method and
+                               with multi-harmonic layers at automatic H side by side
+                               (PHYSICS.md 4.1; dampers with a contact model)
   summary.json                 the summary as JSON
 """
 from __future__ import annotations
@@ -76,7 +79,7 @@ def run_demo(case=None, outdir="out/demo", forces=DEMO_FORCES, quiet: bool = Fal
     a = case.analysis
     forces = np.asarray(forces, dtype=float)
 
-    with Progress(7, "demo") as bar:
+    with Progress(8, "demo") as bar:
         blade = build_blade(case)
         damper = build_damper(case)
         model = build_model(case, blade, damper)
@@ -181,6 +184,37 @@ def run_demo(case=None, outdir="out/demo", forces=DEMO_FORCES, quiet: bool = Fal
         plots.stiffness(g_k, k, damper.gamma_b, out / "stiffness.png", gamma_s=damper.gamma_s)
         bar.update()
 
+        # the single-harmonic premise against multi-harmonic layers (automatic H) at the demo
+        # forces below F_lim
+        harm = []
+        if case.damper["kind"] in ("asymmetric", "jenkins"):
+            F_h = forces[forces < F_lim] if len(forces) else forces
+            model.set_harmonics("auto", a.get("harmonic_tol", 1e-3))
+            harm = model.backbone(F_h) if len(F_h) else []
+            model.set_harmonics(a.get("harmonics", 1) if a.get("harmonics", 1) != "auto"
+                                else "auto", a.get("harmonic_tol", 1e-3))
+            ok1 = [p for p in grid_pts if not p["unbounded"] and p["F_E"] < F_lim]
+            okh = [p for p in harm if not p["unbounded"]]
+            if okh:
+                plots.harmonics_side_by_side(
+                    [p["F_E"] for p in ok1], [p["sigma_a"] for p in ok1],
+                    [p["gamma_P"] for p in ok1], [p["F_E"] for p in okh],
+                    [p["sigma_a"] for p in okh], [p["sigma_max"] for p in okh],
+                    [p["gamma_P"] for p in okh], F_lim, a["sigma_all"],
+                    out / "harmonics.png", harmonics=[p["harmonics"] for p in okh])
+                single = {p["F_E"]: p for p in points}
+                _write_csv(out / "harmonics.csv",
+                           ["F_E_N", "harmonics", "gamma_P_rad", "sigma_a_Pa", "f_res_Hz",
+                            "gamma_max_rad", "sigma_max_Pa", "gamma_P_H1_rad",
+                            "sigma_a_H1_Pa", "f_res_H1_Hz"],
+                           [[p["F_E"], p["harmonics"], p["gamma_P"], p["sigma_a"], p["f_res"],
+                             p["gamma_max"], p["sigma_max"], single[p["F_E"]]["gamma_P"],
+                             single[p["F_E"]]["sigma_a"], single[p["F_E"]]["f_res"]]
+                            for p in okh],
+                           f"{case.name}: peaks with multi-harmonic layers (automatic H, "
+                           "PHYSICS.md 4.1) beside the single-harmonic method (H1 columns)")
+        bar.update()
+
     summary = {"case": case.name, "F_lim": F_lim, "gamma_b": damper.gamma_b,
                "gamma_s": damper.gamma_s, "M_max": damper.M_max, "M_min": damper.M_min,
                "f1_bare": f1, "f_stuck": float(stuck_f[0]), "lift_off": bool(damper.lift_off),
@@ -191,7 +225,12 @@ def run_demo(case=None, outdir="out/demo", forces=DEMO_FORCES, quiet: bool = Fal
                       "sigma_a": G2_point["sigma_a"], "f_res": G2_point["f_res"]},
                "points": [{k: p[k] for k in ("F_E", "gamma_P", "f_res", "sigma_a", "u_E", "k_re",
                                              "k_im", "regime", "regime_name", "hcf_ok",
-                                             "unbounded")} for p in points]}
+                                             "unbounded")} for p in points],
+               "points_auto_harmonics": [{k: p[k] for k in ("F_E", "gamma_P", "f_res",
+                                                            "sigma_a", "gamma_max",
+                                                            "sigma_max", "harmonics",
+                                                            "hcf_ok")}
+                                         for p in harm if not p["unbounded"]]}
     (out / "summary.json").write_text(json.dumps(summary, indent=1, allow_nan=False) + "\n")
     if not quiet:
         print_summary(summary, out)

@@ -646,7 +646,9 @@ class _PointBuffer:
     def sigma_a(self, model, forces):
         """The resonant stress amplitudes for ``forces`` (inf where unbounded)."""
         p = self.backbone(model, forces)
-        return np.where(p["unbounded"] != 0, np.inf, p["sigma_a"])
+        # with multi-harmonic layers the HCF criterion takes the largest excursion sigma_max
+        stress = np.where(p["harmonics"] > 1, p["sigma_max"], p["sigma_a"])
+        return np.where(p["unbounded"] != 0, np.inf, stress)
 
     def sigma_one(self, model, F: float) -> float:
         """The resonant stress amplitude for one force (inf where unbounded): the same kernel
@@ -656,7 +658,9 @@ class _PointBuffer:
         status = _backbone(model._err.ptr, model._ptr, 1, *self._one_refs)
         if status:
             model._err.check(status)
-        return math.inf if self._one.unbounded else self._one.sigma_a
+        if self._one.unbounded:
+            return math.inf
+        return self._one.sigma_max if self._one.harmonics > 1 else self._one.sigma_a
 
 
 _CONTEXTS: dict = {}
@@ -834,6 +838,10 @@ def add_doe_parser(sub) -> argparse.ArgumentParser:
                    help="forces F_E [N] with per-force columns gamma_P@F, f_res@F, sigma_a@F, "
                         "hcf_ok@F, jump@F")
     p.add_argument("--seed", type=int, default=0, help="sampling seed (default 0)")
+    p.add_argument("--harmonics", default=None, metavar="H|auto",
+                   help="harmonics of the platform rotation: 1 (single-harmonic), H (harmonics "
+                        "0..H in multi-harmonic layers) or auto; overrides analysis.harmonics "
+                        "(with H > 1 hcf_ok and F_adm take sigma_max)")
     g = p.add_mutually_exclusive_group()
     g.add_argument("--workers", type=int, default=None, metavar="K",
                    help="worker processes (default: all cores; 1 runs serially)")
@@ -865,8 +873,15 @@ def cmd_doe(args) -> None:
         v = getattr(args, opt)
         if v is not None and v < 1:
             raise InputError(f"--{opt} must be at least 1, got {v}")
+    case = load_case(args.case)
+    if args.harmonics is not None:
+        from .cli import _harmonics
+        try:
+            case.analysis["harmonics"] = _harmonics(args.harmonics)
+        except argparse.ArgumentTypeError as exc:
+            raise InputError(f"--harmonics: {exc}") from None
     summary = run_doe(
-        load_case(args.case), args.vary, args.samples, args.out, method=args.method,
+        case, args.vary, args.samples, args.out, method=args.method,
         forces=args.forces, seed=args.seed,
         workers=args.threads if args.threads is not None else args.workers,
         threads=args.threads is not None, dask=args.dask, chunk=args.chunk,

@@ -28,7 +28,8 @@ class _Analysis(ctypes.Structure):
     _fields_ = [("f_min", ctypes.c_double), ("f_max", ctypes.c_double),
                 ("sigma_all", ctypes.c_double), ("rtol", ctypes.c_double),
                 ("grid_per_decade", ctypes.c_int), ("eigen_method", ctypes.c_int),
-                ("dense_max", ctypes.c_int), ("sweep_points", ctypes.c_int)]
+                ("dense_max", ctypes.c_int), ("sweep_points", ctypes.c_int),
+                ("harmonics", ctypes.c_int), ("harmonic_tol", ctypes.c_double)]
 
 
 class _Point(ctypes.Structure):
@@ -36,7 +37,11 @@ class _Point(ctypes.Structure):
                 ("f_res", ctypes.c_double), ("sigma_a", ctypes.c_double),
                 ("u_E", ctypes.c_double), ("k_re", ctypes.c_double), ("k_im", ctypes.c_double),
                 ("regime", ctypes.c_int), ("hcf_ok", ctypes.c_int), ("unbounded", ctypes.c_int),
-                ("nroots", ctypes.c_int), ("roots", ctypes.c_double * MAX_ROOTS)]
+                ("nroots", ctypes.c_int), ("roots", ctypes.c_double * MAX_ROOTS),
+                ("gamma_max", ctypes.c_double), ("sigma_max", ctypes.c_double),
+                ("harmonics", ctypes.c_int),
+                # the C struct's tail padding, named so that numpy sees the full item size
+                ("_pad", ctypes.c_int)]
 
 
 _vp = ctypes.c_void_p
@@ -58,6 +63,9 @@ _curves = declare("udmap_model_curves", [_vp, _vp, ctypes.c_int, c_double_p, cty
 _curve_size = declare("udmap_model_curve_size", [_vp, _vp, ctypes.c_int, c_int_p])
 _curve_get = declare("udmap_model_curve_get", [_vp, _vp, ctypes.c_int, ctypes.c_int, c_double_p,
                                                c_double_p, c_double_p, c_int_p, c_int_p])
+_set_harmonics = declare("udmap_model_set_harmonics", [_vp, _vp, ctypes.c_int, ctypes.c_double])
+_point_harmonics = declare("udmap_model_point_harmonics", [_vp, _vp, ctypes.c_int, ctypes.c_int,
+                                                           c_double_p, c_double_p, c_int_p])
 _blade_get_size = declare("udmap_blade_get_size", [_vp, _vp, c_int_p, c_int_p])
 
 
@@ -68,6 +76,17 @@ def _handle(obj):
         if h is not None:
             return h
     raise TypeError(f"{type(obj).__name__} has no kernel handle")
+
+
+def harmonics_code(harmonics) -> int:
+    """The kernel code of a harmonics setting: an integer 1..64, or "auto" (0)."""
+    if harmonics == "auto":
+        return 0
+    if isinstance(harmonics, bool) or not isinstance(harmonics, (int, np.integer)) \
+            or not 1 <= int(harmonics) <= 64:
+        from ._lib import InputError
+        raise InputError(f"harmonics must be an integer from 1 to 64 or 'auto', got {harmonics!r}")
+    return int(harmonics)
 
 
 def _forces(F_E) -> tuple[np.ndarray, ctypes.Array]:
@@ -85,12 +104,16 @@ class Model:
     every peak and root refinement; ``grid_per_decade`` amplitude grid on which all roots are
     bracketed; ``eigen_method`` 0 auto, 1 direct solver for every layer, 2 secular equation only;
     ``dense_max`` largest ndof for the dense eigen-solver (ARPACK above); ``sweep_points``
-    bare-blade samples over the band for the response curves.
+    bare-blade samples over the band for the response curves; ``harmonics`` 1 (the paper's
+    single-harmonic method), an integer H up to 64 (harmonics 0..H in multi-harmonic layers,
+    PHYSICS.md 4.1) or "auto" (H raised until the outputs change by less than
+    ``harmonic_tol``).
     """
 
     def __init__(self, blade, damper, f_min: float, f_max: float, sigma_all: float = 80e6,
                  rtol: float = 1e-12, grid_per_decade: int = 24, eigen_method: int = 0,
-                 dense_max: int = 200, sweep_points: int = 400):
+                 dense_max: int = 200, sweep_points: int = 400, harmonics=1,
+                 harmonic_tol: float = 1e-3):
         self._err = ErrorHandle()
         self._ptr = _vp()
         self.blade = blade
@@ -100,6 +123,7 @@ class Model:
         a.f_min, a.f_max, a.sigma_all, a.rtol = f_min, f_max, sigma_all, rtol
         a.grid_per_decade, a.eigen_method = int(grid_per_decade), int(eigen_method)
         a.dense_max, a.sweep_points = int(dense_max), int(sweep_points)
+        a.harmonics, a.harmonic_tol = harmonics_code(harmonics), float(harmonic_tol)
         self.f_min, self.f_max, self.sigma_all = float(f_min), float(f_max), float(sigma_all)
         self._err.check(_new_model(self._err.ptr, _handle(blade), _handle(damper),
                                    ctypes.byref(a), ctypes.byref(self._ptr)))
@@ -118,6 +142,11 @@ class Model:
         are kept, the backbone table is rebuilt on next use."""
         self._err.check(_set_damper(self._err.ptr, self._ptr, _handle(damper)))
         self.damper = damper
+
+    def set_harmonics(self, harmonics, harmonic_tol: float = 1e-3) -> None:
+        """Harmonics for the next calls (1, H up to 64, or "auto"), keeping every cache."""
+        self._err.check(_set_harmonics(self._err.ptr, self._ptr, harmonics_code(harmonics),
+                                       float(harmonic_tol)))
 
     def limit_force(self) -> float:
         """F_lim = 2 Delta_M / (pi |phi_E/phi_g|) [N] (PHYSICS.md 5)."""
@@ -147,16 +176,34 @@ class Model:
         F, Fp = _forces(args[-1])
         out = (_Point * max(len(F), 1))()
         self._err.check(fn(self._err.ptr, self._ptr, *args[:-1], len(F), Fp, out))
-        return [self._point_dict(out[i]) for i in range(len(F))]
+        points = [self._point_dict(out[i]) for i in range(len(F))]
+        for i, d in enumerate(points):
+            if d["harmonics"] > 1 and not d["unbounded"]:
+                d["harmonic_content"] = self._harmonic_content(i, d["harmonics"])
+        return points
+
+    def _harmonic_content(self, i: int, H: int) -> dict:
+        """|Gamma_h| [rad] and |sigma_h| [Pa], h = 0..H, of point i of the last call."""
+        g, s = np.zeros(H + 1), np.zeros(H + 1)
+        nh = ctypes.c_int()
+        self._err.check(_point_harmonics(self._err.ptr, self._ptr, i, H + 1,
+                                         g.ctypes.data_as(c_double_p),
+                                         s.ctypes.data_as(c_double_p), ctypes.byref(nh)))
+        return {"gamma_h": [float(x) for x in g[:nh.value]],
+                "sigma_h": [float(x) for x in s[:nh.value]] if self.has_stress else None}
 
     def _point_dict(self, p: _Point) -> dict:
         d = {"F_E": p.F_E, "gamma_P": p.gamma_P, "f_res": p.f_res,
              "sigma_a": p.sigma_a if self.has_stress else None, "u_E": p.u_E,
              "k_re": p.k_re, "k_im": p.k_im, "regime": p.regime,
              "regime_name": REGIME_NAMES.get(p.regime, ""), "hcf_ok": bool(p.hcf_ok),
-             "roots": [p.roots[i] for i in range(p.nroots)], "unbounded": bool(p.unbounded)}
+             "roots": [p.roots[i] for i in range(p.nroots)], "unbounded": bool(p.unbounded),
+             "gamma_max": p.gamma_max, "sigma_max": p.sigma_max if self.has_stress else None,
+             "harmonics": p.harmonics,
+             "hcf_stress": "sigma_max" if p.harmonics > 1 else "sigma_a"}
         if d["unbounded"]:
-            for key in ("gamma_P", "f_res", "sigma_a", "u_E", "k_re", "k_im"):
+            for key in ("gamma_P", "f_res", "sigma_a", "u_E", "k_re", "k_im", "gamma_max",
+                        "sigma_max"):
                 d[key] = None
             d["roots"] = []
             d["message"] = UNBOUNDED_MESSAGE
@@ -166,9 +213,12 @@ class Model:
         """The peaks of the non-linear response for the forces F_E [N] (PHYSICS.md 4): per
         force a dict with F_E, gamma_P [rad], f_res [Hz], sigma_a [Pa] (None without stress
         rows), u_E [m], k_re, k_im [N m/rad], regime (0..3) and regime_name, hcf_ok, roots (every
-        gamma_P root, ascending), unbounded (with a message; the numbers are then None) and
+        gamma_P root, ascending), unbounded (with a message; the numbers are then None),
         jump (gamma_P is the amplitude of a jump of k(gamma), k interpolated between its
-        one-sided values so that the layer peaks at F_E; PHYSICS.md 2.5)."""
+        one-sided values so that the layer peaks at F_E; PHYSICS.md 2.5); gamma_max, sigma_max
+        (largest excursions from the mean), harmonics (H used), hcf_stress (the stress hcf_ok
+        compares with sigma_all: sigma_max when H > 1) and, when H > 1, harmonic_content
+        {gamma_h, sigma_h} (amplitudes of harmonics 0..H)."""
         points = self._points(_backbone, F_E)
         jumps = np.zeros(max(len(points), 1), dtype=np.intc)
         self._err.check(_backbone_jumps(self._err.ptr, self._ptr, len(points),

@@ -178,3 +178,42 @@ def stiffness(gamma, k, gamma_b: float, path, *, gamma_s: float | None = None,
     ax.set_ylim(bottom=0)
     ax.legend(loc="upper right", fontsize=9)
     return _finish(fig, ax, path, "Damper complex stiffness (first harmonic)")
+
+
+def harmonics_side_by_side(F_E, sigma_1, gamma_1, F_auto, sigma_auto, sigma_max_auto,
+                           gamma_auto, F_lim: float, sigma_all: float, path, *,
+                           harmonics=None) -> Path:
+    """The GG diagram (left) and gamma_P against F_E (right) with the single-harmonic method
+    and with multi-harmonic layers at automatic H (PHYSICS.md 4.1) side by side: what the
+    single-harmonic premise costs."""
+    fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(11.5, 4.6))
+    ax1.plot(F_E, np.asarray(sigma_1) / 1e6, "-", color="tab:blue", lw=1.4,
+             label=r"$\sigma_a$, H = 1")
+    ax1.plot(F_auto, np.asarray(sigma_auto) / 1e6, "o-", color="tab:red", ms=3.5, lw=1.0,
+             label=r"$\sigma_a$, auto H")
+    ax1.plot(F_auto, np.asarray(sigma_max_auto) / 1e6, "s--", color="tab:purple", ms=3.0,
+             lw=1.0, label=r"$\sigma_{max}$, auto H (HCF criterion)")
+    ax1.axhline(sigma_all / 1e6, color="0.3", lw=1.0, ls=":")
+    ax1.set_xlabel(r"$F_E$ [N]")
+    ax1.set_ylabel("stress amplitude at the junction [MPa]")
+    _force_limits(ax1, F_lim)
+    ax1.legend(fontsize=8, loc="lower right")
+    ax1.set_title("GG diagram", fontsize=11)
+    ax1.grid(True, alpha=0.35)
+    ax2.loglog(F_E, gamma_1, "-", color="tab:blue", lw=1.4, label=r"$\gamma_P$, H = 1")
+    ax2.loglog(F_auto, gamma_auto, "o-", color="tab:red", ms=3.5, lw=1.0,
+               label=r"$\gamma_P$ (first harmonic), auto H")
+    ax2.set_xlabel(r"$F_E$ [N]")
+    ax2.set_ylabel(r"$\gamma_P$ [rad]")
+    ax2.legend(fontsize=8, loc="lower right")
+    ax2.grid(True, which="major", alpha=0.35)
+    if harmonics is not None and len(harmonics):
+        ax2.set_title(f"platform rotation (auto H = {min(harmonics)}..{max(harmonics)})",
+                      fontsize=11)
+    else:
+        ax2.set_title("platform rotation", fontsize=11)
+    fig.tight_layout()
+    path = Path(path)
+    fig.savefig(path, dpi=150)
+    plt.close(fig)
+    return path

@@ -1,7 +1,7 @@
-!> The damper seen by the standard method and the time integration: a rate-independent
-!> hysteretic element on the platform rotation gamma, driven along a path gamma(t) with its
-!> loading history, returning the restoring moment M_r (PHYSICS.md 2.1: the moment the damper
-!> exerts on the blade is -M_r; for a linear damper M_r = k gamma).
+!> The damper seen by the standard method, the time integration and the multi-harmonic layers: a
+!> rate-independent hysteretic element on the platform rotation gamma, driven along a path gamma(t)
+!> with its loading history, returning the restoring moment M_r (PHYSICS.md 2.1: the moment the
+!> damper exerts on the blade is -M_r; for a linear damper M_r = k gamma).
 !>
 !> Implementations: the rotational Jenkins element (PHYSICS.md 2.4) here; the asymmetric
 !> contact model in udmap_contact_element.

@@ -1,4 +1,6 @@
-!> Alternating frequency-time evaluation of the damper moment (PHYSICS.md 6).
+!> The damper moment along a given periodic gamma(t): contact tracing with the loading history
+!> and Fourier projection. Shared by the standard method's alternating frequency-time
+!> evaluation (PHYSICS.md 6) and the multi-harmonic layers of the mapping (PHYSICS.md 4.1).
 !>
 !> gamma(tau) = Gamma_0 + Re(sum_h Gamma_h e^{i h tau}), tau = omega t. The element is driven
 !> along gamma(tau) with the loading history of PHYSICS.md 2.1 (virgin state, CF ramp, ramp to

@@ -1,9 +1,9 @@
 !> The asymmetric flat/curved damper (PHYSICS.md 2.1) as a hysteretic element for the standard
-!> method and the time integration: the exact event-driven tracer of udmap_damper_tracer driven
-!> along gamma, the loaded state (virgin state and CF ramp) computed once and restored by load,
-!> the stick/slip/open transitions on the way returned as events (M_r is affine in gamma between
-!> them), the tangent of the last segment, and the lift-off flag. The stuck stiffness (the
-!> starting guess of the standard method) is the first harmonic of a tiny loop.
+!> method, the time integration and the multi-harmonic layers: the exact event-driven tracer of
+!> udmap_damper_tracer driven along gamma, the loaded state (virgin state and CF ramp) computed
+!> once and restored by load, the stick/slip/open transitions on the way returned as events (M_r is
+!> affine in gamma between them), the tangent of the last segment, and the lift-off flag. The stuck
+!> stiffness (the starting guess of the standard method) is the first harmonic of a tiny loop.
 module udmap_contact_element
   use udmap_kinds, only: wp
   use udmap_error, only: error_type

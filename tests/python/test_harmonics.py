@@ -1,0 +1,134 @@
+"""Multi-harmonic layers (PHYSICS.md 4.1) through Python and the CLI: analysis.harmonics and
+--harmonics H|auto, the new point fields (gamma_max, sigma_max, harmonics, harmonic content),
+the standard method with the same harmonics as an independent path, the response and curves
+with H, and the input errors."""
+import copy
+import json
+import subprocess
+import sys
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from udmap import InputError
+from udmap import hbm
+from udmap.case import build_blade, build_damper, build_model, load_case
+
+ROOT = Path(__file__).resolve().parents[2]
+CASE = ROOT / "cases" / "blade_a.json"
+
+
+def run_cli(*args):
+    return subprocess.run([sys.executable, "-m", "udmap", *args], capture_output=True, text=True,
+                          timeout=110)
+
+
+@pytest.fixture(scope="module")
+def blade_a():
+    case = load_case(CASE)
+    blade, damper = build_blade(case), build_damper(case)
+    return case, blade, damper, build_model(case, blade, damper)
+
+
+def test_single_harmonic_fields(blade_a):
+    _, _, _, model = blade_a
+    for p in model.backbone([1.0, 5.0]):
+        assert p["harmonics"] == 1 and p["hcf_stress"] == "sigma_a"
+        assert p["gamma_max"] == p["gamma_P"] and p["sigma_max"] == p["sigma_a"]
+        assert "harmonic_content" not in p
+
+
+def test_h3_equals_standard_method(blade_a):
+    case, blade, damper, model = blade_a
+    a = case.analysis
+    model.set_harmonics(3)
+    try:
+        points = model.backbone([2.0, 10.0])
+    finally:
+        model.set_harmonics(1)
+    ref = hbm.hbm(blade, case.damper, a["f_min"], a["f_max"], [2.0, 10.0], harmonics=3,
+                  harmonic0=1, warm_start=2, full_band=0)
+    for p, r in zip(points, ref):
+        assert p["harmonics"] == 3 and p["hcf_stress"] == "sigma_max"
+        for key in ("gamma_P", "sigma_a", "f_res"):
+            assert p[key] == pytest.approx(r[key], rel=1e-6)
+        content = p["harmonic_content"]
+        g = np.array(content["gamma_h"])
+        assert len(g) == 4 and len(content["sigma_h"]) == 4
+        assert g[1] == pytest.approx(p["gamma_P"], rel=1e-14)
+        # the largest excursion lies between the first harmonic less and plus the others
+        assert g[1] - g[2:].sum() <= p["gamma_max"] <= g[1:].sum()
+        assert p["hcf_ok"] == (p["F_E"] <= 0.5 * model.limit_force()
+                               and p["sigma_max"] <= a["sigma_all"])
+    # the response at the peak frequency of H = 3 comes back to the same amplitude
+    model.set_harmonics(3)
+    try:
+        r = model.response(points[0]["f_res"], [2.0])[0]
+    finally:
+        model.set_harmonics(1)
+    assert max(r["roots"]) == pytest.approx(points[0]["gamma_P"], rel=1e-7)
+
+
+def test_curves_with_harmonics_lie_on_the_response(blade_a):
+    case, blade, damper, _ = blade_a
+    c2 = copy.deepcopy(case)
+    c2.analysis["harmonics"] = 3
+    model = build_model(c2, blade, damper)
+    curve = model.curves([5.0], layers=30)[0]
+    assert len(curve["f"]) > 20 and np.all(np.isfinite(curve["gamma_P"]))
+    lower = np.flatnonzero(curve["branch"] == 0)
+    j = lower[len(lower) // 3]
+    r = model.response(curve["f"][j], [5.0])[0]
+    assert min(abs(np.array(r["roots"]) / curve["gamma_P"][j] - 1)) < 1e-7
+    peak = model.backbone([5.0])[0]
+    assert np.max(curve["gamma_P"]) <= peak["gamma_P"] * (1 + 1e-9)
+
+
+def test_cli_harmonics_json():
+    r = run_cli("backbone", str(CASE), "--forces", "5", "--harmonics", "3", "--json")
+    assert r.returncode == 0, r.stderr
+    p = json.loads(r.stdout)["points"][0]
+    assert p["harmonics"] == 3 and len(p["harmonic_content"]["gamma_h"]) == 4
+    assert {"gamma_max", "sigma_max", "harmonics"} <= set(p)
+    r = run_cli("response", str(CASE), "--forces", "5", "--freq", "196", "--harmonics", "3",
+                "--json")
+    assert r.returncode == 0, r.stderr
+    assert json.loads(r.stdout)["points"][0]["harmonics"] == 3
+
+
+@pytest.mark.parametrize("value", ["0", "65", "three"])
+def test_cli_harmonics_bad_value(value):
+    r = run_cli("backbone", str(CASE), "--forces", "5", "--harmonics", value)
+    assert r.returncode == 2 and "harmonics" in r.stderr
+
+
+@pytest.mark.parametrize("field,value", [("harmonics", 0), ("harmonics", 65),
+                                         ("harmonics", "many"), ("harmonics", 2.5),
+                                         ("harmonic_tol", -1.0), ("harmonic_tol", 0.5)])
+def test_case_fields_checked(tmp_path, field, value):
+    data = json.loads(CASE.read_text())
+    data["analysis"][field] = value
+    path = tmp_path / "case.json"
+    path.write_text(json.dumps(data))
+    r = run_cli("backbone", str(path), "--forces", "5")
+    assert r.returncode == 2 and f"analysis.{field}" in r.stderr
+
+
+def test_case_auto_is_accepted():
+    data = json.loads(CASE.read_text())
+    data["analysis"]["harmonics"] = "auto"
+    from udmap.case import validate
+    case = validate(data, ROOT / "cases")
+    assert case.analysis["harmonics"] == "auto" and case.analysis["harmonic_tol"] == 1e-3
+
+
+def test_table_damper_refuses_harmonics(blade_a):
+    _, blade, _, _ = blade_a
+    from udmap.damper import Damper
+    from udmap.model import Model
+    table = Damper.table(np.array([1e-5, 1e-4, 1e-3]), np.array([1e4, 1e4, 8e3]),
+                         np.array([0.0, 1e3, 3e3]), delta_M=10.0)
+    model = Model(blade, table, 150.0, 230.0, harmonics=3)
+    with pytest.raises(InputError, match="analysis.harmonics"):
+        model.backbone([1.0])
