@@ -136,7 +136,7 @@ def test_multi_harmonic_settings_load_with_defaults():
     assert ANALYSIS_DEFAULTS["harmonics"] == 1 and ANALYSIS_DEFAULTS["harmonic_tol"] == 1e-3
     case = validate(BLADE_A)
     assert case.analysis["harmonics"] == 1 and case.analysis["harmonic_tol"] == 1e-3
-    for h in (1, 2, 7.0, 100, "auto"):
+    for h in (1, 2, 7.0, 64, "auto"):
         data = _edited(("analysis", "harmonics"), h)
         data["analysis"]["harmonic_tol"] = 1e-6
         a = validate(data).analysis

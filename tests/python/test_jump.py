@@ -130,7 +130,7 @@ def test_cli_json_jump_and_table(tmp_path):
 
 
 def test_limit_force_backbone_with_lift_off(tmp_path):
-    path = case_file(tmp_path, "mu06", {"mu": 0.6}, {"zeta": 0.0}, {"sigma_all": 1e15})
+    path = case_file(tmp_path, "mu06", {"mu": 0.6}, {"zeta": 0.0}, {"sigma_all": 1e10})
     case = load_case(path)
     blade, damper = build_blade(case), build_damper(case)
     model = build_model(case, blade, damper)
