@@ -85,6 +85,27 @@ static int depends(const VariableInfo *out, const VariableInfo *in) {
   }
 }
 
+/* The dependencies and dependenciesKind attributes of output v: the inputs it depends on, by
+ * index (FMI 2, offset 1) or value reference (FMI 3, offset 0). The outputs are non-linear
+ * algebraic functions of the inputs: kind "dependent". */
+static void write_dependencies(FILE *f, const VariableInfo *v, int offset) {
+  const char *sep = "";
+  fputs(" dependencies=\"", f);
+  for (int j = 0; j < UDMAP_NVARS; j++) {
+    if (!depends(v, &udmap_variables[j])) continue;
+    fprintf(f, "%s%d", sep, j + offset);
+    sep = " ";
+  }
+  fputs("\" dependenciesKind=\"", f);
+  sep = "";
+  for (int j = 0; j < UDMAP_NVARS; j++) {
+    if (!depends(v, &udmap_variables[j])) continue;
+    fprintf(f, "%sdependent", sep);
+    sep = " ";
+  }
+  fputs("\"", f);
+}
+
 static void write_units(FILE *f) {
   fputs("  <UnitDefinitions>\n", f);
   for (size_t i = 0; i < sizeof units / sizeof units[0]; i++) {
@@ -154,12 +175,18 @@ static void write_header(FILE *f, const char *version, const char *token_attr) {
 
 static void write_fmi2(FILE *f) {
   write_header(f, "2.0", "guid");
+  static const char *const common =
+      "    canNotUseMemoryManagementFunctions=\"true\"\n"
+      "    canGetAndSetFMUstate=\"true\"\n"
+      "    canSerializeFMUstate=\"true\"\n"
+      "    providesDirectionalDerivative=\"true\"";
+  fprintf(f, "  <ModelExchange\n"
+             "    modelIdentifier=\"%s\"\n"
+             "    completedIntegratorStepNotNeeded=\"true\"\n%s/>\n", MODEL_IDENTIFIER, common);
   fprintf(f, "  <CoSimulation\n"
              "    modelIdentifier=\"%s\"\n"
-             "    canHandleVariableCommunicationStepSize=\"true\"\n"
-             "    canNotUseMemoryManagementFunctions=\"true\"\n"
-             "    canGetAndSetFMUstate=\"true\"\n"
-             "    canSerializeFMUstate=\"true\"/>\n", MODEL_IDENTIFIER);
+             "    canHandleVariableCommunicationStepSize=\"true\"\n%s/>\n", MODEL_IDENTIFIER,
+          common);
   write_units(f);
   write_log_categories(f);
   fputs("  <DefaultExperiment startTime=\"0\" stopTime=\"1\" stepSize=\"0.1\"/>\n", f);
@@ -181,14 +208,9 @@ static void write_fmi2(FILE *f) {
   for (int i = 0; i < UDMAP_NVARS; i++) {
     const VariableInfo *v = &udmap_variables[i];
     if (v->causality != OUTPUT) continue;
-    fprintf(f, "      <Unknown index=\"%d\" dependencies=\"", i + 1);
-    const char *sep = "";
-    for (int j = 0; j < UDMAP_NVARS; j++) {
-      if (!depends(v, &udmap_variables[j])) continue;
-      fprintf(f, "%s%d", sep, j + 1);
-      sep = " ";
-    }
-    fputs("\"/>\n", f);
+    fprintf(f, "      <Unknown index=\"%d\"", i + 1);
+    write_dependencies(f, v, 1);
+    fputs("/>\n", f);
   }
   fputs("    </Outputs>\n    <InitialUnknowns>\n", f);
   for (int i = 0; i < UDMAP_NVARS; i++)
@@ -199,13 +221,18 @@ static void write_fmi2(FILE *f) {
 
 static void write_fmi3(FILE *f) {
   write_header(f, "3.0", "instantiationToken");
+  static const char *const common =
+      "    canGetAndSetFMUState=\"true\"\n"
+      "    canSerializeFMUState=\"true\"\n"
+      "    providesDirectionalDerivatives=\"true\"";
+  fprintf(f, "  <ModelExchange\n"
+             "    modelIdentifier=\"%s\"\n"
+             "    needsCompletedIntegratorStep=\"false\"\n%s/>\n", MODEL_IDENTIFIER, common);
   fprintf(f, "  <CoSimulation\n"
              "    modelIdentifier=\"%s\"\n"
-             "    canHandleVariableCommunicationStepSize=\"true\"\n"
-             "    canGetAndSetFMUState=\"true\"\n"
-             "    canSerializeFMUState=\"true\"\n"
+             "    canHandleVariableCommunicationStepSize=\"true\"\n%s\n"
              "    hasEventMode=\"false\"\n"
-             "    providesIntermediateUpdate=\"false\"/>\n", MODEL_IDENTIFIER);
+             "    providesIntermediateUpdate=\"false\"/>\n", MODEL_IDENTIFIER, common);
   write_units(f);
   write_log_categories(f);
   fputs("  <DefaultExperiment startTime=\"0\" stopTime=\"1\" stepSize=\"0.1\"/>\n", f);
@@ -224,14 +251,9 @@ static void write_fmi3(FILE *f) {
   for (int i = 0; i < UDMAP_NVARS; i++) {
     const VariableInfo *v = &udmap_variables[i];
     if (v->causality != OUTPUT) continue;
-    fprintf(f, "    <Output valueReference=\"%d\" dependencies=\"", i);
-    const char *sep = "";
-    for (int j = 0; j < UDMAP_NVARS; j++) {
-      if (!depends(v, &udmap_variables[j])) continue;
-      fprintf(f, "%s%d", sep, j);
-      sep = " ";
-    }
-    fputs("\"/>\n", f);
+    fprintf(f, "    <Output valueReference=\"%d\"", i);
+    write_dependencies(f, v, 0);
+    fputs("/>\n", f);
   }
   for (int i = 0; i < UDMAP_NVARS; i++)
     if (udmap_variables[i].causality == OUTPUT)

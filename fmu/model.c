@@ -103,6 +103,8 @@ static const char *state_name(const ModelInstance *m) {
     case Instantiated: return "Instantiated";
     case InitializationMode: return "InitializationMode";
     case StepMode: return m->fmiVersion == 2 ? "slaveInitialized (step complete)" : "StepMode";
+    case EventMode: return "EventMode";
+    case ContinuousTimeMode: return "ContinuousTimeMode";
     case Terminated: return "Terminated";
   }
   return "unknown";
@@ -123,11 +125,12 @@ static void free_kernel_objects(ModelInstance *m) {
   udmap_delete_blade(&m->blade);
 }
 
-ModelInstance *model_new(const char *instanceName, int fmiVersion, LogEmitter emit,
-                         void *logger, void *environment, bool loggingOn) {
+ModelInstance *model_new(const char *instanceName, int fmiVersion, InterfaceType type,
+                         LogEmitter emit, void *logger, void *environment, bool loggingOn) {
   ModelInstance *m = calloc(1, sizeof *m);
   if (!m) return NULL;
   m->fmiVersion = fmiVersion;
+  m->type = type;
   m->emit = emit;
   m->logger = logger;
   m->environment = environment;
@@ -144,6 +147,7 @@ ModelInstance *model_new(const char *instanceName, int fmiVersion, LogEmitter em
 
 void model_free(ModelInstance *m) {
   if (!m) return;
+  model_free(m->scratch);
   free_kernel_objects(m);
   udmap_delete_error(&m->err);
   free(m->instanceName);
@@ -490,7 +494,22 @@ Status model_set(ModelInstance *m, const char *fn, ValueReference vr, VariableTy
   return OK;
 }
 
-static Status output_value(ModelInstance *m, ValueReference vr, double *x, Stage *stage) {
+const char *model_stage_message(const ModelInstance *m, Stage stage) {
+  return m->stage_message[stage];
+}
+
+void model_copy_values(ModelInstance *m, const ModelInstance *src) {
+  for (int i = 0; i < UDMAP_NVARS; i++) {
+    const VariableInfo *v = &udmap_variables[i];
+    if (v->causality != INPUT && v->causality != PARAMETER) continue;
+    if (m->value[i] != src->value[i]) {
+      m->value[i] = src->value[i];
+      m->done &= ~invalidates[v->group];
+    }
+  }
+}
+
+Status model_output(ModelInstance *m, ValueReference vr, double *x, Stage *stage) {
   const VariableInfo *v = &udmap_variables[vr];
   *stage = v->group == GROUP_POINT ? STAGE_POINT : STAGE_LIMIT;
   Status st = run(m, *stage);
@@ -530,7 +549,7 @@ Status model_get(ModelInstance *m, const char *fn, ValueReference vr, VariableTy
     return OK;
   }
   Stage stage;
-  st = output_value(m, vr, value, &stage);
+  st = model_output(m, vr, value, &stage);
   if (st != OK && !(*logged & BIT(stage))) {
     *logged |= BIT(stage);
     model_log(m, st, "%s: %s", fn, m->stage_message[stage]);
@@ -617,13 +636,9 @@ Status model_check_snapshot(ModelInstance *m, const char *fn, const void *data, 
 Status model_restore(ModelInstance *m, const char *fn, const ModelSnapshot *s) {
   Status st = model_check_snapshot(m, fn, s, s ? (size_t)s->size : 0);
   if (st != OK) return st;
-  for (int i = 0; i < UDMAP_NVARS; i++) {
-    const VariableInfo *v = &udmap_variables[i];
-    if (v->causality == OUTPUT) continue;
-    if (m->value[i] != s->value[i]) {
-      m->value[i] = s->value[i];
-      m->done &= ~invalidates[v->group];
-    }
-  }
+  ModelInstance src; /* only its values are read */
+  memcpy(src.value, s->value, sizeof src.value);
+  model_copy_values(m, &src);
+  m->value[vr_time] = s->value[vr_time];
   return OK;
 }

@@ -21,9 +21,14 @@ typedef enum {
   StartAndEnd = 1 << 0,
   Instantiated = 1 << 1,
   InitializationMode = 1 << 2,
-  StepMode = 1 << 3,
-  Terminated = 1 << 4
+  StepMode = 1 << 3,           /* co-simulation */
+  EventMode = 1 << 4,          /* model exchange */
+  ContinuousTimeMode = 1 << 5, /* model exchange */
+  Terminated = 1 << 6
 } ModelState;
+
+/* The interface an instance was created for (same numbers as fmi2Type). */
+typedef enum { ModelExchange, CoSimulation } InterfaceType;
 
 /* Log categories (bits), named as in the modelDescription's LogCategories. */
 enum {
@@ -58,6 +63,7 @@ struct ModelInstance {
   /* FMI bookkeeping */
   char *instanceName;
   int fmiVersion; /* 2 or 3 */
+  InterfaceType type;
   ModelState state;
   LogEmitter emit;
   void *logger;      /* the importer's callback, called by emit */
@@ -87,10 +93,14 @@ struct ModelInstance {
 
   /* counters, for tests and diagnostics (not part of the FMU state) */
   unsigned long stage_runs[NSTAGES];
+
+  /* a second instance for the finite differences of the directional derivatives, so that
+   * the caches of this one are kept (created on first use, derivatives.c) */
+  struct ModelInstance *scratch;
 };
 
-ModelInstance *model_new(const char *instanceName, int fmiVersion, LogEmitter emit,
-                         void *logger, void *environment, bool loggingOn);
+ModelInstance *model_new(const char *instanceName, int fmiVersion, InterfaceType type,
+                         LogEmitter emit, void *logger, void *environment, bool loggingOn);
 void model_free(ModelInstance *m);
 /* Start values, no kernel objects, state Instantiated. */
 void model_reset(ModelInstance *m);
@@ -119,6 +129,20 @@ Status model_get(ModelInstance *m, const char *fn, ValueReference vr, VariableTy
 
 /* Advances time over a communication step (the outputs are quasi-steady). */
 Status model_do_step(ModelInstance *m, const char *fn, double t, double h);
+
+/* The value of output vr for the current values (computed on demand) and the stage whose
+ * status and message it carries. */
+Status model_output(ModelInstance *m, ValueReference vr, double *value, Stage *stage);
+const char *model_stage_message(const ModelInstance *m, Stage stage);
+/* Copies the values of all inputs and parameters of src into m (invalidating what changed). */
+void model_copy_values(ModelInstance *m, const ModelInstance *src);
+
+/* Directional derivative (derivatives.c): sensitivity[i] = sum_j d unknowns[i] / d knowns[j]
+ * seed[j], the unknowns real outputs, the knowns real inputs or tunable parameters. */
+Status model_directional_derivative(ModelInstance *m, const char *fn,
+                                    const unsigned unknowns[], size_t nUnknowns,
+                                    const unsigned knowns[], size_t nKnowns,
+                                    const double seed[], double sensitivity[]);
 
 /* FMU state: the values of all variables and the time, as one plain block. */
 typedef struct {
