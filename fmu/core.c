@@ -14,17 +14,24 @@
 #define MASK_INIT_OR_RUN (InitializationMode | StepMode | EventMode | ContinuousTimeMode)
 
 ModelInstance *core_instantiate(const char *fn, const char *instanceName, int fmiVersion,
-                                InterfaceType type, const char *token, LogEmitter emit,
-                                void *logger, void *environment, bool loggingOn) {
+                                InterfaceType type, const char *token, const char *resources,
+                                LogEmitter emit, void *logger, void *environment,
+                                bool loggingOn) {
   ModelInstance *m = model_new(instanceName ? instanceName : "udmap", fmiVersion, type, emit,
                                logger, environment, loggingOn);
   if (!m) return NULL; /* out of memory: nothing to log through */
-  char expected[40];
-  udmap_fmu_token(expected, sizeof expected);
-  if (!token || strcmp(token, expected) != 0) {
-    model_log(m, Error, "%s: %s '%s' does not match this binary's '%s'", fn,
+  char msg[CASE_PATH_MAX + 256];
+  CaseConfig *config = case_read(resources, msg, sizeof msg); /* an FMU of `udmap fmu` */
+  if (!config && msg[0]) {
+    model_log(m, Error, "%s: bad case in the resources: %s", fn, msg);
+    model_free(m);
+    return NULL;
+  }
+  if (config) model_set_case(m, config, true);
+  if (!token || strcmp(token, m->token) != 0) {
+    model_log(m, Error, "%s: %s '%s' does not match this FMU's '%s'", fn,
               fmiVersion == 2 ? "GUID" : "instantiation token", token ? token : "(null)",
-              expected);
+              m->token);
     model_free(m);
     return NULL;
   }

@@ -18,11 +18,14 @@
  * int, fmi3Int32 is int32_t, fmi3Boolean is bool). */
 typedef enum { ELEM_FLOAT64, ELEM_INT, ELEM_BOOL } ElementType;
 
-/* A new instance after the checks every instantiation needs (token, interface); NULL (with
- * the reason logged through emit) when they fail. */
+/* A new instance after the checks every instantiation needs; resources is the resource
+ * location (an FMU made by `udmap fmu` has its case there, case.h) and token must be the
+ * case's or, without a case, the binary's. NULL (with the reason logged through emit) when
+ * they fail. */
 ModelInstance *core_instantiate(const char *fn, const char *instanceName, int fmiVersion,
-                                InterfaceType type, const char *token, LogEmitter emit,
-                                void *logger, void *environment, bool loggingOn);
+                                InterfaceType type, const char *token, const char *resources,
+                                LogEmitter emit, void *logger, void *environment,
+                                bool loggingOn);
 /* The state-machine check and the logCalls message of every call; false: refuse the call. */
 bool core_begin(ModelInstance *m, const char *fn, unsigned mask);
 

@@ -39,6 +39,18 @@ static bool real_output(unsigned vr) {
          udmap_variables[vr].causality == OUTPUT;
 }
 
+static bool real_known(const ModelInstance *m, unsigned vr) {
+  return model_has(m, vr) && udmap_variables[vr].type == REAL &&
+         (udmap_variables[vr].causality == INPUT || udmap_variables[vr].causality == PARAMETER);
+}
+
+/* The outputs whose slopes in F_E and CF force_slopes() gives; any other real output (one
+ * added to the table later) gets them from the finite difference along the whole seed. */
+static bool analytic(unsigned vr) {
+  return vr == vr_gamma_P || vr == vr_sigma_a || vr == vr_f_res || vr == vr_u_E ||
+         vr == vr_k_re || vr == vr_k_im || vr == vr_F_lim || vr == vr_F_ratio;
+}
+
 /* Degree of homogeneity of an output in (F_E, CF). */
 static double cf_degree(unsigned vr) {
   return vr == vr_gamma_P || vr == vr_sigma_a || vr == vr_u_E || vr == vr_F_lim ? 1.0 : 0.0;
@@ -169,6 +181,7 @@ static Status finite_difference(ModelInstance *m, const double y0[UDMAP_NVARS],
       snprintf(msg, n, "out of memory");
       return Error;
     }
+    if (m->config) model_set_case(m->scratch, m->config, false);
   }
   ModelInstance *w = m->scratch;
   double ratio = 0.0;
@@ -220,8 +233,7 @@ Status model_directional_derivative(ModelInstance *m, const char *fn,
   }
   for (size_t j = 0; j < nKnowns; j++) {
     const unsigned vr = knowns[j];
-    if (vr >= UDMAP_NVARS || udmap_variables[vr].type != REAL ||
-        (udmap_variables[vr].causality != INPUT && udmap_variables[vr].causality != PARAMETER)) {
+    if (!real_known(m, vr)) {
       model_log(m, Error, "%s: known %u is not a real input or tunable parameter", fn, vr);
       return Error;
     }
@@ -237,19 +249,30 @@ Status model_directional_derivative(ModelInstance *m, const char *fn,
   char msg[800];
   double y0[UDMAP_NVARS] = {0}, d[UDMAP_NVARS], total[UDMAP_NVARS] = {0};
   Status st = real_outputs(m, y0, msg, sizeof msg);
+  bool others = false; /* unknowns without analytic slopes: all by finite differences */
+  for (size_t i = 0; i < nUnknowns; i++) others = others || !analytic(unknowns[i]);
+  if (st == OK && others && (dx[vr_F_E] != 0.0 || dx[vr_CF] != 0.0)) {
+    double full[UDMAP_NVARS];
+    st = finite_difference(m, y0, dx, full, msg, sizeof msg);
+    for (unsigned vr = 0; st == OK && vr < UDMAP_NVARS; vr++)
+      if (!analytic(vr)) total[vr] = full[vr];
+  }
   if (st == OK && (dx[vr_F_E] != 0.0 || dx[vr_CF] != 0.0)) {
     st = force_slopes(m, y0, d, msg, sizeof msg);
     for (unsigned vr = 0; st == OK && vr < UDMAP_NVARS; vr++) {
+      if (!analytic(vr)) continue;
       const double dCF = (cf_degree(vr) * y0[vr] - V(F_E) * d[vr]) / V(CF);
       total[vr] += dx[vr_F_E] * d[vr] + dx[vr_CF] * dCF;
     }
   }
+  const bool full_done = others && (dx[vr_F_E] != 0.0 || dx[vr_CF] != 0.0);
   dx[vr_F_E] = dx[vr_CF] = 0.0;
   bool rest = false;
   for (unsigned vr = 0; vr < UDMAP_NVARS; vr++) rest = rest || dx[vr] != 0.0;
   if (st == OK && rest) {
     st = finite_difference(m, y0, dx, d, msg, sizeof msg);
-    for (unsigned vr = 0; st == OK && vr < UDMAP_NVARS; vr++) total[vr] += d[vr];
+    for (unsigned vr = 0; st == OK && vr < UDMAP_NVARS; vr++)
+      if (analytic(vr) || !full_done) total[vr] += d[vr];
   }
   if (st != OK) {
     model_log(m, Error, "%s: %s", fn, msg);

@@ -301,9 +301,10 @@ static void write_html(FILE *f) {
     "<h1>udmap FMU %s</h1>\n<p>", UDMAP_FMU_VERSION, UDMAP_FMU_VERSION);
   esc(f, MODEL_DESCRIPTION);
   fprintf(f, ". Model identifier <code>%s</code>, instantiation token / GUID <code>%s</code>. "
-    "The same binary layer is packaged as an FMI 2.0 co-simulation FMU "
-    "(<code>udmap.fmu</code>, <code>binaries/linux64</code>) and an FMI 3.0 co-simulation "
-    "FMU (<code>udmap-fmi3.fmu</code>, <code>binaries/x86_64-linux</code>).</p>\n",
+    "The same binary layer is packaged as an FMI 2.0 FMU "
+    "(<code>udmap.fmu</code>, <code>binaries/linux64</code>) and an FMI 3.0 "
+    "FMU (<code>udmap-fmi3.fmu</code>, <code>binaries/x86_64-linux</code>), each with both "
+    "interfaces, model exchange and co-simulation.</p>\n",
     MODEL_IDENTIFIER, token);
   fputs(
     "<h2>What it computes</h2>\n"
@@ -315,6 +316,27 @@ static void write_html(FILE *f) {
     "current inputs, at the resonance peak (<code>f_exc = 0</code>) or at the excitation "
     "frequency <code>f_exc</code>. There are no states and no events; any communication step "
     "size is accepted.</p>\n"
+    "<p>Model exchange (no continuous states, no event indicators) gives the outputs for the "
+    "inputs of the same instant, so that an importer can solve algebraic loops through the "
+    "FMU; in co-simulation the outputs at the end of a step answer the inputs set at its "
+    "start. The dependencies of every output on the inputs are declared "
+    "(<code>dependenciesKind=\"dependent\"</code>).</p>\n"
+    "<h2>Directional derivatives</h2>\n"
+    "<p>Both interfaces provide the directional derivatives of every real output with respect "
+    "to the real inputs and tunable parameters (one call per seed vector). With respect to "
+    "<code>F_E</code> they are analytic: <code>gamma_P</code> solves "
+    "<code>F_bb(gamma) = F_E</code> and the slope of the backbone follows from the envelope "
+    "theorem (the partial derivative of the layer's peak at the peak frequency, with the "
+    "damper's <code>dk/dgamma</code>); <code>f_res</code>, <code>sigma_a</code> and "
+    "<code>u_E</code> by the chain rule, their slope along the backbone by a five-point "
+    "difference of relative step 1e-4 in <code>gamma</code>. With respect to <code>CF</code> "
+    "they are exact by the scaling law <code>k(gamma; lambda CF) = k(gamma / lambda; CF)</code> "
+    "(Euler's theorem for functions homogeneous in <code>F_E</code> and <code>CF</code>). "
+    "With respect to every other known, one central difference along the seed vector with a "
+    "largest relative change of 1e-4 (one-sided of second order where a known would leave its "
+    "range, e.g. <code>zeta = 0</code>), evaluated on a second instance so that this one keeps "
+    "its caches. <code>f_exc = 0</code> (at resonance) is a switch: its derivative there is "
+    "0. An unbounded response has no derivative: <code>Error</code>.</p>\n"
     "<p>The response is found without iterations on the non-linear equations: the damper is "
     "replaced by its complex stiffness <code>k(gamma) = k_re + i k_im</code> (describing "
     "function of the traced hysteresis loop), each amplitude layer of the platform rotation "

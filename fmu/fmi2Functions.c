@@ -41,7 +41,7 @@ UDMAP_FMI_EXPORT fmi2Component fmi2Instantiate(fmi2String instanceName, fmi2Type
                                                fmi2String fmuResourceLocation,
                                                const fmi2CallbackFunctions *functions,
                                                fmi2Boolean visible, fmi2Boolean loggingOn) {
-  (void)fmuResourceLocation, (void)visible;
+  (void)visible;
   fmi2CallbackLogger logger = functions ? functions->logger : NULL;
   void *env = functions ? functions->componentEnvironment : NULL;
   if (fmuType != fmi2ModelExchange && fmuType != fmi2CoSimulation) {
@@ -52,7 +52,8 @@ UDMAP_FMI_EXPORT fmi2Component fmi2Instantiate(fmi2String instanceName, fmi2Type
   }
   return core_instantiate("fmi2Instantiate", instanceName, 2,
                           fmuType == fmi2ModelExchange ? ModelExchange : CoSimulation,
-                          fmuGUID, emit2, (void *)logger, env, loggingOn != fmi2False);
+                          fmuGUID, fmuResourceLocation, emit2, (void *)logger, env,
+                          loggingOn != fmi2False);
 }
 
 UDMAP_FMI_EXPORT void fmi2FreeInstance(fmi2Component c) { model_free(M); }

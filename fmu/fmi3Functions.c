@@ -33,9 +33,9 @@ UDMAP_FMI_EXPORT fmi3Instance fmi3InstantiateModelExchange(
     fmi3String instanceName, fmi3String instantiationToken, fmi3String resourcePath,
     fmi3Boolean visible, fmi3Boolean loggingOn, fmi3InstanceEnvironment instanceEnvironment,
     fmi3LogMessageCallback logMessage) {
-  (void)resourcePath, (void)visible;
+  (void)visible;
   return core_instantiate("fmi3InstantiateModelExchange", instanceName, 3, ModelExchange,
-                          instantiationToken, emit3, (void *)logMessage, instanceEnvironment,
+                          instantiationToken, resourcePath, emit3, (void *)logMessage, instanceEnvironment,
                           loggingOn);
 }
 
@@ -45,11 +45,11 @@ UDMAP_FMI_EXPORT fmi3Instance fmi3InstantiateCoSimulation(
     fmi3Boolean earlyReturnAllowed, const fmi3ValueReference requiredIntermediateVariables[],
     size_t nRequiredIntermediateVariables, fmi3InstanceEnvironment instanceEnvironment,
     fmi3LogMessageCallback logMessage, fmi3IntermediateUpdateCallback intermediateUpdate) {
-  (void)resourcePath, (void)visible, (void)earlyReturnAllowed,
-      (void)requiredIntermediateVariables, (void)intermediateUpdate;
+  (void)visible, (void)earlyReturnAllowed, (void)requiredIntermediateVariables,
+      (void)intermediateUpdate;
   const char *fn = "fmi3InstantiateCoSimulation";
   ModelInstance *m = core_instantiate(fn, instanceName, 3, CoSimulation, instantiationToken,
-                                      emit3, (void *)logMessage, instanceEnvironment, loggingOn);
+                                      resourcePath, emit3, (void *)logMessage, instanceEnvironment, loggingOn);
   const char *why = !m ? NULL
                     : eventModeUsed ? "the FMU has no event mode (hasEventMode = false)"
                     : nRequiredIntermediateVariables > 0

@@ -10,6 +10,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "case.h"
 #include "config.h"
 #include "udmap.h"
 
@@ -72,6 +73,12 @@ struct ModelInstance {
   bool stopTimeDefined;
   double stopTime;
 
+  /* the case of an FMU made by `udmap fmu` (NULL: the generic FMU of blade A), and the
+   * instantiation token the instance answers to */
+  CaseConfig *config;
+  bool owns_config;
+  char token[40];
+
   /* values of all variables by value reference (time at vr_time); outputs are computed */
   double value[UDMAP_NVARS];
 
@@ -104,6 +111,10 @@ ModelInstance *model_new(const char *instanceName, int fmiVersion, InterfaceType
 void model_free(ModelInstance *m);
 /* Start values, no kernel objects, state Instantiated. */
 void model_reset(ModelInstance *m);
+/* Makes m the FMU of a case (taking ownership if owns) and resets it to the case's starts. */
+void model_set_case(ModelInstance *m, CaseConfig *config, bool owns);
+/* Whether variable vr exists in this FMU (a case FMU leaves out what does not apply). */
+bool model_has(const ModelInstance *m, unsigned vr);
 
 /* printf-style message through the logger, if its category is enabled. */
 void model_log(ModelInstance *m, Status status, const char *fmt, ...)
