@@ -5,6 +5,7 @@
  *
  *   udmap-describe fmi2|fmi3|html OUTPUT
  */
+#include <stdbool.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -106,6 +107,18 @@ static void write_dependencies(FILE *f, const VariableInfo *v, int offset) {
   fputs("\"", f);
 }
 
+/* One element per output, opened by `open` (printf with its index or value reference, which
+ * is the table position plus offset), with its dependencies if asked. */
+static void write_outputs(FILE *f, const char *open, int offset, bool dependencies) {
+  for (int i = 0; i < UDMAP_NVARS; i++) {
+    const VariableInfo *v = &udmap_variables[i];
+    if (v->causality != OUTPUT) continue;
+    fprintf(f, open, i + offset);
+    if (dependencies) write_dependencies(f, v, offset);
+    fputs("/>\n", f);
+  }
+}
+
 static void write_units(FILE *f) {
   fputs("  <UnitDefinitions>\n", f);
   for (size_t i = 0; i < sizeof units / sizeof units[0]; i++) {
@@ -122,6 +135,16 @@ static void write_units(FILE *f) {
     fputs("/>\n    </Unit>\n", f);
   }
   fputs("  </UnitDefinitions>\n", f);
+}
+
+static void write_log_categories(FILE *f);
+
+/* What both versions write between the interfaces and the variables. */
+static void write_units_to_variables(FILE *f) {
+  write_units(f);
+  write_log_categories(f);
+  fputs("  <DefaultExperiment startTime=\"0\" stopTime=\"1\" stepSize=\"0.1\"/>\n", f);
+  fputs("  <ModelVariables>\n", f);
 }
 
 static void write_log_categories(FILE *f) {
@@ -187,10 +210,7 @@ static void write_fmi2(FILE *f) {
              "    modelIdentifier=\"%s\"\n"
              "    canHandleVariableCommunicationStepSize=\"true\"\n%s/>\n", MODEL_IDENTIFIER,
           common);
-  write_units(f);
-  write_log_categories(f);
-  fputs("  <DefaultExperiment startTime=\"0\" stopTime=\"1\" stepSize=\"0.1\"/>\n", f);
-  fputs("  <ModelVariables>\n", f);
+  write_units_to_variables(f);
   for (int i = 0; i < UDMAP_NVARS; i++) {
     const VariableInfo *v = &udmap_variables[i];
     fprintf(f, "    <!-- index %d -->\n    <ScalarVariable name=\"%s\" valueReference=\"%d\" "
@@ -205,17 +225,9 @@ static void write_fmi2(FILE *f) {
     fputs("/>\n    </ScalarVariable>\n", f);
   }
   fputs("  </ModelVariables>\n  <ModelStructure>\n    <Outputs>\n", f);
-  for (int i = 0; i < UDMAP_NVARS; i++) {
-    const VariableInfo *v = &udmap_variables[i];
-    if (v->causality != OUTPUT) continue;
-    fprintf(f, "      <Unknown index=\"%d\"", i + 1);
-    write_dependencies(f, v, 1);
-    fputs("/>\n", f);
-  }
+  write_outputs(f, "      <Unknown index=\"%d\"", 1, true);
   fputs("    </Outputs>\n    <InitialUnknowns>\n", f);
-  for (int i = 0; i < UDMAP_NVARS; i++)
-    if (udmap_variables[i].causality == OUTPUT)
-      fprintf(f, "      <Unknown index=\"%d\"/>\n", i + 1);
+  write_outputs(f, "      <Unknown index=\"%d\"", 1, false);
   fputs("    </InitialUnknowns>\n  </ModelStructure>\n</fmiModelDescription>\n", f);
 }
 
@@ -233,10 +245,7 @@ static void write_fmi3(FILE *f) {
              "    canHandleVariableCommunicationStepSize=\"true\"\n%s\n"
              "    hasEventMode=\"false\"\n"
              "    providesIntermediateUpdate=\"false\"/>\n", MODEL_IDENTIFIER, common);
-  write_units(f);
-  write_log_categories(f);
-  fputs("  <DefaultExperiment startTime=\"0\" stopTime=\"1\" stepSize=\"0.1\"/>\n", f);
-  fputs("  <ModelVariables>\n", f);
+  write_units_to_variables(f);
   for (int i = 0; i < UDMAP_NVARS; i++) {
     const VariableInfo *v = &udmap_variables[i];
     fprintf(f, "    <%s name=\"%s\" valueReference=\"%d\" description=\"", type_name3[v->type],
@@ -248,16 +257,8 @@ static void write_fmi3(FILE *f) {
     fputs("/>\n", f);
   }
   fputs("  </ModelVariables>\n  <ModelStructure>\n", f);
-  for (int i = 0; i < UDMAP_NVARS; i++) {
-    const VariableInfo *v = &udmap_variables[i];
-    if (v->causality != OUTPUT) continue;
-    fprintf(f, "    <Output valueReference=\"%d\"", i);
-    write_dependencies(f, v, 0);
-    fputs("/>\n", f);
-  }
-  for (int i = 0; i < UDMAP_NVARS; i++)
-    if (udmap_variables[i].causality == OUTPUT)
-      fprintf(f, "    <InitialUnknown valueReference=\"%d\"/>\n", i);
+  write_outputs(f, "    <Output valueReference=\"%d\"", 0, true);
+  write_outputs(f, "    <InitialUnknown valueReference=\"%d\"", 0, false);
   fputs("  </ModelStructure>\n</fmiModelDescription>\n", f);
 }
 

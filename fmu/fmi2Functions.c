@@ -284,27 +284,14 @@ static fmi2Status get_status(fmi2Component c, const char *fn, StatusType t, fmi2
   return fmi2Discard;
 }
 
-UDMAP_FMI_EXPORT fmi2Status fmi2GetStatus(fmi2Component c, const fmi2StatusKind s,
-                                          fmi2Status *value) {
-  return get_status(c, "fmi2GetStatus", STATUS, s, value);
-}
+#define STATUS_GETTER(Name, Type, kind)                                                   \
+  UDMAP_FMI_EXPORT fmi2Status fmi2Get##Name(fmi2Component c, const fmi2StatusKind s,        \
+                                            Type *value) {                                  \
+    return get_status(c, "fmi2Get" #Name, kind, s, value);                                  \
+  }
 
-UDMAP_FMI_EXPORT fmi2Status fmi2GetRealStatus(fmi2Component c, const fmi2StatusKind s,
-                                              fmi2Real *value) {
-  return get_status(c, "fmi2GetRealStatus", REAL_STATUS, s, value);
-}
-
-UDMAP_FMI_EXPORT fmi2Status fmi2GetIntegerStatus(fmi2Component c, const fmi2StatusKind s,
-                                                 fmi2Integer *value) {
-  return get_status(c, "fmi2GetIntegerStatus", INTEGER_STATUS, s, value);
-}
-
-UDMAP_FMI_EXPORT fmi2Status fmi2GetBooleanStatus(fmi2Component c, const fmi2StatusKind s,
-                                                 fmi2Boolean *value) {
-  return get_status(c, "fmi2GetBooleanStatus", BOOLEAN_STATUS, s, value);
-}
-
-UDMAP_FMI_EXPORT fmi2Status fmi2GetStringStatus(fmi2Component c, const fmi2StatusKind s,
-                                                fmi2String *value) {
-  return get_status(c, "fmi2GetStringStatus", STRING_STATUS, s, value);
-}
+STATUS_GETTER(Status, fmi2Status, STATUS)
+STATUS_GETTER(RealStatus, fmi2Real, REAL_STATUS)
+STATUS_GETTER(IntegerStatus, fmi2Integer, INTEGER_STATUS)
+STATUS_GETTER(BooleanStatus, fmi2Boolean, BOOLEAN_STATUS)
+STATUS_GETTER(StringStatus, fmi2String, STRING_STATUS)

@@ -303,6 +303,20 @@ def cli(*args) -> dict:
     return json.loads(r.stdout)
 
 
+def step_table(segments, duration: float):
+    """An fmpy input table that holds each (F_E, CF, mu, f_exc) for `duration` seconds and then
+    steps: segments are (CF, mu, f_exc, [F_E, ...]). Returns the table and its end time."""
+    import numpy as np
+    rows, t = [], 0.0
+    for CF, mu, f_exc, forces in segments:
+        for F in forces:
+            rows.append((t, F, CF, mu, f_exc))
+            t += duration
+            rows.append((t, F, CF, mu, f_exc))
+    dtype = [("time", float), ("F_E", float), ("CF", float), ("mu", float), ("f_exc", float)]
+    return np.array(rows, dtype=dtype), t
+
+
 def case_with(tmp_path: Path, name: str = "case", **damper) -> Path:
     """blade_a.json with some damper fields replaced, written to tmp_path."""
     data = json.loads(CASE.read_text())

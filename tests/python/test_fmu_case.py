@@ -127,6 +127,37 @@ def test_matrices_blade_with_table_damper(matrices_table_case, version, tmp_path
         worst = max(worst, compare(r, references, ["F_E"]))
         assert {int(x) for x in r["regime"]} >= {0, 1}  # a table knows stuck and slip
     print(f"FMI {version} matrices + table: worst relative difference {worst:.1e}")
+    # directional derivatives through fmpy: F_E analytic (the table's PCHIP slope), zeta by a
+    # finite difference, against central differences of the outputs
+    from fmpy import extract, instantiate_fmu
+    unzipped = extract(str(fmu))
+    inst = instantiate_fmu(unzipped, md, fmi_type="ModelExchange")
+    vr = {n: v.valueReference for n, v in names.items()}
+    outs = [vr[n] for n in ("gamma_P", "sigma_a", "f_res", "F_lim")]
+    set_real = inst.setReal if version == 2 else inst.setFloat64
+    get_real = inst.getReal if version == 2 else inst.getFloat64
+    if version == 2:
+        inst.setupExperiment(startTime=0.0)
+        inst.enterInitializationMode()
+    else:
+        inst.enterInitializationMode(startTime=0.0)
+    inst.exitInitializationMode()
+    for F in (0.2, 1.5, 6.0):
+        set_real([vr["F_E"]], [F])
+        for known, x0 in (("F_E", F), ("zeta", 0.002)):
+            d = inst.getDirectionalDerivative(outs, [vr[known]], [1.0])
+            h = 1e-5 * x0
+            set_real([vr[known]], [x0 + h])
+            yp = get_real(outs)
+            set_real([vr[known]], [x0 - h])
+            ym = get_real(outs)
+            set_real([vr[known]], [x0])
+            y0 = get_real(outs)
+            for a, p_, m_, y in zip(d, yp, ym, y0):
+                fd = (p_ - m_) / (2 * h)
+                assert abs(a - fd) <= max(1e-5 * abs(fd), 1e-9 * abs(y) / x0), (known, F, a, fd)
+    inst.terminate()
+    inst.freeInstance()
 
 
 @pytest.mark.parametrize("version", [2, 3])

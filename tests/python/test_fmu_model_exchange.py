@@ -9,7 +9,7 @@ import pytest
 from fmpy import simulate_fmu
 from fmpy.validation import validate_fmu
 
-from fmu_harness import FMUS, OK, Instance, case_with, cli
+from fmu_harness import FMUS, OK, Instance, case_with, cli, step_table
 
 SEGMENTS = [(900.0, 0.3, 0.0, [0.2, 0.5, 2.0, 5.0, 12.0, 20.0]),
             (1200.0, 0.3, 0.0, [0.5, 5.0]),
@@ -22,30 +22,18 @@ OUTPUTS = REAL + ["F_lim", "F_ratio", "regime", "hcf_ok", "lift_off"]
 DURATION = 0.5
 
 
-def table():
-    rows, t = [], 0.0
-    for CF, mu, f_exc, forces in SEGMENTS:
-        for F in forces:
-            rows.append((t, F, CF, mu, f_exc))
-            t += DURATION
-            rows.append((t, F, CF, mu, f_exc))
-    dtype = [("time", float), ("F_E", float), ("CF", float), ("mu", float), ("f_exc", float)]
-    return np.array(rows, dtype=dtype), t
-
-
 def inputs_at(tab, t):
-    """The table's inputs at time t: one set inside a segment, the values before and after
-    the step at a step time (fmpy records both sides of an input event)."""
-    lo = max(np.searchsorted(tab["time"], t, side="left") - 1, 0)
-    hi = np.searchsorted(tab["time"], t, side="right")
-    rows = range(lo, hi) if np.any(tab["time"] == t) else [hi - 1]
-    return [{k: float(tab[k][i]) for k in INPUTS} for i in rows
-            if tab["time"][i] == t or i == hi - 1]
+    """The table's inputs at time t: inside a segment its values; at a step time those before
+    and after the step (fmpy records both sides of an input event)."""
+    rows = np.nonzero(tab["time"] == t)[0]
+    if len(rows) == 0:
+        rows = [np.searchsorted(tab["time"], t) - 1]
+    return [{k: float(tab[k][i]) for k in INPUTS} for i in rows]
 
 
 @pytest.fixture(scope="module")
 def results():
-    tab, stop = table()
+    tab, stop = step_table(SEGMENTS, DURATION)
     out = {}
     for version in (2, 3):
         out[version] = simulate_fmu(str(FMUS[version]), fmi_type="ModelExchange",
