@@ -11,12 +11,13 @@
  * percent-encoded) or a plain path; with a trailing '/'. */
 static bool resource_dir(const char *location, char *out, size_t n) {
   const char *p = location;
+  const bool uri = strncmp(location, "file:", 5) == 0;
   if (strncmp(p, "file://localhost/", 17) == 0) p += 16;
   else if (strncmp(p, "file:///", 8) == 0) p += 7;
   else if (strncmp(p, "file:/", 6) == 0) p += 5;
   size_t j = 0;
   for (; *p && j + 2 < n; p++) {
-    if (p[0] == '%' && isxdigit((unsigned char)p[1]) && isxdigit((unsigned char)p[2])) {
+    if (uri && p[0] == '%' && isxdigit((unsigned char)p[1]) && isxdigit((unsigned char)p[2])) {
       char hex[3] = {p[1], p[2], 0};
       out[j++] = (char)strtol(hex, NULL, 16);
       p += 2;
@@ -25,7 +26,13 @@ static bool resource_dir(const char *location, char *out, size_t n) {
     }
   }
   if (*p) return false;
-  if (j > 0 && out[j - 1] != '/') out[j++] = '/';
+  /* file:///C:/dir on Windows: the drive letter starts the path */
+  if (uri && j >= 3 && out[0] == '/' && isalpha((unsigned char)out[1]) &&
+      out[2] == ':') {
+    memmove(out, out + 1, j - 1);
+    j--;
+  }
+  if (j > 0 && out[j - 1] != '/' && out[j - 1] != '\\') out[j++] = '/';
   out[j] = '\0';
   return true;
 }

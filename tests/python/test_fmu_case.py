@@ -11,6 +11,7 @@ import os
 import subprocess
 import sys
 import zipfile
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -192,3 +193,58 @@ def test_bad_requests(matrices_table_case, tmp_path):
     assert r.returncode == 2
     assert not (tmp_path / "x.fmu").exists()
     assert not list(tmp_path.glob(".udmap-fmu-*"))
+
+
+@pytest.mark.parametrize("version", [2, 3])
+def test_resources_are_checked_at_instantiation(beam_case, version, tmp_path):
+    """The binary refuses the generic token for a case FMU, and a damaged case file, with a
+    message that names the file and line; the unchanged FMU instantiates."""
+    import ctypes
+    from fmpy import extract
+    fmu = make(beam_case, version, tmp_path)
+    md = read_model_description(str(fmu))
+    good = md.guid if version == 2 else md.instantiationToken
+    d = Path(extract(str(fmu)))
+    platform = "linux64" if version == 2 else "x86_64-linux"
+    dll = ctypes.CDLL(str(d / "binaries" / platform / "udmap.so"))
+    messages = []
+    if version == 2:
+        logger_t = ctypes.CFUNCTYPE(None, ctypes.c_void_p, ctypes.c_char_p, ctypes.c_int,
+                                    ctypes.c_char_p, ctypes.c_char_p)
+        logger = logger_t(lambda e, n, s, c, m: messages.append(m.decode()))
+        callbacks = (ctypes.c_void_p * 5)(ctypes.cast(logger, ctypes.c_void_p), None, None,
+                                         None, None)
+        f = dll.fmi2Instantiate
+        f.restype = ctypes.c_void_p
+        f.argtypes = [ctypes.c_char_p, ctypes.c_int, ctypes.c_char_p, ctypes.c_char_p,
+                      ctypes.c_void_p, ctypes.c_int, ctypes.c_int]
+        location = (d / "resources").as_uri().encode()
+
+        def instantiate(tok):
+            return f(b"x", 0, tok.encode(), location, callbacks, 0, 0)
+        free = dll.fmi2FreeInstance
+    else:
+        logger_t = ctypes.CFUNCTYPE(None, ctypes.c_void_p, ctypes.c_int, ctypes.c_char_p,
+                                    ctypes.c_char_p)
+        logger = logger_t(lambda e, s, c, m: messages.append(m.decode()))
+        f = dll.fmi3InstantiateModelExchange
+        f.restype = ctypes.c_void_p
+        f.argtypes = [ctypes.c_char_p, ctypes.c_char_p, ctypes.c_char_p, ctypes.c_bool,
+                      ctypes.c_bool, ctypes.c_void_p, logger_t]
+        location = (str(d / "resources") + "/").encode()
+
+        def instantiate(tok):
+            return f(b"x", tok.encode(), location, False, False, None, logger)
+        free = dll.fmi3FreeInstance
+    free.argtypes = [ctypes.c_void_p]
+    c = instantiate(good)
+    assert c, messages
+    free(c)
+    assert not instantiate(token(version))
+    assert "does not match this FMU's" in messages[-1]
+    case_file = d / "resources" / "udmap-case.txt"
+    text = case_file.read_text()
+    case_file.write_text(text.replace("damper asymmetric", "damper sponge"))
+    assert not instantiate(good)
+    assert "udmap-case.txt, line" in messages[-1] and "damper kind" in messages[-1]
+    case_file.write_text(text)

@@ -41,8 +41,12 @@ def matrices_case(case: Case) -> Case:
     if kind in ("beam", "matrices"):
         return case
     if kind == "fe":
-        from . import reduce as _reduce  # the FE reduction, where it is available
-        return _reduce.reduced_case(case)
+        try:  # the FE reduction (udmap reduce): its matrices case
+            from .reduce import reduced_case
+        except ImportError:
+            raise InputError("blade.kind 'fe' needs the FE reduction of 'udmap reduce', which "
+                             "this installation lacks") from None
+        return reduced_case(case)
     raise InputError(f"blade.kind {kind!r} cannot go into an FMU")
 
 
