@@ -5,6 +5,7 @@
  *
  *   udmap-describe fmi2|fmi3|html OUTPUT
  */
+#include <stdbool.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -85,6 +86,39 @@ static int depends(const VariableInfo *out, const VariableInfo *in) {
   }
 }
 
+/* The dependencies and dependenciesKind attributes of output v: the inputs it depends on, by
+ * index (FMI 2, offset 1) or value reference (FMI 3, offset 0). The outputs are non-linear
+ * algebraic functions of the inputs: kind "dependent". */
+static void write_dependencies(FILE *f, const VariableInfo *v, int offset) {
+  const char *sep = "";
+  fputs(" dependencies=\"", f);
+  for (int j = 0; j < UDMAP_NVARS; j++) {
+    if (!depends(v, &udmap_variables[j])) continue;
+    fprintf(f, "%s%d", sep, j + offset);
+    sep = " ";
+  }
+  fputs("\" dependenciesKind=\"", f);
+  sep = "";
+  for (int j = 0; j < UDMAP_NVARS; j++) {
+    if (!depends(v, &udmap_variables[j])) continue;
+    fprintf(f, "%sdependent", sep);
+    sep = " ";
+  }
+  fputs("\"", f);
+}
+
+/* One element per output, opened by `open` (printf with its index or value reference, which
+ * is the table position plus offset), with its dependencies if asked. */
+static void write_outputs(FILE *f, const char *open, int offset, bool dependencies) {
+  for (int i = 0; i < UDMAP_NVARS; i++) {
+    const VariableInfo *v = &udmap_variables[i];
+    if (v->causality != OUTPUT) continue;
+    fprintf(f, open, i + offset);
+    if (dependencies) write_dependencies(f, v, offset);
+    fputs("/>\n", f);
+  }
+}
+
 static void write_units(FILE *f) {
   fputs("  <UnitDefinitions>\n", f);
   for (size_t i = 0; i < sizeof units / sizeof units[0]; i++) {
@@ -101,6 +135,16 @@ static void write_units(FILE *f) {
     fputs("/>\n    </Unit>\n", f);
   }
   fputs("  </UnitDefinitions>\n", f);
+}
+
+static void write_log_categories(FILE *f);
+
+/* What both versions write between the interfaces and the variables. */
+static void write_units_to_variables(FILE *f) {
+  write_units(f);
+  write_log_categories(f);
+  fputs("  <DefaultExperiment startTime=\"0\" stopTime=\"1\" stepSize=\"0.1\"/>\n", f);
+  fputs("  <ModelVariables>\n", f);
 }
 
 static void write_log_categories(FILE *f) {
@@ -154,16 +198,19 @@ static void write_header(FILE *f, const char *version, const char *token_attr) {
 
 static void write_fmi2(FILE *f) {
   write_header(f, "2.0", "guid");
+  static const char *const common =
+      "    canNotUseMemoryManagementFunctions=\"true\"\n"
+      "    canGetAndSetFMUstate=\"true\"\n"
+      "    canSerializeFMUstate=\"true\"\n"
+      "    providesDirectionalDerivative=\"true\"";
+  fprintf(f, "  <ModelExchange\n"
+             "    modelIdentifier=\"%s\"\n"
+             "    completedIntegratorStepNotNeeded=\"true\"\n%s/>\n", MODEL_IDENTIFIER, common);
   fprintf(f, "  <CoSimulation\n"
              "    modelIdentifier=\"%s\"\n"
-             "    canHandleVariableCommunicationStepSize=\"true\"\n"
-             "    canNotUseMemoryManagementFunctions=\"true\"\n"
-             "    canGetAndSetFMUstate=\"true\"\n"
-             "    canSerializeFMUstate=\"true\"/>\n", MODEL_IDENTIFIER);
-  write_units(f);
-  write_log_categories(f);
-  fputs("  <DefaultExperiment startTime=\"0\" stopTime=\"1\" stepSize=\"0.1\"/>\n", f);
-  fputs("  <ModelVariables>\n", f);
+             "    canHandleVariableCommunicationStepSize=\"true\"\n%s/>\n", MODEL_IDENTIFIER,
+          common);
+  write_units_to_variables(f);
   for (int i = 0; i < UDMAP_NVARS; i++) {
     const VariableInfo *v = &udmap_variables[i];
     fprintf(f, "    <!-- index %d -->\n    <ScalarVariable name=\"%s\" valueReference=\"%d\" "
@@ -178,38 +225,27 @@ static void write_fmi2(FILE *f) {
     fputs("/>\n    </ScalarVariable>\n", f);
   }
   fputs("  </ModelVariables>\n  <ModelStructure>\n    <Outputs>\n", f);
-  for (int i = 0; i < UDMAP_NVARS; i++) {
-    const VariableInfo *v = &udmap_variables[i];
-    if (v->causality != OUTPUT) continue;
-    fprintf(f, "      <Unknown index=\"%d\" dependencies=\"", i + 1);
-    const char *sep = "";
-    for (int j = 0; j < UDMAP_NVARS; j++) {
-      if (!depends(v, &udmap_variables[j])) continue;
-      fprintf(f, "%s%d", sep, j + 1);
-      sep = " ";
-    }
-    fputs("\"/>\n", f);
-  }
+  write_outputs(f, "      <Unknown index=\"%d\"", 1, true);
   fputs("    </Outputs>\n    <InitialUnknowns>\n", f);
-  for (int i = 0; i < UDMAP_NVARS; i++)
-    if (udmap_variables[i].causality == OUTPUT)
-      fprintf(f, "      <Unknown index=\"%d\"/>\n", i + 1);
+  write_outputs(f, "      <Unknown index=\"%d\"", 1, false);
   fputs("    </InitialUnknowns>\n  </ModelStructure>\n</fmiModelDescription>\n", f);
 }
 
 static void write_fmi3(FILE *f) {
   write_header(f, "3.0", "instantiationToken");
+  static const char *const common =
+      "    canGetAndSetFMUState=\"true\"\n"
+      "    canSerializeFMUState=\"true\"\n"
+      "    providesDirectionalDerivatives=\"true\"";
+  fprintf(f, "  <ModelExchange\n"
+             "    modelIdentifier=\"%s\"\n"
+             "    needsCompletedIntegratorStep=\"false\"\n%s/>\n", MODEL_IDENTIFIER, common);
   fprintf(f, "  <CoSimulation\n"
              "    modelIdentifier=\"%s\"\n"
-             "    canHandleVariableCommunicationStepSize=\"true\"\n"
-             "    canGetAndSetFMUState=\"true\"\n"
-             "    canSerializeFMUState=\"true\"\n"
+             "    canHandleVariableCommunicationStepSize=\"true\"\n%s\n"
              "    hasEventMode=\"false\"\n"
-             "    providesIntermediateUpdate=\"false\"/>\n", MODEL_IDENTIFIER);
-  write_units(f);
-  write_log_categories(f);
-  fputs("  <DefaultExperiment startTime=\"0\" stopTime=\"1\" stepSize=\"0.1\"/>\n", f);
-  fputs("  <ModelVariables>\n", f);
+             "    providesIntermediateUpdate=\"false\"/>\n", MODEL_IDENTIFIER, common);
+  write_units_to_variables(f);
   for (int i = 0; i < UDMAP_NVARS; i++) {
     const VariableInfo *v = &udmap_variables[i];
     fprintf(f, "    <%s name=\"%s\" valueReference=\"%d\" description=\"", type_name3[v->type],
@@ -221,21 +257,8 @@ static void write_fmi3(FILE *f) {
     fputs("/>\n", f);
   }
   fputs("  </ModelVariables>\n  <ModelStructure>\n", f);
-  for (int i = 0; i < UDMAP_NVARS; i++) {
-    const VariableInfo *v = &udmap_variables[i];
-    if (v->causality != OUTPUT) continue;
-    fprintf(f, "    <Output valueReference=\"%d\" dependencies=\"", i);
-    const char *sep = "";
-    for (int j = 0; j < UDMAP_NVARS; j++) {
-      if (!depends(v, &udmap_variables[j])) continue;
-      fprintf(f, "%s%d", sep, j);
-      sep = " ";
-    }
-    fputs("\"/>\n", f);
-  }
-  for (int i = 0; i < UDMAP_NVARS; i++)
-    if (udmap_variables[i].causality == OUTPUT)
-      fprintf(f, "    <InitialUnknown valueReference=\"%d\"/>\n", i);
+  write_outputs(f, "    <Output valueReference=\"%d\"", 0, true);
+  write_outputs(f, "    <InitialUnknown valueReference=\"%d\"", 0, false);
   fputs("  </ModelStructure>\n</fmiModelDescription>\n", f);
 }
 
@@ -279,9 +302,10 @@ static void write_html(FILE *f) {
     "<h1>udmap FMU %s</h1>\n<p>", UDMAP_FMU_VERSION, UDMAP_FMU_VERSION);
   esc(f, MODEL_DESCRIPTION);
   fprintf(f, ". Model identifier <code>%s</code>, instantiation token / GUID <code>%s</code>. "
-    "The same binary layer is packaged as an FMI 2.0 co-simulation FMU "
-    "(<code>udmap.fmu</code>, <code>binaries/linux64</code>) and an FMI 3.0 co-simulation "
-    "FMU (<code>udmap-fmi3.fmu</code>, <code>binaries/x86_64-linux</code>).</p>\n",
+    "The same binary layer is packaged as an FMI 2.0 FMU "
+    "(<code>udmap.fmu</code>, <code>binaries/linux64</code>) and an FMI 3.0 "
+    "FMU (<code>udmap-fmi3.fmu</code>, <code>binaries/x86_64-linux</code>), each with both "
+    "interfaces, model exchange and co-simulation.</p>\n",
     MODEL_IDENTIFIER, token);
   fputs(
     "<h2>What it computes</h2>\n"
@@ -293,6 +317,27 @@ static void write_html(FILE *f) {
     "current inputs, at the resonance peak (<code>f_exc = 0</code>) or at the excitation "
     "frequency <code>f_exc</code>. There are no states and no events; any communication step "
     "size is accepted.</p>\n"
+    "<p>Model exchange (no continuous states, no event indicators) gives the outputs for the "
+    "inputs of the same instant, so that an importer can solve algebraic loops through the "
+    "FMU; in co-simulation the outputs at the end of a step answer the inputs set at its "
+    "start. The dependencies of every output on the inputs are declared "
+    "(<code>dependenciesKind=\"dependent\"</code>).</p>\n"
+    "<h2>Directional derivatives</h2>\n"
+    "<p>Both interfaces provide the directional derivatives of every real output with respect "
+    "to the real inputs and tunable parameters (one call per seed vector). With respect to "
+    "<code>F_E</code> they are analytic: <code>gamma_P</code> solves "
+    "<code>F_bb(gamma) = F_E</code> and the slope of the backbone follows from the envelope "
+    "theorem (the partial derivative of the layer's peak at the peak frequency, with the "
+    "damper's <code>dk/dgamma</code>); <code>f_res</code>, <code>sigma_a</code> and "
+    "<code>u_E</code> by the chain rule, their slope along the backbone by a five-point "
+    "difference of relative step 1e-4 in <code>gamma</code>. With respect to <code>CF</code> "
+    "they are exact by the scaling law <code>k(gamma; lambda CF) = k(gamma / lambda; CF)</code> "
+    "(Euler's theorem for functions homogeneous in <code>F_E</code> and <code>CF</code>). "
+    "With respect to every other known, one central difference along the seed vector with a "
+    "largest relative change of 1e-4 (one-sided of second order where a known would leave its "
+    "range, e.g. <code>zeta = 0</code>), evaluated on a second instance so that this one keeps "
+    "its caches. <code>f_exc = 0</code> (at resonance) is a switch: its derivative there is "
+    "0. An unbounded response has no derivative: <code>Error</code>.</p>\n"
     "<p>The response is found without iterations on the non-linear equations: the damper is "
     "replaced by its complex stiffness <code>k(gamma) = k_re + i k_im</code> (describing "
     "function of the traced hysteresis loop), each amplitude layer of the platform rotation "

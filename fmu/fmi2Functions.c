@@ -1,42 +1,29 @@
 /*
- * FMI 2.0 co-simulation interface over model.c. Every function checks its instance and the
- * states it may be called in, and every failure is logged through the importer's logger.
+ * FMI 2.0 model exchange and co-simulation: signatures translated to the shared core
+ * (core.c), which checks the instance states and logs every failure.
  */
-#include <math.h>
 #include <stdio.h>
-#include <stdlib.h>
-#include <string.h>
 
 #include "fmi2_api.h"
-#include "model.h"
-
-#define ALL_STATES (Instantiated | InitializationMode | StepMode | Terminated)
-#define MASK_SET (Instantiated | InitializationMode | StepMode)
-#define MASK_GET (Instantiated | InitializationMode | StepMode | Terminated)
+#include "core.h"
 
 /* The FMI 2 logger takes a printf format: pass messages with '%' doubled. */
-static void escape_percent(const char *message, char *buf, size_t n) {
-  size_t j = 0;
-  for (size_t i = 0; message[i] && j + 2 < n; i++) {
-    if (message[i] == '%') buf[j++] = '%';
-    buf[j++] = message[i];
-  }
-  buf[j] = '\0';
-}
-
 static void emit2(ModelInstance *m, Status status, const char *category, const char *message) {
   fmi2CallbackLogger logger = (fmi2CallbackLogger)m->logger;
   if (!logger) return;
   char buf[2048];
-  escape_percent(message, buf, sizeof buf);
+  size_t j = 0;
+  for (size_t i = 0; message[i] && j + 2 < sizeof buf; i++) {
+    if (message[i] == '%') buf[j++] = '%';
+    buf[j++] = message[i];
+  }
+  buf[j] = '\0';
   logger(m->environment, m->instanceName, (fmi2Status)status, category, buf);
 }
 
-#define BEGIN(fn, mask)                                        \
-  ModelInstance *m = (ModelInstance *)c;                       \
-  if (!m) return fmi2Error;                                    \
-  if (!model_allowed(m, fn, mask)) return fmi2Error;           \
-  model_log_category(m, LOG_CALLS, OK, "%s", fn);
+#define M ((ModelInstance *)c)
+#define CALL(expr) return c ? (fmi2Status)(expr) : fmi2Error;
+#define VR(vr) ((const unsigned *)(vr))
 
 UDMAP_FMI_EXPORT const char *fmi2GetTypesPlatform(void) { return fmi2TypesPlatform; }
 
@@ -45,9 +32,8 @@ UDMAP_FMI_EXPORT const char *fmi2GetVersion(void) { return fmi2Version; }
 UDMAP_FMI_EXPORT fmi2Status fmi2SetDebugLogging(fmi2Component c, fmi2Boolean loggingOn,
                                                 size_t nCategories,
                                                 const fmi2String categories[]) {
-  BEGIN("fmi2SetDebugLogging", ALL_STATES)
-  return (fmi2Status)model_set_debug_logging(m, loggingOn != fmi2False, nCategories,
-                                             categories);
+  CALL(core_set_debug_logging(M, "fmi2SetDebugLogging", loggingOn != fmi2False, nCategories,
+                              categories))
 }
 
 UDMAP_FMI_EXPORT fmi2Component fmi2Instantiate(fmi2String instanceName, fmi2Type fmuType,
@@ -55,256 +41,193 @@ UDMAP_FMI_EXPORT fmi2Component fmi2Instantiate(fmi2String instanceName, fmi2Type
                                                fmi2String fmuResourceLocation,
                                                const fmi2CallbackFunctions *functions,
                                                fmi2Boolean visible, fmi2Boolean loggingOn) {
-  (void)fmuResourceLocation;
   (void)visible;
   fmi2CallbackLogger logger = functions ? functions->logger : NULL;
   void *env = functions ? functions->componentEnvironment : NULL;
-  const char *name = instanceName ? instanceName : "udmap";
-  char token[40], msg[256];
-  udmap_fmu_token(token, sizeof token);
-  msg[0] = '\0';
-  if (fmuType != fmi2CoSimulation)
-    snprintf(msg, sizeof msg, "fmi2Instantiate: udmap is a co-simulation FMU only (fmuType "
-             "must be fmi2CoSimulation)");
-  else if (!fmuGUID || strcmp(fmuGUID, token) != 0)
-    snprintf(msg, sizeof msg, "fmi2Instantiate: GUID '%s' does not match this binary's '%s'",
-             fmuGUID ? fmuGUID : "(null)", token);
-  if (msg[0]) {
-    char buf[512];
-    escape_percent(msg, buf, sizeof buf);
-    if (logger) logger(env, name, fmi2Error, "logStatusError", buf);
+  if (fmuType != fmi2ModelExchange && fmuType != fmi2CoSimulation) {
+    if (logger)
+      logger(env, instanceName ? instanceName : "udmap", fmi2Error, "logStatusError",
+             "fmi2Instantiate: fmuType must be fmi2ModelExchange or fmi2CoSimulation");
     return NULL;
   }
-  ModelInstance *m = model_new(name, 2, emit2, (void *)logger, env, loggingOn != fmi2False);
-  if (!m && logger)
-    logger(env, name, fmi2Error, "logStatusError", "fmi2Instantiate: out of memory");
-  return m;
+  return core_instantiate("fmi2Instantiate", instanceName, 2,
+                          fmuType == fmi2ModelExchange ? ModelExchange : CoSimulation,
+                          fmuGUID, fmuResourceLocation, emit2, (void *)logger, env,
+                          loggingOn != fmi2False);
 }
 
-UDMAP_FMI_EXPORT void fmi2FreeInstance(fmi2Component c) { model_free((ModelInstance *)c); }
+UDMAP_FMI_EXPORT void fmi2FreeInstance(fmi2Component c) { model_free(M); }
 
 UDMAP_FMI_EXPORT fmi2Status fmi2SetupExperiment(fmi2Component c, fmi2Boolean toleranceDefined,
                                                 fmi2Real tolerance, fmi2Real startTime,
                                                 fmi2Boolean stopTimeDefined,
                                                 fmi2Real stopTime) {
-  BEGIN("fmi2SetupExperiment", Instantiated)
-  (void)toleranceDefined;
-  (void)tolerance;
-  if (!isfinite(startTime) || (stopTimeDefined && !(stopTime >= startTime))) {
-    model_log(m, Error, "fmi2SetupExperiment: startTime = %g, stopTime = %g are not a valid "
-              "interval", startTime, stopTime);
-    return fmi2Error;
-  }
-  m->value[vr_time] = startTime;
-  m->stopTimeDefined = stopTimeDefined != fmi2False;
-  m->stopTime = stopTime;
-  return fmi2OK;
+  (void)toleranceDefined, (void)tolerance;
+  CALL(core_setup_experiment(M, "fmi2SetupExperiment", Instantiated, startTime,
+                             stopTimeDefined != fmi2False, stopTime))
 }
 
 UDMAP_FMI_EXPORT fmi2Status fmi2EnterInitializationMode(fmi2Component c) {
-  BEGIN("fmi2EnterInitializationMode", Instantiated)
-  m->state = InitializationMode;
-  return fmi2OK;
+  CALL(core_enter_initialization_mode(M, "fmi2EnterInitializationMode"))
 }
 
 UDMAP_FMI_EXPORT fmi2Status fmi2ExitInitializationMode(fmi2Component c) {
-  BEGIN("fmi2ExitInitializationMode", InitializationMode)
-  m->state = StepMode;
-  return fmi2OK;
+  CALL(core_exit_initialization_mode(M, "fmi2ExitInitializationMode"))
 }
 
 UDMAP_FMI_EXPORT fmi2Status fmi2Terminate(fmi2Component c) {
-  BEGIN("fmi2Terminate", StepMode)
-  m->state = Terminated;
-  return fmi2OK;
+  CALL(core_terminate(M, "fmi2Terminate"))
 }
 
-UDMAP_FMI_EXPORT fmi2Status fmi2Reset(fmi2Component c) {
-  BEGIN("fmi2Reset", ALL_STATES)
-  model_reset(m);
-  return fmi2OK;
-}
+UDMAP_FMI_EXPORT fmi2Status fmi2Reset(fmi2Component c) { CALL(core_reset(M, "fmi2Reset")) }
 
 /* ---------------------------------------------------------------- get and set */
 
-static fmi2Status get_values(fmi2Component c, const char *fn, VariableType type,
-                             const fmi2ValueReference vr[], size_t nvr, void *values) {
-  BEGIN(fn, MASK_GET)
-  if (nvr > 0 && (!vr || !values)) {
-    model_log(m, Error, "%s: NULL array argument", fn);
-    return fmi2Error;
-  }
-  Status status = OK;
-  unsigned logged = 0;
-  for (size_t i = 0; i < nvr; i++) {
-    double x;
-    Status st = model_get(m, fn, (ValueReference)vr[i], type, &x, &logged);
-    if (st > status) status = st;
-    switch (type) {
-      case REAL: ((fmi2Real *)values)[i] = x; break;
-      case INTEGER: ((fmi2Integer *)values)[i] = (fmi2Integer)x; break;
-      case BOOLEAN: ((fmi2Boolean *)values)[i] = x != 0.0 ? fmi2True : fmi2False; break;
-    }
-  }
-  return (fmi2Status)status;
-}
-
-/* All values are checked before any is taken: a rejected call changes nothing. */
-static fmi2Status set_values(fmi2Component c, const char *fn, VariableType type,
-                             const fmi2ValueReference vr[], size_t nvr, const void *values) {
-  BEGIN(fn, MASK_SET)
-  if (nvr > 0 && (!vr || !values)) {
-    model_log(m, Error, "%s: NULL array argument", fn);
-    return fmi2Error;
-  }
-  for (int apply = 0; apply < 2; apply++) {
-    Status status = OK;
-    for (size_t i = 0; i < nvr; i++) {
-      double x = 0.0;
-      switch (type) {
-        case REAL: x = ((const fmi2Real *)values)[i]; break;
-        case INTEGER: x = ((const fmi2Integer *)values)[i]; break;
-        case BOOLEAN: x = ((const fmi2Boolean *)values)[i] != fmi2False ? 1.0 : 0.0; break;
-      }
-      Status st = model_set(m, fn, (ValueReference)vr[i], type, x, apply != 0);
-      if (st > status) status = st;
-    }
-    if (status != OK) return (fmi2Status)status;
-  }
-  return fmi2OK;
-}
-
 UDMAP_FMI_EXPORT fmi2Status fmi2GetReal(fmi2Component c, const fmi2ValueReference vr[],
                                         size_t nvr, fmi2Real value[]) {
-  return get_values(c, "fmi2GetReal", REAL, vr, nvr, value);
+  CALL(core_get(M, "fmi2GetReal", REAL, ELEM_FLOAT64, VR(vr), nvr, value, nvr))
 }
 
 UDMAP_FMI_EXPORT fmi2Status fmi2GetInteger(fmi2Component c, const fmi2ValueReference vr[],
                                            size_t nvr, fmi2Integer value[]) {
-  return get_values(c, "fmi2GetInteger", INTEGER, vr, nvr, value);
+  CALL(core_get(M, "fmi2GetInteger", INTEGER, ELEM_INT, VR(vr), nvr, value, nvr))
 }
 
 UDMAP_FMI_EXPORT fmi2Status fmi2GetBoolean(fmi2Component c, const fmi2ValueReference vr[],
                                            size_t nvr, fmi2Boolean value[]) {
-  return get_values(c, "fmi2GetBoolean", BOOLEAN, vr, nvr, value);
+  CALL(core_get(M, "fmi2GetBoolean", BOOLEAN, ELEM_INT, VR(vr), nvr, value, nvr))
 }
 
 UDMAP_FMI_EXPORT fmi2Status fmi2GetString(fmi2Component c, const fmi2ValueReference vr[],
                                           size_t nvr, fmi2String value[]) {
-  BEGIN("fmi2GetString", MASK_GET)
-  (void)vr;
-  (void)value;
-  if (nvr == 0) return fmi2OK;
-  model_log(m, Error, "fmi2GetString: the FMU has no String variables");
-  return fmi2Error;
+  (void)vr, (void)value;
+  CALL(core_no_variables(M, "fmi2GetString", false, nvr))
 }
 
 UDMAP_FMI_EXPORT fmi2Status fmi2SetReal(fmi2Component c, const fmi2ValueReference vr[],
                                         size_t nvr, const fmi2Real value[]) {
-  return set_values(c, "fmi2SetReal", REAL, vr, nvr, value);
+  CALL(core_set(M, "fmi2SetReal", REAL, ELEM_FLOAT64, VR(vr), nvr, value, nvr))
 }
 
 UDMAP_FMI_EXPORT fmi2Status fmi2SetInteger(fmi2Component c, const fmi2ValueReference vr[],
                                            size_t nvr, const fmi2Integer value[]) {
-  return set_values(c, "fmi2SetInteger", INTEGER, vr, nvr, value);
+  CALL(core_set(M, "fmi2SetInteger", INTEGER, ELEM_INT, VR(vr), nvr, value, nvr))
 }
 
 UDMAP_FMI_EXPORT fmi2Status fmi2SetBoolean(fmi2Component c, const fmi2ValueReference vr[],
                                            size_t nvr, const fmi2Boolean value[]) {
-  return set_values(c, "fmi2SetBoolean", BOOLEAN, vr, nvr, value);
+  CALL(core_set(M, "fmi2SetBoolean", BOOLEAN, ELEM_INT, VR(vr), nvr, value, nvr))
 }
 
 UDMAP_FMI_EXPORT fmi2Status fmi2SetString(fmi2Component c, const fmi2ValueReference vr[],
                                           size_t nvr, const fmi2String value[]) {
-  BEGIN("fmi2SetString", MASK_SET)
-  (void)vr;
-  (void)value;
-  if (nvr == 0) return fmi2OK;
-  model_log(m, Error, "fmi2SetString: the FMU has no String variables");
-  return fmi2Error;
+  (void)vr, (void)value;
+  CALL(core_no_variables(M, "fmi2SetString", true, nvr))
 }
 
-/* ---------------------------------------------------------------- FMU state */
+/* ---------------------------------------------------------------- FMU state, derivatives */
 
 UDMAP_FMI_EXPORT fmi2Status fmi2GetFMUstate(fmi2Component c, fmi2FMUstate *FMUstate) {
-  BEGIN("fmi2GetFMUstate", ALL_STATES)
-  if (!FMUstate) {
-    model_log(m, Error, "fmi2GetFMUstate: FMUstate is NULL");
-    return fmi2Error;
-  }
-  ModelSnapshot *s = model_snapshot(m, (ModelSnapshot *)*FMUstate);
-  if (!s) return fmi2Error;
-  *FMUstate = s;
-  return fmi2OK;
+  CALL(core_get_state(M, "fmi2GetFMUstate", FMUstate))
 }
 
 UDMAP_FMI_EXPORT fmi2Status fmi2SetFMUstate(fmi2Component c, fmi2FMUstate FMUstate) {
-  BEGIN("fmi2SetFMUstate", ALL_STATES)
-  return (fmi2Status)model_restore(m, "fmi2SetFMUstate", (const ModelSnapshot *)FMUstate);
+  CALL(core_set_state(M, "fmi2SetFMUstate", FMUstate))
 }
 
 UDMAP_FMI_EXPORT fmi2Status fmi2FreeFMUstate(fmi2Component c, fmi2FMUstate *FMUstate) {
-  BEGIN("fmi2FreeFMUstate", ALL_STATES)
-  if (FMUstate) {
-    free(*FMUstate);
-    *FMUstate = NULL;
-  }
-  return fmi2OK;
+  CALL(core_free_state(M, "fmi2FreeFMUstate", FMUstate))
 }
 
 UDMAP_FMI_EXPORT fmi2Status fmi2SerializedFMUstateSize(fmi2Component c, fmi2FMUstate FMUstate,
                                                        size_t *size) {
-  BEGIN("fmi2SerializedFMUstateSize", ALL_STATES)
   (void)FMUstate;
-  if (!size) {
-    model_log(m, Error, "fmi2SerializedFMUstateSize: size is NULL");
-    return fmi2Error;
-  }
-  *size = sizeof(ModelSnapshot);
-  return fmi2OK;
+  CALL(core_serialized_state_size(M, "fmi2SerializedFMUstateSize", size))
 }
 
 UDMAP_FMI_EXPORT fmi2Status fmi2SerializeFMUstate(fmi2Component c, fmi2FMUstate FMUstate,
                                                   fmi2Byte serializedState[], size_t size) {
-  BEGIN("fmi2SerializeFMUstate", ALL_STATES)
-  if (!FMUstate || !serializedState || size != sizeof(ModelSnapshot)) {
-    model_log(m, Error, "fmi2SerializeFMUstate: needs a state and a buffer of %zu bytes "
-              "(got %zu)", sizeof(ModelSnapshot), size);
-    return fmi2Error;
-  }
-  memcpy(serializedState, FMUstate, sizeof(ModelSnapshot));
-  return fmi2OK;
+  CALL(core_serialize_state(M, "fmi2SerializeFMUstate", FMUstate, serializedState, size))
 }
 
 UDMAP_FMI_EXPORT fmi2Status fmi2DeSerializeFMUstate(fmi2Component c,
                                                     const fmi2Byte serializedState[],
                                                     size_t size, fmi2FMUstate *FMUstate) {
-  BEGIN("fmi2DeSerializeFMUstate", ALL_STATES)
-  if (!FMUstate) {
-    model_log(m, Error, "fmi2DeSerializeFMUstate: FMUstate is NULL");
-    return fmi2Error;
-  }
-  Status st = model_check_snapshot(m, "fmi2DeSerializeFMUstate", serializedState, size);
-  if (st != OK) return (fmi2Status)st;
-  ModelSnapshot *s = *FMUstate ? (ModelSnapshot *)*FMUstate : malloc(sizeof *s);
-  if (!s) {
-    model_log(m, Error, "fmi2DeSerializeFMUstate: out of memory");
-    return fmi2Error;
-  }
-  memcpy(s, serializedState, sizeof *s);
-  *FMUstate = s;
-  return fmi2OK;
+  CALL(core_deserialize_state(M, "fmi2DeSerializeFMUstate", serializedState, size, FMUstate))
 }
 
 UDMAP_FMI_EXPORT fmi2Status fmi2GetDirectionalDerivative(
     fmi2Component c, const fmi2ValueReference vUnknown_ref[], size_t nUnknown,
     const fmi2ValueReference vKnown_ref[], size_t nKnown, const fmi2Real dvKnown[],
     fmi2Real dvUnknown[]) {
-  BEGIN("fmi2GetDirectionalDerivative", ALL_STATES)
-  (void)vUnknown_ref, (void)nUnknown, (void)vKnown_ref, (void)nKnown, (void)dvKnown,
-      (void)dvUnknown;
-  model_log(m, Error, "fmi2GetDirectionalDerivative: not provided by this FMU");
-  return fmi2Error;
+  CALL(core_directional_derivative(M, "fmi2GetDirectionalDerivative", VR(vUnknown_ref),
+                                   nUnknown, VR(vKnown_ref), nKnown, dvKnown, nKnown,
+                                   dvUnknown, nUnknown))
+}
+
+/* ---------------------------------------------------------------- model exchange */
+
+UDMAP_FMI_EXPORT fmi2Status fmi2EnterEventMode(fmi2Component c) {
+  CALL(core_enter_event_mode(M, "fmi2EnterEventMode"))
+}
+
+UDMAP_FMI_EXPORT fmi2Status fmi2NewDiscreteStates(fmi2Component c, fmi2EventInfo *eventInfo) {
+  EventInfo e;
+  Status st = c ? core_update_discrete_states(M, "fmi2NewDiscreteStates", &e) : Error;
+  if (st == OK && eventInfo) {
+    eventInfo->newDiscreteStatesNeeded = e.discreteStatesNeedUpdate;
+    eventInfo->terminateSimulation = e.terminateSimulation;
+    eventInfo->nominalsOfContinuousStatesChanged = e.nominalsChanged;
+    eventInfo->valuesOfContinuousStatesChanged = e.valuesChanged;
+    eventInfo->nextEventTimeDefined = e.nextEventTimeDefined;
+    eventInfo->nextEventTime = e.nextEventTime;
+  }
+  return (fmi2Status)st;
+}
+
+UDMAP_FMI_EXPORT fmi2Status fmi2EnterContinuousTimeMode(fmi2Component c) {
+  CALL(core_enter_continuous_time_mode(M, "fmi2EnterContinuousTimeMode"))
+}
+
+UDMAP_FMI_EXPORT fmi2Status fmi2CompletedIntegratorStep(fmi2Component c,
+                                                        fmi2Boolean noSetFMUStatePriorToCurrentPoint,
+                                                        fmi2Boolean *enterEventMode,
+                                                        fmi2Boolean *terminateSimulation) {
+  (void)noSetFMUStatePriorToCurrentPoint;
+  bool event = false, stop = false;
+  Status st = c ? core_completed_integrator_step(M, "fmi2CompletedIntegratorStep", &event,
+                                                 &stop) : Error;
+  if (enterEventMode) *enterEventMode = event ? fmi2True : fmi2False;
+  if (terminateSimulation) *terminateSimulation = stop ? fmi2True : fmi2False;
+  return (fmi2Status)st;
+}
+
+UDMAP_FMI_EXPORT fmi2Status fmi2SetTime(fmi2Component c, fmi2Real time) {
+  CALL(core_set_time(M, "fmi2SetTime", time))
+}
+
+UDMAP_FMI_EXPORT fmi2Status fmi2SetContinuousStates(fmi2Component c, const fmi2Real x[],
+                                                    size_t nx) {
+  CALL(core_empty_vector(M, "fmi2SetContinuousStates", CORE_MASK_ME_RUN, x, nx))
+}
+
+UDMAP_FMI_EXPORT fmi2Status fmi2GetDerivatives(fmi2Component c, fmi2Real derivatives[],
+                                               size_t nx) {
+  CALL(core_empty_vector(M, "fmi2GetDerivatives", CORE_MASK_GET, derivatives, nx))
+}
+
+UDMAP_FMI_EXPORT fmi2Status fmi2GetEventIndicators(fmi2Component c, fmi2Real eventIndicators[],
+                                                   size_t ni) {
+  CALL(core_empty_vector(M, "fmi2GetEventIndicators", CORE_MASK_GET, eventIndicators, ni))
+}
+
+UDMAP_FMI_EXPORT fmi2Status fmi2GetContinuousStates(fmi2Component c, fmi2Real x[], size_t nx) {
+  CALL(core_empty_vector(M, "fmi2GetContinuousStates", CORE_MASK_GET, x, nx))
+}
+
+UDMAP_FMI_EXPORT fmi2Status fmi2GetNominalsOfContinuousStates(fmi2Component c,
+                                                              fmi2Real x_nominal[], size_t nx) {
+  CALL(core_empty_vector(M, "fmi2GetNominalsOfContinuousStates", CORE_MASK_GET, x_nominal, nx))
 }
 
 /* ---------------------------------------------------------------- co-simulation */
@@ -313,85 +236,62 @@ UDMAP_FMI_EXPORT fmi2Status fmi2SetRealInputDerivatives(fmi2Component c,
                                                         const fmi2ValueReference vr[],
                                                         size_t nvr, const fmi2Integer order[],
                                                         const fmi2Real value[]) {
-  BEGIN("fmi2SetRealInputDerivatives", MASK_SET)
   (void)vr, (void)order, (void)value;
-  if (nvr == 0) return fmi2OK;
-  model_log(m, Error, "fmi2SetRealInputDerivatives: the FMU cannot interpolate inputs");
-  return fmi2Error;
+  if (c && nvr == 0) return core_begin(M, "fmi2SetRealInputDerivatives", CORE_MASK_SET)
+                                ? fmi2OK : fmi2Error;
+  CALL(core_not_provided(M, "fmi2SetRealInputDerivatives", "the FMU cannot interpolate inputs"))
 }
 
 UDMAP_FMI_EXPORT fmi2Status fmi2GetRealOutputDerivatives(fmi2Component c,
                                                          const fmi2ValueReference vr[],
                                                          size_t nvr, const fmi2Integer order[],
                                                          fmi2Real value[]) {
-  BEGIN("fmi2GetRealOutputDerivatives", MASK_GET)
   (void)vr, (void)order, (void)value;
-  if (nvr == 0) return fmi2OK;
-  model_log(m, Error, "fmi2GetRealOutputDerivatives: the FMU provides no output derivatives");
-  return fmi2Error;
+  CALL(core_no_variables(M, "fmi2GetRealOutputDerivatives", false, nvr))
 }
 
 UDMAP_FMI_EXPORT fmi2Status fmi2DoStep(fmi2Component c, fmi2Real currentCommunicationPoint,
                                        fmi2Real communicationStepSize,
                                        fmi2Boolean noSetFMUStatePriorToCurrentPoint) {
-  BEGIN("fmi2DoStep", StepMode)
   (void)noSetFMUStatePriorToCurrentPoint;
-  return (fmi2Status)model_do_step(m, "fmi2DoStep", currentCommunicationPoint,
-                                   communicationStepSize);
+  CALL(core_do_step(M, "fmi2DoStep", currentCommunicationPoint, communicationStepSize))
 }
 
 UDMAP_FMI_EXPORT fmi2Status fmi2CancelStep(fmi2Component c) {
-  BEGIN("fmi2CancelStep", StepMode)
-  model_log(m, Error, "fmi2CancelStep: no step is pending (fmi2DoStep never returns "
-            "fmi2Pending)");
-  return fmi2Error;
+  CALL(core_not_provided(M, "fmi2CancelStep",
+                         "no step is pending (fmi2DoStep never returns fmi2Pending)"))
 }
 
-UDMAP_FMI_EXPORT fmi2Status fmi2GetStatus(fmi2Component c, const fmi2StatusKind s,
-                                          fmi2Status *value) {
-  BEGIN("fmi2GetStatus", StepMode | Terminated)
-  if (s == fmi2DoStepStatus && value) {
-    *value = fmi2OK;
+/* Status kinds: fmi2DoStepStatus (OK), fmi2LastSuccessfulTime and fmi2Terminated (false). */
+typedef enum { STATUS, REAL_STATUS, INTEGER_STATUS, BOOLEAN_STATUS, STRING_STATUS } StatusType;
+
+static fmi2Status get_status(fmi2Component c, const char *fn, StatusType t, fmi2StatusKind s,
+                             void *value) {
+  if (!c || !core_begin(M, fn, StepMode | Terminated)) return fmi2Error;
+  if (value && s == fmi2DoStepStatus && t == STATUS) {
+    *(fmi2Status *)value = fmi2OK;
     return fmi2OK;
   }
-  model_log(m, Discard, "fmi2GetStatus: status kind %d is not available", (int)s);
-  return fmi2Discard;
-}
-
-UDMAP_FMI_EXPORT fmi2Status fmi2GetRealStatus(fmi2Component c, const fmi2StatusKind s,
-                                              fmi2Real *value) {
-  BEGIN("fmi2GetRealStatus", StepMode | Terminated)
-  if (s == fmi2LastSuccessfulTime && value) {
-    *value = m->value[vr_time];
+  if (value && s == fmi2LastSuccessfulTime && t == REAL_STATUS) {
+    *(fmi2Real *)value = M->value[vr_time];
     return fmi2OK;
   }
-  model_log(m, Discard, "fmi2GetRealStatus: status kind %d is not available", (int)s);
-  return fmi2Discard;
-}
-
-UDMAP_FMI_EXPORT fmi2Status fmi2GetIntegerStatus(fmi2Component c, const fmi2StatusKind s,
-                                                 fmi2Integer *value) {
-  BEGIN("fmi2GetIntegerStatus", StepMode | Terminated)
-  (void)value;
-  model_log(m, Discard, "fmi2GetIntegerStatus: status kind %d is not available", (int)s);
-  return fmi2Discard;
-}
-
-UDMAP_FMI_EXPORT fmi2Status fmi2GetBooleanStatus(fmi2Component c, const fmi2StatusKind s,
-                                                 fmi2Boolean *value) {
-  BEGIN("fmi2GetBooleanStatus", StepMode | Terminated)
-  if (s == fmi2Terminated && value) {
-    *value = fmi2False;
+  if (value && s == fmi2Terminated && t == BOOLEAN_STATUS) {
+    *(fmi2Boolean *)value = fmi2False;
     return fmi2OK;
   }
-  model_log(m, Discard, "fmi2GetBooleanStatus: status kind %d is not available", (int)s);
+  model_log(M, Discard, "%s: status kind %d is not available", fn, (int)s);
   return fmi2Discard;
 }
 
-UDMAP_FMI_EXPORT fmi2Status fmi2GetStringStatus(fmi2Component c, const fmi2StatusKind s,
-                                                fmi2String *value) {
-  BEGIN("fmi2GetStringStatus", StepMode | Terminated)
-  (void)value;
-  model_log(m, Discard, "fmi2GetStringStatus: status kind %d is not available", (int)s);
-  return fmi2Discard;
-}
+#define STATUS_GETTER(Name, Type, kind)                                                   \
+  UDMAP_FMI_EXPORT fmi2Status fmi2Get##Name(fmi2Component c, const fmi2StatusKind s,        \
+                                            Type *value) {                                  \
+    return get_status(c, "fmi2Get" #Name, kind, s, value);                                  \
+  }
+
+STATUS_GETTER(Status, fmi2Status, STATUS)
+STATUS_GETTER(RealStatus, fmi2Real, REAL_STATUS)
+STATUS_GETTER(IntegerStatus, fmi2Integer, INTEGER_STATUS)
+STATUS_GETTER(BooleanStatus, fmi2Boolean, BOOLEAN_STATUS)
+STATUS_GETTER(StringStatus, fmi2String, STRING_STATUS)

@@ -1,5 +1,5 @@
 /*
- * The FMI 2.0 types and functions this FMU implements (co-simulation), declared here from
+ * The FMI 2.0 types and functions this FMU implements (model exchange and co-simulation), declared here from
  * the standard's interface so the build needs no external headers. The ABI test
  * (tests/python/test_fmu_abi.py) compiles fmi2Functions.c against the standard headers
  * shipped with fmpy instead; when those are included first, this file steps aside.
@@ -51,6 +51,15 @@ typedef struct {
   const fmi2ComponentEnvironment componentEnvironment;
 } fmi2CallbackFunctions;
 
+typedef struct {
+  fmi2Boolean newDiscreteStatesNeeded;
+  fmi2Boolean terminateSimulation;
+  fmi2Boolean nominalsOfContinuousStatesChanged;
+  fmi2Boolean valuesOfContinuousStatesChanged;
+  fmi2Boolean nextEventTimeDefined;
+  fmi2Real nextEventTime;
+} fmi2EventInfo;
+
 #define UDMAP_FMI2(ret, name, args) UDMAP_FMI_EXPORT ret name args;
 
 UDMAP_FMI2(const char *, fmi2GetTypesPlatform, (void))
@@ -93,6 +102,17 @@ UDMAP_FMI2(fmi2Status, fmi2DeSerializeFMUstate,
 UDMAP_FMI2(fmi2Status, fmi2GetDirectionalDerivative,
            (fmi2Component, const fmi2ValueReference[], size_t, const fmi2ValueReference[],
             size_t, const fmi2Real[], fmi2Real[]))
+UDMAP_FMI2(fmi2Status, fmi2EnterEventMode, (fmi2Component))
+UDMAP_FMI2(fmi2Status, fmi2NewDiscreteStates, (fmi2Component, fmi2EventInfo *))
+UDMAP_FMI2(fmi2Status, fmi2EnterContinuousTimeMode, (fmi2Component))
+UDMAP_FMI2(fmi2Status, fmi2CompletedIntegratorStep,
+           (fmi2Component, fmi2Boolean, fmi2Boolean *, fmi2Boolean *))
+UDMAP_FMI2(fmi2Status, fmi2SetTime, (fmi2Component, fmi2Real))
+UDMAP_FMI2(fmi2Status, fmi2SetContinuousStates, (fmi2Component, const fmi2Real[], size_t))
+UDMAP_FMI2(fmi2Status, fmi2GetDerivatives, (fmi2Component, fmi2Real[], size_t))
+UDMAP_FMI2(fmi2Status, fmi2GetEventIndicators, (fmi2Component, fmi2Real[], size_t))
+UDMAP_FMI2(fmi2Status, fmi2GetContinuousStates, (fmi2Component, fmi2Real[], size_t))
+UDMAP_FMI2(fmi2Status, fmi2GetNominalsOfContinuousStates, (fmi2Component, fmi2Real[], size_t))
 UDMAP_FMI2(fmi2Status, fmi2SetRealInputDerivatives,
            (fmi2Component, const fmi2ValueReference[], size_t, const fmi2Integer[],
             const fmi2Real[]))

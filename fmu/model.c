@@ -103,6 +103,8 @@ static const char *state_name(const ModelInstance *m) {
     case Instantiated: return "Instantiated";
     case InitializationMode: return "InitializationMode";
     case StepMode: return m->fmiVersion == 2 ? "slaveInitialized (step complete)" : "StepMode";
+    case EventMode: return "EventMode";
+    case ContinuousTimeMode: return "ContinuousTimeMode";
     case Terminated: return "Terminated";
   }
   return "unknown";
@@ -123,16 +125,18 @@ static void free_kernel_objects(ModelInstance *m) {
   udmap_delete_blade(&m->blade);
 }
 
-ModelInstance *model_new(const char *instanceName, int fmiVersion, LogEmitter emit,
-                         void *logger, void *environment, bool loggingOn) {
+ModelInstance *model_new(const char *instanceName, int fmiVersion, InterfaceType type,
+                         LogEmitter emit, void *logger, void *environment, bool loggingOn) {
   ModelInstance *m = calloc(1, sizeof *m);
   if (!m) return NULL;
   m->fmiVersion = fmiVersion;
+  m->type = type;
   m->emit = emit;
   m->logger = logger;
   m->environment = environment;
   m->logMask = loggingOn ? LOG_ALL : LOG_DEFAULT;
   m->instanceName = strdup(instanceName ? instanceName : "");
+  udmap_fmu_token(m->token, sizeof m->token);
   m->err = udmap_new_error();
   if (!m->instanceName || !m->err) {
     model_free(m);
@@ -144,16 +148,34 @@ ModelInstance *model_new(const char *instanceName, int fmiVersion, LogEmitter em
 
 void model_free(ModelInstance *m) {
   if (!m) return;
+  model_free(m->scratch);
   free_kernel_objects(m);
+  if (m->owns_config) case_free(m->config);
   udmap_delete_error(&m->err);
   free(m->instanceName);
   free(m);
 }
 
+static double start_value(const ModelInstance *m, int vr) {
+  return m->config ? m->config->start[vr] : udmap_variables[vr].start;
+}
+
+bool model_has(const ModelInstance *m, unsigned vr) {
+  return vr < UDMAP_NVARS && (!m->config || m->config->present[vr]);
+}
+
+void model_set_case(ModelInstance *m, CaseConfig *config, bool owns) {
+  if (m->owns_config) case_free(m->config);
+  m->config = config;
+  m->owns_config = owns;
+  if (config) memcpy(m->token, config->token, sizeof m->token);
+  model_reset(m);
+}
+
 void model_reset(ModelInstance *m) {
   free_kernel_objects(m);
   for (int i = 0; i < UDMAP_NVARS; i++)
-    m->value[i] = udmap_variables[i].causality == OUTPUT ? 0.0 : udmap_variables[i].start;
+    m->value[i] = udmap_variables[i].causality == OUTPUT ? 0.0 : start_value(m, i);
   m->done = 0;
   m->damper_CF = NAN;
   m->state = Instantiated;
@@ -205,6 +227,17 @@ static Status need(ModelInstance *m, Stage s, const Stage *deps, int ndeps) {
 static Status build_blade(ModelInstance *m) {
   udmap_delete_model(&m->model);
   udmap_delete_blade(&m->blade);
+  const CaseConfig *c = m->config;
+  if (c && c->blade == BLADE_MATRICES) {
+    /* the kernel's Matrix Market reader on the files in resources/ */
+    int stat = udmap_new_blade_matrices(m->err, c->M, c->K, c->C[0] ? c->C : NULL, c->gamma_dof,
+                                        c->exc_dof, c->stress_K[0] ? c->stress_K : NULL,
+                                        c->stress_M[0] ? c->stress_M : NULL, V(zeta), &m->blade);
+    if (stat != UDMAP_OK)
+      return kernel_failure(m, STAGE_BLADE, stat, "udmap_new_blade_matrices");
+    model_log_category(m, LOG_EVENTS, OK, "blade read from %s", c->K);
+    return OK;
+  }
   udmap_beam_params p = {
     .E = V(E), .rho = V(rho), .zeta = V(zeta),
     .neck_L = V(neck_L), .neck_h = V(neck_h), .neck_b = V(neck_b),
@@ -222,7 +255,7 @@ static Status build_blade(ModelInstance *m) {
 /* The damper is always traced at the start value of CF and rescaled to the current CF
  * (PHYSICS.md 2.3), so its table is a function of the current values alone, whatever the
  * order of the changes that led to them. */
-static double reference_CF(void) { return udmap_variables[vr_CF].start; }
+static double reference_CF(const ModelInstance *m) { return start_value(m, vr_CF); }
 
 /* Releases the model and marks it (and what it computed) to be built again. */
 static void drop_model(ModelInstance *m) {
@@ -230,9 +263,21 @@ static void drop_model(ModelInstance *m) {
   m->done &= ~(BIT(STAGE_MODEL) | BIT(STAGE_LIMIT) | BIT(STAGE_POINT));
 }
 
+/* The damper of a case that is not asymmetric: a Jenkins element or a measured table. */
+static int new_case_damper(ModelInstance *m, udmap_damper *d, const char **call) {
+  const CaseConfig *c = m->config;
+  if (c->damper == DAMPER_JENKINS) {
+    *call = "udmap_new_damper_jenkins";
+    return udmap_new_damper_jenkins(m->err, c->kt, c->M_slip, d);
+  }
+  *call = "udmap_new_damper_table";
+  return udmap_new_damper_table(m->err, c->n, c->gamma, c->k_re, c->k_im, c->has_delta_M,
+                                c->delta_M, d);
+}
+
 static Status build_damper(ModelInstance *m) {
   udmap_asymmetric_params p = {
-    .CF = reference_CF(), .mu = V(mu), .pitch = V(pitch), .y_P = V(y_P),
+    .CF = reference_CF(m), .mu = V(mu), .pitch = V(pitch), .y_P = V(y_P),
     .beta_L_deg = V(beta_L_deg), .beta_R_deg = V(beta_R_deg),
     .flat1_x = V(flat1_x), .flat1_y = V(flat1_y), .flat2_x = V(flat2_x),
     .flat2_y = V(flat2_y), .curved_x = V(curved_x), .curved_y = V(curved_y),
@@ -240,13 +285,16 @@ static Status build_damper(ModelInstance *m) {
     .kt_curved = V(kt_curved),
   };
   udmap_damper fresh = NULL;
-  int stat = udmap_new_damper_asymmetric(m->err, &p, &fresh);
+  const char *call = "udmap_new_damper_asymmetric";
+  int stat = m->config && m->config->damper != DAMPER_ASYMMETRIC
+                 ? new_case_damper(m, &fresh, &call)
+                 : udmap_new_damper_asymmetric(m->err, &p, &fresh);
   if (stat != UDMAP_OK) {
     /* the model must not keep borrowing a damper that no longer matches the values */
     drop_model(m);
     udmap_delete_damper(&m->damper);
     m->damper_CF = NAN;
-    return kernel_failure(m, STAGE_DAMPER, stat, "udmap_new_damper_asymmetric");
+    return kernel_failure(m, STAGE_DAMPER, stat, call);
   }
   model_log_category(m, LOG_EVENTS, OK, "damper traced (mu = %g, CF = %g N)", p.mu, p.CF);
   if (m->model && (m->done & BIT(STAGE_MODEL))) {
@@ -269,7 +317,7 @@ static Status apply_CF(ModelInstance *m) {
   static const Stage deps[] = {STAGE_DAMPER};
   Status st = need(m, STAGE_CF, deps, 1);
   if (st >= Discard) return st;
-  if (V(CF) == m->damper_CF) return OK;
+  if (!model_has(m, vr_CF) || V(CF) == m->damper_CF) return OK; /* only the asymmetric has CF */
   int stat = udmap_damper_set_CF(m->err, m->damper, V(CF));
   if (stat != UDMAP_OK) {
     m->damper_CF = NAN; /* unknown: set it again next time */
@@ -290,6 +338,7 @@ static Status build_model(ModelInstance *m) {
                    V(f_max));
   udmap_analysis a;
   udmap_analysis_defaults(&a);
+  if (m->config) a = m->config->analysis; /* the case's settings, as the command line */
   a.f_min = V(f_min);
   a.f_max = V(f_max);
   a.sigma_all = V(sigma_all);
@@ -297,7 +346,7 @@ static Status build_model(ModelInstance *m) {
    * for the FMU's beam blades, whose bare modes are all computed, and the same peaks as the
    * default to rounding (the start is only where the peak search begins); it keeps a change
    * of mu or of a contact stiffness at some 0.1 ms instead of 2 ms. */
-  a.eigen_method = 2;
+  if (!m->config) a.eigen_method = 2;
   int stat = udmap_new_model(m->err, m->blade, m->damper, &a, &m->model);
   if (stat != UDMAP_OK) return kernel_failure(m, STAGE_MODEL, stat, "udmap_new_model");
   model_log_category(m, LOG_EVENTS, OK, "model built over [%g, %g] Hz", a.f_min, a.f_max);
@@ -479,7 +528,7 @@ static void invalid_message(const VariableInfo *v, double x, char *buf, size_t n
 }
 
 static Status check_vr(ModelInstance *m, const char *fn, ValueReference vr, VariableType type) {
-  if ((unsigned)vr >= UDMAP_NVARS) {
+  if (!model_has(m, (unsigned)vr)) {
     model_log(m, Error, "%s: unknown value reference %u", fn, (unsigned)vr);
     return Error;
   }
@@ -516,7 +565,22 @@ Status model_set(ModelInstance *m, const char *fn, ValueReference vr, VariableTy
   return OK;
 }
 
-static Status output_value(ModelInstance *m, ValueReference vr, double *x, Stage *stage) {
+const char *model_stage_message(const ModelInstance *m, Stage stage) {
+  return m->stage_message[stage];
+}
+
+void model_copy_values(ModelInstance *m, const ModelInstance *src) {
+  for (int i = 0; i < UDMAP_NVARS; i++) {
+    const VariableInfo *v = &udmap_variables[i];
+    if (v->causality != INPUT && v->causality != PARAMETER) continue;
+    if (m->value[i] != src->value[i]) {
+      m->value[i] = src->value[i];
+      m->done &= ~invalidates[v->group];
+    }
+  }
+}
+
+Status model_output(ModelInstance *m, ValueReference vr, double *x, Stage *stage) {
   const VariableInfo *v = &udmap_variables[vr];
   *stage = v->group == GROUP_POINT ? STAGE_POINT : STAGE_LIMIT;
   Status st = run(m, *stage);
@@ -556,7 +620,7 @@ Status model_get(ModelInstance *m, const char *fn, ValueReference vr, VariableTy
     return OK;
   }
   Stage stage;
-  st = output_value(m, vr, value, &stage);
+  st = model_output(m, vr, value, &stage);
   if (st != OK && !(*logged & BIT(stage))) {
     *logged |= BIT(stage);
     model_log(m, st, "%s: %s", fn, m->stage_message[stage]);
@@ -607,7 +671,7 @@ ModelSnapshot *model_snapshot(ModelInstance *m, ModelSnapshot *reuse) {
   memset(s, 0, sizeof *s);
   s->magic = SNAPSHOT_MAGIC;
   s->size = sizeof *s;
-  udmap_fmu_token(s->token, sizeof s->token);
+  memcpy(s->token, m->token, sizeof s->token);
   memcpy(s->value, m->value, sizeof s->value);
   return s;
 }
@@ -620,7 +684,7 @@ Status model_check_snapshot(ModelInstance *m, const char *fn, const void *data, 
     return Error;
   }
   memcpy(&s, data, sizeof s);
-  udmap_fmu_token(token, sizeof token);
+  memcpy(token, m->token, sizeof token);
   if (s.magic != SNAPSHOT_MAGIC || s.size != sizeof s ||
       memcmp(s.token, token, sizeof token) != 0) {
     model_log(m, Error, "%s: the state was not saved by this FMU (magic, size or token "
@@ -643,13 +707,9 @@ Status model_check_snapshot(ModelInstance *m, const char *fn, const void *data, 
 Status model_restore(ModelInstance *m, const char *fn, const ModelSnapshot *s) {
   Status st = model_check_snapshot(m, fn, s, s ? (size_t)s->size : 0);
   if (st != OK) return st;
-  for (int i = 0; i < UDMAP_NVARS; i++) {
-    const VariableInfo *v = &udmap_variables[i];
-    if (v->causality == OUTPUT) continue;
-    if (m->value[i] != s->value[i]) {
-      m->value[i] = s->value[i];
-      m->done &= ~invalidates[v->group];
-    }
-  }
+  ModelInstance src; /* only its values are read */
+  memcpy(src.value, s->value, sizeof src.value);
+  model_copy_values(m, &src);
+  m->value[vr_time] = s->value[vr_time];
   return OK;
 }

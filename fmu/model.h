@@ -10,6 +10,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "case.h"
 #include "config.h"
 #include "udmap.h"
 
@@ -21,9 +22,14 @@ typedef enum {
   StartAndEnd = 1 << 0,
   Instantiated = 1 << 1,
   InitializationMode = 1 << 2,
-  StepMode = 1 << 3,
-  Terminated = 1 << 4
+  StepMode = 1 << 3,           /* co-simulation */
+  EventMode = 1 << 4,          /* model exchange */
+  ContinuousTimeMode = 1 << 5, /* model exchange */
+  Terminated = 1 << 6
 } ModelState;
+
+/* The interface an instance was created for (same numbers as fmi2Type). */
+typedef enum { ModelExchange, CoSimulation } InterfaceType;
 
 /* Log categories (bits), named as in the modelDescription's LogCategories. */
 enum {
@@ -58,6 +64,7 @@ struct ModelInstance {
   /* FMI bookkeeping */
   char *instanceName;
   int fmiVersion; /* 2 or 3 */
+  InterfaceType type;
   ModelState state;
   LogEmitter emit;
   void *logger;      /* the importer's callback, called by emit */
@@ -65,6 +72,12 @@ struct ModelInstance {
   unsigned logMask;  /* enabled LOG_* categories */
   bool stopTimeDefined;
   double stopTime;
+
+  /* the case of an FMU made by `udmap fmu` (NULL: the generic FMU of blade A), and the
+   * instantiation token the instance answers to */
+  CaseConfig *config;
+  bool owns_config;
+  char token[40];
 
   /* values of all variables by value reference (time at vr_time); outputs are computed */
   double value[UDMAP_NVARS];
@@ -87,13 +100,21 @@ struct ModelInstance {
 
   /* counters, for tests and diagnostics (not part of the FMU state) */
   unsigned long stage_runs[NSTAGES];
+
+  /* a second instance for the finite differences of the directional derivatives, so that
+   * the caches of this one are kept (created on first use, derivatives.c) */
+  struct ModelInstance *scratch;
 };
 
-ModelInstance *model_new(const char *instanceName, int fmiVersion, LogEmitter emit,
-                         void *logger, void *environment, bool loggingOn);
+ModelInstance *model_new(const char *instanceName, int fmiVersion, InterfaceType type,
+                         LogEmitter emit, void *logger, void *environment, bool loggingOn);
 void model_free(ModelInstance *m);
 /* Start values, no kernel objects, state Instantiated. */
 void model_reset(ModelInstance *m);
+/* Makes m the FMU of a case (taking ownership if owns) and resets it to the case's starts. */
+void model_set_case(ModelInstance *m, CaseConfig *config, bool owns);
+/* Whether variable vr exists in this FMU (a case FMU leaves out what does not apply). */
+bool model_has(const ModelInstance *m, unsigned vr);
 
 /* printf-style message through the logger, if its category is enabled. */
 void model_log(ModelInstance *m, Status status, const char *fmt, ...)
@@ -119,6 +140,20 @@ Status model_get(ModelInstance *m, const char *fn, ValueReference vr, VariableTy
 
 /* Advances time over a communication step (the outputs are quasi-steady). */
 Status model_do_step(ModelInstance *m, const char *fn, double t, double h);
+
+/* The value of output vr for the current values (computed on demand) and the stage whose
+ * status and message it carries. */
+Status model_output(ModelInstance *m, ValueReference vr, double *value, Stage *stage);
+const char *model_stage_message(const ModelInstance *m, Stage stage);
+/* Copies the values of all inputs and parameters of src into m (invalidating what changed). */
+void model_copy_values(ModelInstance *m, const ModelInstance *src);
+
+/* Directional derivative (derivatives.c): sensitivity[i] = sum_j d unknowns[i] / d knowns[j]
+ * seed[j], the unknowns real outputs, the knowns real inputs or tunable parameters. */
+Status model_directional_derivative(ModelInstance *m, const char *fn,
+                                    const unsigned unknowns[], size_t nUnknowns,
+                                    const unsigned knowns[], size_t nKnowns,
+                                    const double seed[], double sensitivity[]);
 
 /* FMU state: the values of all variables and the time, as one plain block. */
 typedef struct {

@@ -1,5 +1,5 @@
 """Helpers of the FMU tests: where the FMUs are, and a direct ctypes importer for FMI 2.0 and
-FMI 3.0 co-simulation that returns status codes (instead of raising) and records every log
+FMI 3.0, co-simulation or model exchange, that returns status codes (instead of raising) and records every log
 message, so that the tests can check statuses and messages exactly.
 """
 from __future__ import annotations
@@ -70,8 +70,9 @@ class Instance:
     are collected in `self.logs` as (status, category, message)."""
 
     def __init__(self, version: int, name: str = "udmap", logging_on: bool = False,
-                 token: str | None = None):
+                 token: str | None = None, model_exchange: bool = False):
         self.version = version
+        self.model_exchange = model_exchange
         self.md = description(version)
         self.vars = {v.name: v for v in self.md.modelVariables}
         self.dll = ctypes.CDLL(str(binary(version)))
@@ -88,10 +89,18 @@ class Instance:
             f.restype = ctypes.c_void_p
             f.argtypes = [ctypes.c_char_p, ctypes.c_int, ctypes.c_char_p, ctypes.c_char_p,
                           ctypes.POINTER(_Fmi2Callbacks), ctypes.c_int, ctypes.c_int]
-            self.c = f(name.encode(), 1, token.encode(), resource,
+            self.c = f(name.encode(), 0 if model_exchange else 1, token.encode(), resource,
                        ctypes.byref(self._callbacks), 0, int(logging_on))
         else:
             self._logger = _FMI3_LOGGER(self._log3)
+        if version == 3 and model_exchange:
+            f = self.dll.fmi3InstantiateModelExchange
+            f.restype = ctypes.c_void_p
+            f.argtypes = [ctypes.c_char_p, ctypes.c_char_p, ctypes.c_char_p, ctypes.c_bool,
+                          ctypes.c_bool, ctypes.c_void_p, _FMI3_LOGGER]
+            self.c = f(name.encode(), token.encode(), resource, False, logging_on, None,
+                       self._logger)
+        elif version == 3:
             f = self.dll.fmi3InstantiateCoSimulation
             f.restype = ctypes.c_void_p
             f.argtypes = [ctypes.c_char_p, ctypes.c_char_p, ctypes.c_char_p, ctypes.c_bool,
@@ -160,6 +169,12 @@ class Instance:
                                                      ctypes.c_bool, bp, bp, bp,
                                                      ctypes.POINTER(ctypes.c_double)])
         self.f_exit = self._fn(f"{p}ExitInitializationMode", [])
+        dd = [vr_p, ctypes.c_size_t, vr_p, ctypes.c_size_t, ctypes.POINTER(ctypes.c_double)]
+        if self.version == 3:
+            dd += [ctypes.c_size_t, ctypes.POINTER(ctypes.c_double), ctypes.c_size_t]
+        else:
+            dd += [ctypes.POINTER(ctypes.c_double)]
+        self.f_derivative = self._fn(f"{p}GetDirectionalDerivative", dd)
 
     def _kind(self, name):
         return self.vars[name].type
@@ -214,6 +229,19 @@ class Instance:
         names = [v.name for v in self.md.modelVariables if v.causality == "output"]
         st, vals = self.get(*names)
         return st, dict(zip(names, vals))
+
+    def derivative(self, unknowns, knowns, seed) -> tuple[int, list]:
+        """Directional derivative of the named real outputs along `seed` over the named knowns."""
+        nu, nk = len(unknowns), len(knowns)
+        u = (ctypes.c_uint32 * nu)(*[self.vars[n].valueReference for n in unknowns])
+        k = (ctypes.c_uint32 * nk)(*[self.vars[n].valueReference for n in knowns])
+        sd = (ctypes.c_double * nk)(*seed)
+        out = (ctypes.c_double * nu)()
+        if self.version == 3:
+            st = self.f_derivative(self.c, u, nu, k, nk, sd, nk, out, nu)
+        else:
+            st = self.f_derivative(self.c, u, nu, k, nk, sd, out)
+        return st, list(out)
 
     def step(self, h: float) -> int:
         if self.version == 2:
@@ -273,6 +301,20 @@ def cli(*args) -> dict:
                        env=env, capture_output=True, text=True, timeout=600)
     assert r.returncode == 0, f"udmap {' '.join(map(str, args))} failed: {r.stderr}"
     return json.loads(r.stdout)
+
+
+def step_table(segments, duration: float):
+    """An fmpy input table that holds each (F_E, CF, mu, f_exc) for `duration` seconds and then
+    steps: segments are (CF, mu, f_exc, [F_E, ...]). Returns the table and its end time."""
+    import numpy as np
+    rows, t = [], 0.0
+    for CF, mu, f_exc, forces in segments:
+        for F in forces:
+            rows.append((t, F, CF, mu, f_exc))
+            t += duration
+            rows.append((t, F, CF, mu, f_exc))
+    dtype = [("time", float), ("F_E", float), ("CF", float), ("mu", float), ("f_exc", float)]
+    return np.array(rows, dtype=dtype), t
 
 
 def case_with(tmp_path: Path, name: str = "case", **damper) -> Path:

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import json
 import re
+import xml.etree.ElementTree as ET
 import zipfile
 
 import pytest
@@ -75,10 +76,28 @@ def test_archive_layout(version):
 @pytest.mark.parametrize("version", [2, 3])
 def test_variables_follow_interfaces(version):
     md = description(version)
-    assert md.coSimulation.modelIdentifier == "udmap"
-    assert md.modelExchange is None
+    # both interfaces from one binary, both with FMU state and directional derivatives (read
+    # from the XML: fmpy does not parse every capability flag)
+    with zipfile.ZipFile(FMUS[version]) as zf:
+        root = ET.fromstring(zf.read("modelDescription.xml"))
+    suffix = "" if version == 2 else "s"
+    state = "FMUstate" if version == 2 else "FMUState"
+    for tag in ("ModelExchange", "CoSimulation"):
+        element = root.find(tag)
+        assert element is not None, tag
+        assert element.get("modelIdentifier") == "udmap"
+        for flag in (f"canGetAndSet{state}", f"canSerialize{state}",
+                     f"providesDirectionalDerivative{suffix}"):
+            assert element.get(flag) == "true", (tag, flag)
     assert md.coSimulation.canHandleVariableCommunicationStepSize
-    assert md.coSimulation.canGetAndSetFMUstate and md.coSimulation.canSerializeFMUstate
+    # model exchange: algebraic, no states, no event indicators, no completed steps needed
+    assert md.numberOfContinuousStates == 0 and md.numberOfEventIndicators == 0
+    assert not md.derivatives and not md.eventIndicators
+    me = root.find("ModelExchange")
+    if version == 2:
+        assert me.get("completedIntegratorStepNotNeeded") == "true"
+    else:
+        assert me.get("needsCompletedIntegratorStep") == "false"
     variables = {v.name: v for v in md.modelVariables}
     got_inputs = {n for n, v in variables.items() if v.causality == "input"}
     got_params = {n for n, v in variables.items() if v.causality == "parameter"}
@@ -137,6 +156,9 @@ def test_model_structure(version):
     assert deps["F_lim"] == set(INPUTS) - {"F_E", "f_exc"}
     assert deps["lift_off"] == set(INPUTS) - {"F_E", "f_exc"}
     assert deps["F_ratio"] == set(INPUTS) - {"f_exc"}
+    # every dependency is declared with its kind: non-linear, "dependent"
+    for name, u in outputs.items():
+        assert u.dependenciesKind == ["dependent"] * len(u.dependencies), name
 
 
 def test_fmi2_and_fmi3_descriptions_agree():

@@ -10,7 +10,7 @@ import numpy as np
 import pytest
 from fmpy import simulate_fmu
 
-from fmu_harness import FMUS, case_with, cli
+from fmu_harness import FMUS, case_with, cli, step_table
 
 FORCES = [0.5, 1.0, 2.0, 3.5, 5.0, 8.0, 12.0, 20.0]
 # (CF, mu, f_exc, forces): a CF change alone (rescale), then mu changes, then a frequency
@@ -25,20 +25,9 @@ OUTPUTS = ["gamma_P", "sigma_a", "F_lim", "f_res", "u_E", "k_re", "k_im", "F_rat
 INPUTS = ["F_E", "CF", "mu", "f_exc"]
 
 
-def input_table():
-    rows, t = [], 0.0
-    for CF, mu, f_exc, forces in SEGMENTS:
-        for F in forces:
-            rows.append((t, F, CF, mu, f_exc))
-            t += DURATION
-            rows.append((t, F, CF, mu, f_exc))
-    dtype = [("time", float), ("F_E", float), ("CF", float), ("mu", float), ("f_exc", float)]
-    return np.array(rows, dtype=dtype), t
-
-
 @pytest.fixture(scope="module")
 def results():
-    table, stop = input_table()
+    table, stop = step_table(SEGMENTS, DURATION)
     out = {}
     for version in (2, 3):
         out[version] = simulate_fmu(str(FMUS[version]), stop_time=stop - 1e-9,

@@ -79,6 +79,36 @@ lib.udmap_get_error.restype = None
 lib.udmap_get_error.argtypes = [ctypes.c_void_p, ctypes.c_char_p, ctypes.c_int]
 
 
+FMU_NAMES = {2: "udmap.fmu", 3: "udmap-fmi3.fmu"}
+_PACKAGE_DIR = Path(__file__).resolve().parent
+
+
+def _fmu_candidates(name: str):
+    build = os.environ.get("UDMAP_BUILD_DIR")
+    if build:
+        yield Path(build) / name
+    yield _PACKAGE_DIR.parents[2] / "build" / name  # this checkout's build tree
+    yield _PACKAGE_DIR / "fmu" / name  # the package's own data (a wheel)
+    prefix = os.environ.get("UDMAP_PREFIX")
+    if prefix:
+        yield Path(prefix) / "share" / "udmap" / name  # cmake --install
+
+
+def fmu_path(fmi_version: int = 2) -> Path:
+    """The generic FMU of FMI version 2 or 3 (``udmap.fmu``, ``udmap-fmi3.fmu``): from
+    ``UDMAP_BUILD_DIR``, then the checkout's ``build/``, then the package's data directory
+    ``udmap/fmu/`` (pip-installed wheel), then ``UDMAP_PREFIX/share/udmap``."""
+    if fmi_version not in FMU_NAMES:
+        raise InputError(f"--fmi must be 2 or 3, got {fmi_version!r}")
+    tried = []
+    for path in _fmu_candidates(FMU_NAMES[fmi_version]):
+        if path.is_file():
+            return path
+        tried.append(str(path))
+    raise InputError(f"the FMI {fmi_version} FMU is not built ('make build' writes it, a wheel "
+                     f"carries it in udmap/fmu/); tried: {', '.join(tried)}")
+
+
 def declare(name: str, argtypes, restype=ctypes.c_int):
     """Declares a C API function's signature and returns it."""
     fn = getattr(lib, name)

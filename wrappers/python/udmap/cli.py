@@ -330,6 +330,8 @@ def build_parser() -> argparse.ArgumentParser:
     p.set_defaults(func=cmd_demo)
     from .doe import add_doe_parser
     add_doe_parser(sub)
+    from .fmu_case import add_fmu_parser
+    add_fmu_parser(sub)
     return parser
 
 
