@@ -1,15 +1,17 @@
-# The README commands: make demo, make test (and build, bench, deps).
+# The README commands: make demo, make test (and build, bench, deps, test-windows).
 # Each installs what is missing first, so a fresh Debian 12 machine needs nothing else.
 PYTHON ?= python3
 BUILD ?= build
 JOBS ?= $(shell nproc 2>/dev/null || echo 2)
 APT_PACKAGES := gfortran liblapack-dev libblas-dev libarpack2-dev pkg-config valgrind
+# make test-windows: the MinGW-w64 cross compilers and Wine
+WINDOWS_APT_PACKAGES := gcc-mingw-w64-x86-64 gfortran-mingw-w64-x86-64 binutils-mingw-w64-x86-64 wine64
 PY_PACKAGES := numpy scipy matplotlib fmpy pytest wheel dask distributed
 export PYTHONPATH := $(CURDIR)/wrappers/python$(if $(PYTHONPATH),:$(PYTHONPATH))
 export PIP_BREAK_SYSTEM_PACKAGES := 1
 export PIP_DISABLE_PIP_VERSION_CHECK := 1
 
-.PHONY: all deps build test demo bench clean
+.PHONY: all deps deps-windows build test test-windows demo bench clean
 
 all: build
 
@@ -33,6 +35,23 @@ build: deps
 
 test: build
 	ctest --test-dir $(BUILD) --output-on-failure -j $(JOBS)
+
+# The FMUs with their Windows x86-64 binaries too (MinGW-w64), and their test under Wine
+# (tests/windows). The build directory keeps UDMAP_WINDOWS_FMU=ON afterwards.
+deps-windows: deps
+	@missing=""; for p in $(WINDOWS_APT_PACKAGES); do \
+	  dpkg-query -W -f='$${Status}' $$p 2>/dev/null | grep -q "ok installed" || missing="$$missing $$p"; \
+	done; \
+	if [ -n "$$missing" ]; then \
+	  if [ "$$(id -u)" != 0 ]; then echo "deps-windows: missing Debian packages:$$missing (run as root or install them)"; exit 1; fi; \
+	  echo "deps-windows: installing$$missing"; \
+	  apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends $$missing; \
+	fi
+
+test-windows: deps-windows
+	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release -DPython3_EXECUTABLE=$$(command -v $(PYTHON)) -DUDMAP_WINDOWS_FMU=ON
+	cmake --build $(BUILD) -j $(JOBS)
+	ctest --test-dir $(BUILD) --output-on-failure -L windows
 
 demo: build
 	$(PYTHON) -m udmap demo

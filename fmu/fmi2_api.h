@@ -10,7 +10,11 @@
 
 #include <stddef.h>
 
+#ifdef _WIN32
+#define UDMAP_FMI_EXPORT __declspec(dllexport) /* the DLL exports these only */
+#else
 #define UDMAP_FMI_EXPORT __attribute__((visibility("default")))
+#endif
 
 typedef void *fmi2Component;
 typedef void *fmi2ComponentEnvironment;

@@ -12,7 +12,11 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#ifdef _WIN32
+#define UDMAP_FMI_EXPORT __declspec(dllexport) /* the DLL exports these only */
+#else
 #define UDMAP_FMI_EXPORT __attribute__((visibility("default")))
+#endif
 
 typedef void *fmi3Instance;
 typedef void *fmi3InstanceEnvironment;
