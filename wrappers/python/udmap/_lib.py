@@ -1,7 +1,9 @@
 """Loads the kernel library and declares the C API (wrappers/c/udmap.h) for ctypes.
 
-The library is found through ``UDMAP_LIBRARY``, then ``UDMAP_BUILD_DIR/kernel``, then the
-build tree of this checkout, then next to this package, then the system loader path.
+The library is found through ``UDMAP_LIBRARY``, then inside this package (``pip install .``
+puts it there), then ``UDMAP_BUILD_DIR/kernel``, then the build tree of this checkout, then
+``UDMAP_PREFIX/lib``, then the system loader path. :func:`fmu_path` finds the generic FMUs the
+same way.
 """
 from __future__ import annotations
 
@@ -35,16 +37,26 @@ class PhysicsError(UdmapError):
         super().__init__(message, 3)
 
 
+_HERE = Path(__file__).resolve().parent
+
+
+def _build_dirs():
+    """The build trees to look in: ``UDMAP_BUILD_DIR``, then the checkout's ``build/`` (when
+    this package is wrappers/python/udmap of a checkout)."""
+    build = os.environ.get("UDMAP_BUILD_DIR")
+    if build:
+        yield Path(build)
+    if len(_HERE.parents) > 2:
+        yield _HERE.parents[2] / "build"
+
+
 def _candidates():
     env = os.environ.get("UDMAP_LIBRARY")
     if env:
         yield Path(env)
-    build = os.environ.get("UDMAP_BUILD_DIR")
-    if build:
-        yield Path(build) / "kernel" / "libudmap.so"
-    here = Path(__file__).resolve().parent
-    yield here.parents[2] / "build" / "kernel" / "libudmap.so"
-    yield here / "libudmap.so"
+    yield _HERE / "libudmap.so"
+    for build in _build_dirs():
+        yield build / "kernel" / "libudmap.so"
     prefix = os.environ.get("UDMAP_PREFIX")
     if prefix:
         for sub in ("lib", "lib64", "lib/x86_64-linux-gnu"):
@@ -66,6 +78,28 @@ def _load() -> ctypes.CDLL:
 
 
 lib = _load()
+
+_FMU_NAMES = {2: "udmap.fmu", 3: "udmap-fmi3.fmu"}
+
+
+def fmu_path(fmi_version: int = 2) -> Path:
+    """The generic FMU of the kernel for FMI ``fmi_version`` (2 or 3): inside this package
+    (``udmap/fmu/``, installed by ``pip install .``), else in ``UDMAP_BUILD_DIR`` or the
+    checkout's ``build/``, else ``UDMAP_PREFIX/share/udmap`` (``cmake --install``)."""
+    try:
+        name = _FMU_NAMES[int(fmi_version)]
+    except (KeyError, TypeError, ValueError):
+        raise InputError(f"fmi_version must be 2 or 3, got {fmi_version!r}") from None
+    tried = [_HERE / "fmu" / name] + [build / name for build in _build_dirs()]
+    prefix = os.environ.get("UDMAP_PREFIX")
+    if prefix:
+        tried.append(Path(prefix) / "share" / "udmap" / name)
+    for path in tried:
+        if path.is_file():
+            return path
+    raise InputError(f"the FMI {int(fmi_version)} FMU {name} was not found; build it with 'make "
+                     "build' (or pip install .) or set UDMAP_BUILD_DIR. Tried: "
+                     + ", ".join(str(p) for p in tried))
 
 lib.udmap_get_version.restype = ctypes.c_int
 lib.udmap_get_version.argtypes = []
