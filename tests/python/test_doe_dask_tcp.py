@@ -1,10 +1,12 @@
 """Design of experiments on a real Dask cluster: a `dask scheduler` and two `dask worker`
 processes on 127.0.0.1 (ports chosen by the system), 256 designs through
-`udmap doe ... --dask tcp://127.0.0.1:PORT`, and the file compared byte for byte with a serial
+`udmap doe ... --dask tcp://127.0.0.1:PORT` (the client), and the file compared byte for byte with a serial
 run. The scheduler runs where udmap cannot be imported (a `udmap` package that refuses to load
 comes first on its path), so the run also shows that only the client and the workers need udmap;
 a task that names a udmap function by reference is refused by that same scheduler (the control).
 Every process is started in its own session and killed with its group at the end."""
+import contextlib
+import io
 import json
 import os
 import signal
@@ -14,6 +16,8 @@ import time
 from pathlib import Path
 
 import pytest
+
+from udmap.cli import main
 
 ROOT = Path(__file__).resolve().parents[2]
 BLADE_A = ROOT / "cases" / "blade_a.json"
@@ -52,11 +56,14 @@ def _stop(procs):
             p.wait(timeout=10)
 
 
-def _udmap(args, cwd, timeout=90):
-    done = subprocess.run([sys.executable, "-m", "udmap", *args], env=_udmap_env(), cwd=cwd,
-                          capture_output=True, text=True, timeout=timeout)
-    assert done.returncode == 0, done.stdout + done.stderr
-    return json.loads(done.stdout)
+def _udmap(args):
+    """`udmap ARGS` (the command line's main, in this process: a new interpreter importing
+    numpy, scipy and distributed costs more than the run on a loaded machine)."""
+    out = io.StringIO()
+    with contextlib.redirect_stdout(out):
+        status = main(args)
+    assert status == 0, out.getvalue()
+    return json.loads(out.getvalue())
 
 
 @pytest.fixture(scope="module")
@@ -107,8 +114,8 @@ def cluster(tmp_path_factory):
 
 def test_tcp_cluster_writes_the_serial_file(cluster, tmp_path):
     address, _, procs = cluster
-    serial = _udmap(DOE + ["--workers", "1", "--out", str(tmp_path / "serial.csv")], tmp_path)
-    dask = _udmap(DOE + ["--dask", address, "--out", str(tmp_path / "dask.csv")], tmp_path)
+    serial = _udmap(DOE + ["--workers", "1", "--out", str(tmp_path / "serial.csv")])
+    dask = _udmap(DOE + ["--dask", address, "--out", str(tmp_path / "dask.csv")])
     assert serial["executor"] == "serial" and dask["executor"] == "dask"
     assert dask["workers"] == 2 and dask["computed"] == dask["written"] == 256
     assert dask["status"] == {"ok": 256}
