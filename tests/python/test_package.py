@@ -87,8 +87,10 @@ def test_installed_package_gives_the_source_trees_results(site):
 def test_source_tree_finds_the_builds_fmus():
     assert fmu_path(2) == BUILD / "udmap.fmu" and fmu_path() == fmu_path(2)
     assert fmu_path(3) == BUILD / "udmap-fmi3.fmu"
-    with pytest.raises(InputError, match="fmi_version must be 2 or 3, got 4"):
-        fmu_path(4)
+    assert fmu_path("3") == fmu_path(3)
+    for bad in (4, 2.5, True, "x", None, [2]):
+        with pytest.raises(InputError, match=f"fmi_version must be 2 or 3, got {bad!r}"):
+            fmu_path(bad)
 
 
 def test_version_is_read_from_cmakelists():

@@ -86,10 +86,12 @@ def fmu_path(fmi_version: int = 2) -> Path:
     """The generic FMU of the kernel for FMI ``fmi_version`` (2 or 3): inside this package
     (``udmap/fmu/``, installed by ``pip install .``), else in ``UDMAP_BUILD_DIR`` or the
     checkout's ``build/``, else ``UDMAP_PREFIX/share/udmap`` (``cmake --install``)."""
-    try:
-        name = _FMU_NAMES[int(fmi_version)]
-    except (KeyError, TypeError, ValueError):
-        raise InputError(f"fmi_version must be 2 or 3, got {fmi_version!r}") from None
+    version = fmi_version
+    if isinstance(version, str):
+        version = {"2": 2, "3": 3}.get(version.strip())
+    if not isinstance(version, int) or isinstance(version, bool) or version not in _FMU_NAMES:
+        raise InputError(f"fmi_version must be 2 or 3, got {fmi_version!r}")
+    name = _FMU_NAMES[version]
     tried = [_HERE / "fmu" / name] + [build / name for build in _build_dirs()]
     prefix = os.environ.get("UDMAP_PREFIX")
     if prefix:
@@ -97,9 +99,10 @@ def fmu_path(fmi_version: int = 2) -> Path:
     for path in tried:
         if path.is_file():
             return path
-    raise InputError(f"the FMI {int(fmi_version)} FMU {name} was not found; build it with 'make "
+    raise InputError(f"the FMI {version} FMU {name} was not found; build it with 'make "
                      "build' (or pip install .) or set UDMAP_BUILD_DIR. Tried: "
                      + ", ".join(str(p) for p in tried))
+
 
 lib.udmap_get_version.restype = ctypes.c_int
 lib.udmap_get_version.argtypes = []
