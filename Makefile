@@ -6,12 +6,12 @@ JOBS ?= $(shell nproc 2>/dev/null || echo 2)
 APT_PACKAGES := gfortran liblapack-dev libblas-dev libarpack2-dev pkg-config valgrind
 # make test-windows: the MinGW-w64 cross compilers and Wine
 WINDOWS_APT_PACKAGES := gcc-mingw-w64-x86-64 gfortran-mingw-w64-x86-64 binutils-mingw-w64-x86-64 wine64
-PY_PACKAGES := numpy scipy matplotlib fmpy pytest wheel dask distributed
+PY_PACKAGES := numpy scipy matplotlib fmpy pytest wheel dask distributed scikit-build-core
 export PYTHONPATH := $(CURDIR)/wrappers/python$(if $(PYTHONPATH),:$(PYTHONPATH))
 export PIP_BREAK_SYSTEM_PACKAGES := 1
 export PIP_DISABLE_PIP_VERSION_CHECK := 1
 
-.PHONY: all deps deps-windows build test test-windows demo bench clean
+.PHONY: all deps deps-windows build test test-windows test-pip demo bench clean
 
 all: build
 
@@ -25,7 +25,7 @@ deps:
 	  apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends $$missing; \
 	fi
 	@missing=""; for p in $(PY_PACKAGES); do \
-	  $(PYTHON) -c "import $$p" 2>/dev/null || missing="$$missing $$p"; \
+	  $(PYTHON) -c "import $$(echo $$p | tr - _)" 2>/dev/null || missing="$$missing $$p"; \
 	done; \
 	if [ -n "$$missing" ]; then echo "deps: pip installing$$missing"; $(PYTHON) -m pip install -q $$missing; fi
 
@@ -52,6 +52,23 @@ test-windows: deps-windows
 	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release -DPython3_EXECUTABLE=$$(command -v $(PYTHON)) -DUDMAP_WINDOWS_FMU=ON
 	cmake --build $(BUILD) -j $(JOBS)
 	ctest --test-dir $(BUILD) --output-on-failure -L windows
+
+# pip install . into a fresh venv (scikit-build-core, numpy, scipy, matplotlib from PyPI; the
+# kernel and the FMUs compiled again, about 3 minutes), then `udmap demo` from that venv alone.
+test-pip: deps
+	@tmp=$$(mktemp -d); trap 'rm -rf "$$tmp"' EXIT; set -e; \
+	unset PYTHONPATH UDMAP_LIBRARY UDMAP_BUILD_DIR UDMAP_PREFIX; \
+	$(PYTHON) -m venv "$$tmp/v"; \
+	start=$$(date +%s); "$$tmp/v/bin/pip" install -q .; \
+	echo "test-pip: pip install . took $$(( $$(date +%s) - start )) s"; \
+	cd "$$tmp"; v/bin/udmap demo --out d > demo.txt; \
+	for f in summary.json backbone.csv gg_design_diagram.png gamma_P_vs_F_E.png \
+	         f_res_vs_F_E.png response_curves.png stiffness.png; do test -s "d/$$f"; done; \
+	test "$$(v/bin/python -m udmap --version)" = "$$(v/bin/python -c 'import udmap; print(udmap.version())')"; \
+	v/bin/python -c "import udmap._lib as l, pathlib; p = pathlib.Path(l.__file__).parent; \
+	  assert pathlib.Path(l.lib._name) == p / 'libudmap.so', l.lib._name; \
+	  assert l.fmu_path(2) == p / 'fmu/udmap.fmu' and l.fmu_path(3) == p / 'fmu/udmap-fmi3.fmu'"; \
+	echo "test-pip: udmap demo from a fresh venv wrote $$(ls d | wc -l) files; packaged library and FMUs used"
 
 demo: build
 	$(PYTHON) -m udmap demo

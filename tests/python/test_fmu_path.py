@@ -1,5 +1,5 @@
-"""udmap._lib.fmu_path: the generic FMUs are found in UDMAP_BUILD_DIR, the checkout's build/,
-and the package's own data directory udmap/fmu/ (where a wheel carries them), in that order."""
+"""udmap._lib.fmu_path: the generic FMUs are found in the package's own data directory
+udmap/fmu/ (where a wheel carries them), then UDMAP_BUILD_DIR and the checkout's build/."""
 from __future__ import annotations
 
 import pytest
@@ -25,15 +25,15 @@ def test_package_data_directory(version, monkeypatch, tmp_path):
     empty.mkdir()
     monkeypatch.setenv("UDMAP_BUILD_DIR", str(empty))
     monkeypatch.delenv("UDMAP_PREFIX", raising=False)
-    monkeypatch.setattr(_lib, "_PACKAGE_DIR", package)  # as installed: no checkout around it
+    monkeypatch.setattr(_lib, "_HERE", package)  # as installed: no checkout around it
     assert _lib.fmu_path(version) == target
 
 
 def test_missing_and_bad_version(monkeypatch, tmp_path):
     monkeypatch.setenv("UDMAP_BUILD_DIR", str(tmp_path))
     monkeypatch.delenv("UDMAP_PREFIX", raising=False)
-    monkeypatch.setattr(_lib, "_PACKAGE_DIR", tmp_path / "a" / "b" / "c" / "udmap")
-    with pytest.raises(_lib.InputError, match="not built"):
+    monkeypatch.setattr(_lib, "_HERE", tmp_path / "a" / "b" / "c" / "udmap")
+    with pytest.raises(_lib.InputError, match="was not found"):
         _lib.fmu_path(3)
     with pytest.raises(_lib.InputError, match="2 or 3"):
         _lib.fmu_path(4)

@@ -1,7 +1,9 @@
 """Loads the kernel library and declares the C API (wrappers/c/udmap.h) for ctypes.
 
-The library is found through ``UDMAP_LIBRARY``, then ``UDMAP_BUILD_DIR/kernel``, then the
-build tree of this checkout, then next to this package, then the system loader path.
+The library is found through ``UDMAP_LIBRARY``, then inside this package (``pip install .``
+puts it there), then ``UDMAP_BUILD_DIR/kernel``, then the build tree of this checkout, then
+``UDMAP_PREFIX/lib``, then the system loader path. :func:`fmu_path` finds the generic FMUs the
+same way.
 """
 from __future__ import annotations
 
@@ -35,16 +37,26 @@ class PhysicsError(UdmapError):
         super().__init__(message, 3)
 
 
+_HERE = Path(__file__).resolve().parent
+
+
+def _build_dirs():
+    """The build trees to look in: ``UDMAP_BUILD_DIR``, then the checkout's ``build/`` (when
+    this package is wrappers/python/udmap of a checkout)."""
+    build = os.environ.get("UDMAP_BUILD_DIR")
+    if build:
+        yield Path(build)
+    if len(_HERE.parents) > 2:
+        yield _HERE.parents[2] / "build"
+
+
 def _candidates():
     env = os.environ.get("UDMAP_LIBRARY")
     if env:
         yield Path(env)
-    build = os.environ.get("UDMAP_BUILD_DIR")
-    if build:
-        yield Path(build) / "kernel" / "libudmap.so"
-    here = Path(__file__).resolve().parent
-    yield here.parents[2] / "build" / "kernel" / "libudmap.so"
-    yield here / "libudmap.so"
+    yield _HERE / "libudmap.so"
+    for build in _build_dirs():
+        yield build / "kernel" / "libudmap.so"
     prefix = os.environ.get("UDMAP_PREFIX")
     if prefix:
         for sub in ("lib", "lib64", "lib/x86_64-linux-gnu"):
@@ -67,6 +79,31 @@ def _load() -> ctypes.CDLL:
 
 lib = _load()
 
+FMU_NAMES = {2: "udmap.fmu", 3: "udmap-fmi3.fmu"}
+
+
+def fmu_path(fmi_version: int = 2) -> Path:
+    """The generic FMU of the kernel for FMI ``fmi_version`` (2 or 3): inside this package
+    (``udmap/fmu/``, installed by ``pip install .``), else in ``UDMAP_BUILD_DIR`` or the
+    checkout's ``build/``, else ``UDMAP_PREFIX/share/udmap`` (``cmake --install``)."""
+    version = fmi_version
+    if isinstance(version, str):
+        version = {"2": 2, "3": 3}.get(version.strip())
+    if not isinstance(version, int) or isinstance(version, bool) or version not in FMU_NAMES:
+        raise InputError(f"fmi_version must be 2 or 3, got {fmi_version!r}")
+    name = FMU_NAMES[version]
+    tried = [_HERE / "fmu" / name] + [build / name for build in _build_dirs()]
+    prefix = os.environ.get("UDMAP_PREFIX")
+    if prefix:
+        tried.append(Path(prefix) / "share" / "udmap" / name)
+    for path in tried:
+        if path.is_file():
+            return path
+    raise InputError(f"the FMI {version} FMU {name} was not found; build it with 'make "
+                     "build' (or pip install .) or set UDMAP_BUILD_DIR. Tried: "
+                     + ", ".join(str(p) for p in tried))
+
+
 lib.udmap_get_version.restype = ctypes.c_int
 lib.udmap_get_version.argtypes = []
 lib.udmap_new_error.restype = ctypes.c_void_p
@@ -77,36 +114,6 @@ lib.udmap_check_error.restype = ctypes.c_int
 lib.udmap_check_error.argtypes = [ctypes.c_void_p]
 lib.udmap_get_error.restype = None
 lib.udmap_get_error.argtypes = [ctypes.c_void_p, ctypes.c_char_p, ctypes.c_int]
-
-
-FMU_NAMES = {2: "udmap.fmu", 3: "udmap-fmi3.fmu"}
-_PACKAGE_DIR = Path(__file__).resolve().parent
-
-
-def _fmu_candidates(name: str):
-    build = os.environ.get("UDMAP_BUILD_DIR")
-    if build:
-        yield Path(build) / name
-    yield _PACKAGE_DIR.parents[2] / "build" / name  # this checkout's build tree
-    yield _PACKAGE_DIR / "fmu" / name  # the package's own data (a wheel)
-    prefix = os.environ.get("UDMAP_PREFIX")
-    if prefix:
-        yield Path(prefix) / "share" / "udmap" / name  # cmake --install
-
-
-def fmu_path(fmi_version: int = 2) -> Path:
-    """The generic FMU of FMI version 2 or 3 (``udmap.fmu``, ``udmap-fmi3.fmu``): from
-    ``UDMAP_BUILD_DIR``, then the checkout's ``build/``, then the package's data directory
-    ``udmap/fmu/`` (pip-installed wheel), then ``UDMAP_PREFIX/share/udmap``."""
-    if fmi_version not in FMU_NAMES:
-        raise InputError(f"--fmi must be 2 or 3, got {fmi_version!r}")
-    tried = []
-    for path in _fmu_candidates(FMU_NAMES[fmi_version]):
-        if path.is_file():
-            return path
-        tried.append(str(path))
-    raise InputError(f"the FMI {fmi_version} FMU is not built ('make build' writes it, a wheel "
-                     f"carries it in udmap/fmu/); tried: {', '.join(tried)}")
 
 
 def declare(name: str, argtypes, restype=ctypes.c_int):

@@ -123,10 +123,42 @@ class PoolExecutor:
                 submit()
 
 
+def _dask_chunk_function():
+    """The function a Dask worker runs on a chunk, made inside this function so that it is not
+    importable by name: cloudpickle then sends it by value (its code, with no globals), and the
+    scheduler, which unpickles the task graph, needs only dask and distributed, not udmap. The
+    worker imports udmap when it runs the task. The arguments (the spec, the design values) and
+    the result are plain Python data; a udmap error comes back as ``("error", status,
+    message)`` rather than as an exception of a udmap class, for the same reason."""
+
+    def udmap_doe_chunk(spec, start, values):
+        import udmap.doe
+        try:
+            return ("ok", udmap.doe.run_chunk(spec, start, values))
+        except udmap.UdmapError as exc:
+            return ("error", exc.status, str(exc))
+
+    return udmap_doe_chunk
+
+
+def _dask_result(reply):
+    """The chunk result of :func:`_dask_chunk_function`'s reply, or its udmap error raised."""
+    if reply[0] == "ok":
+        return reply[1]
+    from ._lib import PhysicsError, UdmapError
+    status, message = reply[1], reply[2]
+    if status == 2:
+        raise InputError(message)
+    if status == 3:
+        raise PhysicsError(message)
+    raise UdmapError(message, status)
+
+
 class DaskExecutor:
     """Dask distributed: ``local:K`` starts a LocalCluster of K single-threaded worker processes,
     ``tcp://HOST:PORT`` (or any scheduler address) uses a running cluster, whose workers must be
-    able to import udmap and load its library (and read the case's files)."""
+    able to import udmap and load its library (and read the case's files); its scheduler needs
+    only dask and distributed (see :func:`_dask_chunk_function`)."""
     kind = "dask"
 
     def __init__(self, address: str):
@@ -184,7 +216,7 @@ class DaskExecutor:
 
     def run(self, spec, ranges):
         from distributed import as_completed
-        from .doe import run_chunk
+        chunk_function = _dask_chunk_function()
         spec_future = self.client.scatter(spec, broadcast=True)
         todo = iter(ranges)
 
@@ -192,12 +224,12 @@ class DaskExecutor:
             item = next(todo, None)
             if item is None:
                 return None
-            return self.client.submit(run_chunk, spec_future, item[0], item[1], pure=False)
+            return self.client.submit(chunk_function, spec_future, item[0], item[1], pure=False)
 
         first = [f for f in (submit() for _ in range(2 * self.workers)) if f is not None]
         queue = as_completed(first)
         for fut in queue:
-            yield fut.result()
+            yield _dask_result(fut.result())
             fut.release()
             nxt = submit()
             if nxt is not None:
