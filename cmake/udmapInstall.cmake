@@ -58,6 +58,9 @@ set(_udmap_config_files "${PROJECT_BINARY_DIR}/udmapConfig.cmake"
   "${PROJECT_BINARY_DIR}/udmapConfigVersion.cmake")
 if(UDMAP_WITH_ARPACK)
   list(APPEND _udmap_config_files "${PROJECT_SOURCE_DIR}/cmake/FindARPACK.cmake")
+  if(UDMAP_WITH_MUMPS)
+    list(APPEND _udmap_config_files "${PROJECT_SOURCE_DIR}/cmake/FindMUMPS.cmake")
+  endif()
 endif()
 install(FILES ${_udmap_config_files}
   DESTINATION "${UDMAP_INSTALL_CMAKEDIR}" COMPONENT udmap)
