@@ -36,6 +36,10 @@ contains
     type(reduction_type), pointer :: red
     integer(c_int), target :: none_i(1)
     call clear_error(error)
+    if (c_associated(reduction)) then
+      call c_f_pointer(reduction, out)
+      out = c_null_ptr
+    end if
     if (.not.c_associated(reduction)) then
       err = error_from_handle("reduction")
     else if (n < 1) then
@@ -74,8 +78,6 @@ contains
       stat = set_error(error, err)
       return
     end if
-    call c_f_pointer(reduction, out)
-    out = c_null_ptr
     call c_f_pointer(k_row, kr, [nnz_k])
     call c_f_pointer(k_col, kc, [nnz_k])
     call c_f_pointer(k_val, kv, [nnz_k])

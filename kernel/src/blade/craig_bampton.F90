@@ -212,7 +212,7 @@ contains
     end do
     deallocate(v)
     call reduced_frequencies(error)
-    if (allocated(error)) return
+    if (allocated(error)) goto 90
     red%timings(4) = seconds(t0)
 
     ! Check: the full model with the rigid platform in [0, f_check].
@@ -361,8 +361,8 @@ contains
       type(error_type), allocatable, intent(out) :: error
       real(wp), allocatable :: a(:, :), b(:, :), ev(:), work(:)
       integer :: info
-      a = red%K
-      b = red%M
+      allocate(a, source=red%K)
+      allocate(b, source=red%M)
       allocate(ev(r), work(max(1, 3*r)))
       call dsygv(1, 'N', 'U', r, a, r, b, r, ev, work, size(work), info)
       if (info /= 0) then
@@ -382,6 +382,18 @@ contains
       sig_shift = -1e-2_wp*sig_top
       call factor_analyse(fac, nt, [kt%row, mt%row], [kt%col, mt%col], error)
       if (allocated(error)) return
+      ! M on every kept DOF (the interior check above misses the platform's and u_E's)
+      call factor_numeric(fac, [0*kt%val, mt%val], "M_t", error)
+      if (allocated(error)) then
+        error%message = "M: the mass matrix is not positive definite ("//error%message//")"
+        error%stat = UDMAP_EINPUT
+        return
+      end if
+      if (fac%negative_pivots /= 0) then
+        call fatal_error(error, "M: the mass matrix is not positive definite ("// &
+          & itoa(fac%negative_pivots)//" negative pivots of T^T M T)")
+        return
+      end if
       call factor_numeric(fac, [kt%val, -sig_top*mt%val], "K_t - sigma M_t", error)
       if (allocated(error)) return
       cnt = fac%negative_pivots

@@ -19,7 +19,7 @@ __all__ = ["Reduced", "platform_centred_reduction", "DEFAULT_RESIDUAL_BLOCKS"]
 
 #: Blocks of residual (Krylov) vectors added to the fixed-interface modes by default: they
 #: carry the inertia of the modes left out, which brings the band to 1e-6 and below.
-DEFAULT_RESIDUAL_BLOCKS = 2
+DEFAULT_RESIDUAL_BLOCKS = 3
 
 _vp = ctypes.c_void_p
 _ci = ctypes.c_int

@@ -144,6 +144,14 @@ def _count_nodes(h):
     return int(used.sum())
 
 
+def _tree_sum(mats):
+    """Sum of sparse matrices pairwise (each entry is copied O(log n) times, not O(n))."""
+    while len(mats) > 1:
+        mats = [mats[i] + mats[i + 1] if i + 1 < len(mats) else mats[i]
+                for i in range(0, len(mats), 2)]
+    return mats[0]
+
+
 def generate_blade(n_dofs: int = 10_000, *, E: float = 170e9, nu: float = 0.3,
                    rho: float = 8200.0) -> GeneratedBlade:
     """A blade with about n_dofs DOFs (after the root clamp), SI units."""
@@ -174,21 +182,21 @@ def generate_blade(n_dofs: int = 10_000, *, E: float = 170e9, nu: float = 0.3,
     shapes, group = np.unique(np.round(sizes, 9), axis=0, return_inverse=True)
     group = group.ravel()
     ndof = 3 * m
-    K = sp.csr_matrix((ndof, ndof))
-    M = sp.csr_matrix((ndof, ndof))
+    Ks, Ms = [], []
     loc = np.arange(3)
     for s, size in enumerate(shapes):
         Ke, Me = brick_matrices(size * MM, E, nu, rho)
         el = conn[group == s]
         for start in range(0, el.shape[0], 20000):
             e = el[start:start + 20000]
-            dofs = (3 * e[:, :, None] + loc).reshape(e.shape[0], 24)
+            dofs = (3 * e[:, :, None] + loc).reshape(e.shape[0], 24).astype(np.int32)
             rows = np.repeat(dofs, 24, axis=1).ravel()
             cols = np.tile(dofs, (1, 24)).ravel()
-            K = K + sp.csr_matrix((np.tile(Ke.ravel(), e.shape[0]), (rows, cols)),
-                                  shape=(ndof, ndof))
-            M = M + sp.csr_matrix((np.tile(Me.ravel(), e.shape[0]), (rows, cols)),
-                                  shape=(ndof, ndof))
+            Ks.append(sp.csr_matrix((np.tile(Ke.ravel(), e.shape[0]), (rows, cols)),
+                                    shape=(ndof, ndof)))
+            Ms.append(sp.csr_matrix((np.tile(Me.ravel(), e.shape[0]), (rows, cols)),
+                                    shape=(ndof, ndof)))
+    K, M = _tree_sum(Ks), _tree_sum(Ms)
     node_ids = np.arange(1, m + 1, dtype=np.int64)
     tol = 1e-9
     y = xyz[:, 1] / MM
