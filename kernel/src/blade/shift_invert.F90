@@ -140,6 +140,7 @@ contains
 #endif
   end subroutine lowest_modes
 
+#ifdef UDMAP_WITH_ARPACK
   !> Sorts eigenvalues ascending, with their vectors (insertion sort: nev is small).
   pure subroutine sort_pairs(lambda, phi)
     real(wp), intent(inout) :: lambda(:), phi(:, :)
@@ -160,4 +161,5 @@ contains
       phi(:, j+1) = v
     end do
   end subroutine sort_pairs
+#endif
 end module udmap_shift_invert

@@ -152,7 +152,7 @@ contains
     deallocate(f%id%rhs)
     nullify(f%id%rhs)
 #else
-    if (size(b) < 0) continue
+    if (size(b) < 0 .or. f%n < 0) continue
     call fatal_error(error, "sparse solve: udmap was built without MUMPS", UDMAP_ENUMERIC)
 #endif
   end subroutine factor_solve

@@ -285,10 +285,8 @@ def write_blade(blade: GeneratedBlade, directory, *, name: str = "generated_blad
         f.write("node,x,y,z\n")
         np.savetxt(f, np.column_stack([fe.node_ids, fe.node_xyz]),
                    fmt=["%d", "%.17g", "%.17g", "%.17g"], delimiter=",")
-    blade_a = json.loads((Path(__file__).resolve().parents[4] / "cases" /
-                          "blade_a.json").read_text()) if (Path(__file__).resolve().parents[4] /
-                                                           "cases" / "blade_a.json").is_file() \
-        else None
+    blade_a = Path(__file__).resolve().parents[1] / "data" / "blade_a.json"
+    damper = json.loads(blade_a.read_text())["damper"] if blade_a.is_file() else None
     case = {
         "name": name,
         "blade": {
@@ -308,7 +306,7 @@ def write_blade(blade: GeneratedBlade, directory, *, name: str = "generated_blad
     }
     if modes is not None:
         case["blade"]["modes"] = int(modes)
-    if blade_a is not None:
-        case["damper"] = blade_a["damper"]
+    if damper is not None:
+        case["damper"] = damper
     (d / "case.json").write_text(json.dumps(case, indent=1) + "\n")
     return case
