@@ -63,7 +63,9 @@ contains
   !> the rigid platform, clamp and excitation of new_platform_map. `stress` (n x n_stress)
   !> holds stress rows over the full DOFs. Fixed-interface modes: `n_modes` (>= 0) or, when
   !> n_modes < 0, all below 3 f_max. `n_residual` blocks of residual vectors. check_full adds
-  !> the full model's eigenfrequencies in [0, f_check].
+  !> the checks that cost a factorisation each: M positive definite (no negative pivot of
+  !> T^T M T) and the full model's eigenfrequencies in [0, f_check] (with their inertia count).
+  !> The inertia check of the fixed-interface modes is always made.
   subroutine platform_centred_reduction(n, k_row, k_col, k_val, m_row, m_col, m_val, dof_node, &
       & dof_comp, node_ids, node_xyz, platform_nodes, ref_point, axis, exc_node, exc_direction, &
       & clamp_nodes, stress, n_modes, f_max, n_residual, check_full, red, error)
@@ -85,6 +87,7 @@ contains
     integer(8) :: t0
     integer :: nev, nask, ni, nt, r, j, nr
     real(wp) :: sig_cut
+    logical :: m_checked
 
     call check_input(error)
     if (allocated(error)) return
@@ -102,21 +105,36 @@ contains
     call split(mt, mii, mib)
     red%timings(1) = seconds(t0)
 
+    ! The full-model check first when its band is known: it also checks M on every kept DOF.
+    allocate(red%freqs_full(0))
+    m_checked = .false.
+    if (check_full .and. f_max > 0) then
+      t0 = clock()
+      red%f_check = 3*f_max
+      call full_check(error)
+      if (allocated(error)) goto 90
+      call factor_free(fac)
+      m_checked = .true.
+      red%timings(5) = seconds(t0)
+    end if
+
     ! Interior: K_II - sigma M_II on one analysed pattern, refactorised per shift.
     t0 = clock()
     call factor_analyse(fac, ni, [kii%row, mii%row], [kii%col, mii%col], error)
     if (allocated(error)) goto 90
-    ! M must be positive definite: no negative (or zero) pivot of M_II.
-    call factor_numeric(fac, [0*kii%val, mii%val], "M (mass of the interior DOFs)", error)
-    if (allocated(error)) then
-      error%message = "M: the mass matrix is not positive definite ("//error%message//")"
-      error%stat = UDMAP_EINPUT
-      goto 90
-    end if
-    if (fac%negative_pivots /= 0) then
-      call fatal_error(error, "M: the mass matrix is not positive definite ("// &
-        & itoa(fac%negative_pivots)//" negative pivots)")
-      goto 90
+    if (check_full .and. .not.m_checked) then
+      ! M must be positive definite: no negative (or zero) pivot of M_II.
+      call factor_numeric(fac, [0*kii%val, mii%val], "M (mass of the interior DOFs)", error)
+      if (allocated(error)) then
+        error%message = "M: the mass matrix is not positive definite ("//error%message//")"
+        error%stat = UDMAP_EINPUT
+        goto 90
+      end if
+      if (fac%negative_pivots /= 0) then
+        call fatal_error(error, "M: the mass matrix is not positive definite ("// &
+          & itoa(fac%negative_pivots)//" negative pivots)")
+        goto 90
+      end if
     end if
     if (n_modes < 0) then
       red%f_cut = 3*f_max
@@ -143,7 +161,7 @@ contains
         & itoa(fac%negative_pivots)//" negative pivots of K_II)")
       goto 90
     end if
-    red%factor_entries = fac%factor_entries
+    red%factor_entries = max(red%factor_entries, fac%factor_entries)
     ! Static constraint modes.
     psi = -kib
     call factor_solve(fac, psi, error)
@@ -215,14 +233,13 @@ contains
     if (allocated(error)) goto 90
     red%timings(4) = seconds(t0)
 
-    ! Check: the full model with the rigid platform in [0, f_check].
+    ! Check without f_max: the full model up to the highest kept fixed-interface mode.
     if (f_max > 0) then
       red%f_check = 3*f_max
     else if (nev > 0) then
       red%f_check = sqrt(lambda(nev))/(2*pi)
     end if
-    allocate(red%freqs_full(0))
-    if (check_full .and. red%f_check > 0) then
+    if (check_full .and. .not.m_checked .and. red%f_check > 0) then
       t0 = clock()
       call full_check(error)
       if (allocated(error)) goto 90

@@ -107,8 +107,9 @@ def platform_centred_reduction(fe, *, platform_nodes, ref_point, axis, exc_node,
     """Reduces ``fe`` (a udmap.fe.FEModel) with a rigid platform (its node ids, the reference
     point and the unit axis of gamma_P = theta . a, right-hand sense) and the excitation at
     node ``exc_node`` along ``exc_direction``. Fixed-interface modes: ``n_modes``, or all below
-    3 ``f_max``. ``stress_rows``: rows over the full DOFs (sigma = s^T u). ``check_full``: also
-    solve the full model (with the rigid platform) in [0, 3 f_max] for the check. Bad input
+    3 ``f_max``. ``stress_rows``: rows over the full DOFs (sigma = s^T u). ``check_full`` (default)
+    adds the checks that cost a sparse factorisation each: M positive definite, and the full
+    model (with the rigid platform) solved in [0, 3 f_max] with its inertia count. Bad input
     raises InputError naming the argument; nothing is returned half-made."""
     t_start = time.perf_counter()
     dof_node = np.asarray(fe.dof_node).ravel()
