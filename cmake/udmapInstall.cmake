@@ -73,6 +73,11 @@ set(UDMAP_PC_REQUIRES_PRIVATE "lapack")
 if(UDMAP_WITH_ARPACK)
   set(UDMAP_PC_REQUIRES_PRIVATE "arpack ${UDMAP_PC_REQUIRES_PRIVATE}")
 endif()
+# Debian's MUMPS ships no .pc file: its libraries go to Libs.private directly.
+set(UDMAP_PC_LIBS_PRIVATE "")
+if(UDMAP_WITH_MUMPS)
+  set(UDMAP_PC_LIBS_PRIVATE "-ldmumps_seq -lmumps_common_seq -lmpiseq_seq ")
+endif()
 configure_file("${PROJECT_SOURCE_DIR}/cmake/udmap.pc.in" "${PROJECT_BINARY_DIR}/udmap.pc" @ONLY)
 install(FILES "${PROJECT_BINARY_DIR}/udmap.pc"
   DESTINATION "${UDMAP_INSTALL_PKGCONFIGDIR}" COMPONENT udmap)
