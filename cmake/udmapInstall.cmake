@@ -58,6 +58,9 @@ set(_udmap_config_files "${PROJECT_BINARY_DIR}/udmapConfig.cmake"
   "${PROJECT_BINARY_DIR}/udmapConfigVersion.cmake")
 if(UDMAP_WITH_ARPACK)
   list(APPEND _udmap_config_files "${PROJECT_SOURCE_DIR}/cmake/FindARPACK.cmake")
+  if(UDMAP_WITH_MUMPS)
+    list(APPEND _udmap_config_files "${PROJECT_SOURCE_DIR}/cmake/FindMUMPS.cmake")
+  endif()
 endif()
 install(FILES ${_udmap_config_files}
   DESTINATION "${UDMAP_INSTALL_CMAKEDIR}" COMPONENT udmap)
@@ -69,6 +72,11 @@ string(REGEX REPLACE "/$" "" UDMAP_PC_TO_PREFIX "${UDMAP_PC_TO_PREFIX}")
 set(UDMAP_PC_REQUIRES_PRIVATE "lapack")
 if(UDMAP_WITH_ARPACK)
   set(UDMAP_PC_REQUIRES_PRIVATE "arpack ${UDMAP_PC_REQUIRES_PRIVATE}")
+endif()
+# Debian's MUMPS ships no .pc file: its libraries go to Libs.private directly.
+set(UDMAP_PC_LIBS_PRIVATE "")
+if(UDMAP_WITH_MUMPS)
+  set(UDMAP_PC_LIBS_PRIVATE "-ldmumps_seq -lmumps_common_seq -lmpiseq_seq ")
 endif()
 configure_file("${PROJECT_SOURCE_DIR}/cmake/udmap.pc.in" "${PROJECT_BINARY_DIR}/udmap.pc" @ONLY)
 install(FILES "${PROJECT_BINARY_DIR}/udmap.pc"

@@ -15,6 +15,8 @@
 #ifndef UDMAP_H
 #define UDMAP_H
 
+#include <stdint.h>
+
 #ifdef __cplusplus
 extern "C" {
 #endif
@@ -383,6 +385,52 @@ int udmap_dti_response(udmap_error error, udmap_blade blade, udmap_contact conta
 int udmap_dti_peak(udmap_error error, udmap_blade blade, udmap_contact contact,
                    const udmap_dti_settings *settings, double f_min, double f_max, int n,
                    const double *F_E, udmap_dti_point *points);
+
+/* ---------------------------------------------------------------- FE reduction */
+
+/* Platform Centred Reduction of a sparse FE blade (PHYSICS.md 1.3, paper section 2.1).
+ * K, M: n x n symmetric, by the entries of their LOWER triangle (row >= col), 1-based COO
+ * indices, duplicates add up. dof_node[n], dof_comp[n] (1..6): the node id and component of
+ * each row; node_ids[n_nodes], node_xyz[3 * n_nodes] (x, y, z of each node in turn).
+ * The platform nodes follow one rigid body u_i = u_R + theta x (x_i - x_R) (by transformation),
+ * gamma_P = theta . axis (unit axis, right-hand sense); clamp_nodes (may be NULL with
+ * n_clamp = 0) are fixed. The force acts at exc_node along exc_direction (u_E = u . d).
+ * Craig-Bampton onto the seven boundary DOFs: gamma_P (reduced DOF 1), the two other rotations,
+ * the three translations of the platform, u_E (reduced DOF 7); then the fixed-interface modes
+ * (n_modes >= 0, or n_modes < 0: all below 3 f_max) and n_residual blocks of residual vectors
+ * (0-20; the Python default 3 brings the band to about 1e-8 and below). stress_rows: n_stress rows of n (row k at
+ * stress_rows[k * n]), reduced as s_r = V^T T^T s. check_full != 0 adds the checks that cost
+ * a sparse factorisation each: M positive definite (MUMPS finds no negative pivot) and the full
+ * model with the rigid platform solved in [0, 3 f_max] (or up to the highest kept mode when
+ * f_max <= 0) with its inertia count. The fixed-interface modes' inertia check is always made.
+ * Errors name the argument (UDMAP_EINPUT), e.g. an empty platform set, a zero axis, a node not
+ * in the model, entries above the diagonal, an M that is not positive definite; on error
+ * *reduction is NULL. Uses ARPACK, whose dsaupd keeps internal save state: do not run two
+ * reductions at once in two threads of one process. */
+typedef struct _udmap_reduction *udmap_reduction;
+int udmap_reduce(udmap_error error, int n, int64_t nnz_K, const int *K_row, const int *K_col,
+                 const double *K_val, int64_t nnz_M, const int *M_row, const int *M_col,
+                 const double *M_val, const int *dof_node, const int *dof_comp, int n_nodes,
+                 const int *node_ids, const double *node_xyz, int n_platform,
+                 const int *platform_nodes, const double ref_point[3], const double axis[3],
+                 int exc_node, const double exc_direction[3], int n_clamp,
+                 const int *clamp_nodes, int n_stress, const double *stress_rows, int n_modes,
+                 double f_max, int n_residual, int check_full, udmap_reduction *reduction);
+void udmap_delete_reduction(udmap_reduction *reduction);
+/* Sizes: r (reduced DOFs), fixed-interface modes kept, stress rows, full-model frequencies
+ * found in the check band, gamma_dof, exc_dof (1-based). Any pointer may be NULL. */
+int udmap_reduction_sizes(udmap_error error, udmap_reduction reduction, int *r, int *n_modes,
+                          int *n_stress, int *n_freqs_full, int *gamma_dof, int *exc_dof);
+/* Copies M[r * r], K[r * r] (symmetric), stress[n_stress * r] (row k at stress[k * r]),
+ * freqs_reduced[r] (all, ascending, Hz), freqs_full[n_freqs_full] (Hz). Any may be NULL. */
+int udmap_reduction_get(udmap_error error, udmap_reduction reduction, double *M, double *K,
+                        double *stress, double *freqs_reduced, double *freqs_full);
+/* info[15]: fixed-interface cut-off [Hz], top of the check band [Hz], MUMPS's count of
+ * fixed-interface modes below the cut-off and those found, the same for the full model in the
+ * check band (-1 if not checked), transformed DOFs, interior DOFs, entries of the largest
+ * factor, residual vectors, then wall times [s]: transformation, factorisations and static
+ * modes, fixed-interface modes and residual vectors, projection, full-model check. */
+int udmap_reduction_info(udmap_error error, udmap_reduction reduction, double *info);
 
 #ifdef __cplusplus
 }

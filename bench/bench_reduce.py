@@ -1,0 +1,138 @@
+#!/usr/bin/env python3
+"""Platform Centred Reduction benchmark (issue 12): a generated 3D solid blade
+(udmap.fe.generator) of about 10^4, 10^5 (and, with UDMAP_BENCH_1E6=1, 10^6) DOFs, reduced with
+blade A's band (f_max = 230 Hz, modes up to 3 f_max, the default residual blocks).
+
+Generation is excluded: the parent generates and saves the model, a child process loads it,
+reduces it (timed: the whole platform_centred_reduction call, input checks included; wall
+and CPU seconds, the CPU time being what an idle machine's wall time would be, as the solver
+runs on one thread) and reports its peak resident memory (ru_maxrss, which includes the loaded K and M). Method
+`reduce`: the reduction alone; `reduce_full_check`: with the full model's eigenfrequencies in
+[0, 3 f_max] (a second sparse eigen-solve, for the check), whose largest relative difference
+to the reduced ones is error_f_res; run up to UDMAP_BENCH_REDUCE_CHECK_MAX DOFs (default 2e4,
+as it doubles the cost). Targets: 10^5 DOFs under 60 s and 4 GB, 10^6 under 15 min and 20 GB.
+UDMAP_BENCH_REDUCE_SIZES (e.g. "1e4,1e5,1e6") overrides the sizes.
+"""
+from __future__ import annotations
+
+import argparse
+import json
+import os
+import resource
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+import numpy as np
+import scipy.sparse as sp
+
+ROOT = Path(__file__).resolve().parents[1]
+F_MAX = 230.0
+TARGETS = {100_000: (60.0, 4.0), 1_000_000: (900.0, 20.0)}
+
+
+def child(directory: Path, check: bool) -> None:
+    from udmap.fe import FEModel
+    from udmap.reduction import platform_centred_reduction
+    z = np.load(directory / "model.npz")
+    fe = FEModel(K=sp.load_npz(directory / "K.npz").tocsr(), M=sp.load_npz(directory / "M.npz").tocsr(),
+                 dof_node=z["dof_node"], dof_comp=z["dof_comp"], node_ids=z["node_ids"],
+                 node_xyz=z["node_xyz"])
+    ru0 = resource.getrusage(resource.RUSAGE_SELF)
+    t0 = time.perf_counter()
+    red = platform_centred_reduction(
+        fe, platform_nodes=z["platform"], ref_point=z["ref_point"], axis=z["axis"],
+        exc_node=int(z["exc_node"]), exc_direction=z["exc_direction"],
+        stress_rows=[z["gauge_row"]], f_max=F_MAX, check_full=check)
+    seconds = time.perf_counter() - t0
+    ru1 = resource.getrusage(resource.RUSAGE_SELF)
+    cpu = (ru1.ru_utime - ru0.ru_utime) + (ru1.ru_stime - ru0.ru_stime)
+    rss_gb = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss * 1024 / 1e9
+    err = None
+    if check and red.freqs_full.size == red.freqs_reduced.size and red.freqs_full.size:
+        err = float(np.max(np.abs(red.freqs_reduced / red.freqs_full - 1)))
+    info = {k: v for k, v in red.info.items() if k != "freqs_reduced_all"}
+    print(json.dumps({"seconds": seconds, "cpu_seconds": cpu, "peak_rss_gb": rss_gb, "error_f_res": err,
+                      "freqs_full": red.freqs_full.tolist(),
+                      "freqs_reduced": red.freqs_reduced.tolist(), "info": info}))
+
+
+def measure(n_dofs: int, tmp: Path) -> list[dict]:
+    from udmap.fe.generator import generate_blade
+    t0 = time.perf_counter()
+    b = generate_blade(n_dofs)
+    t_gen = time.perf_counter() - t0
+    fe = b.fe
+    sp.save_npz(tmp / "K.npz", fe.K, compressed=False)
+    sp.save_npz(tmp / "M.npz", fe.M, compressed=False)
+    np.savez(tmp / "model.npz", dof_node=fe.dof_node, dof_comp=fe.dof_comp, node_ids=fe.node_ids,
+             node_xyz=fe.node_xyz, platform=b.platform_nodes, ref_point=b.ref_point,
+             axis=b.axis, exc_node=b.exc_node, exc_direction=b.exc_direction,
+             gauge_row=b.gauge_row())
+    ndof = fe.K.shape[0]
+    nnz = fe.K.nnz
+    del b, fe
+    label = f"1e{int(round(np.log10(n_dofs)))}"
+    records = []
+    # the full check (a second sparse eigen-solve) up to UDMAP_BENCH_REDUCE_CHECK_MAX DOFs
+    check_max = float(os.environ.get("UDMAP_BENCH_REDUCE_CHECK_MAX", "2e4"))
+    checks = [False, True] if n_dofs <= check_max else [False]
+    for check in checks:
+        env = dict(os.environ, PYTHONPATH=str(ROOT / "wrappers" / "python"))
+        r = subprocess.run([sys.executable, __file__, "--child", str(tmp)] +
+                           (["--check"] if check else []), env=env, capture_output=True,
+                           text=True)
+        if r.returncode != 0:
+            raise SystemExit(f"bench_reduce: {ndof} DOFs failed:\n{r.stderr}")
+        out = json.loads(r.stdout.strip().splitlines()[-1])
+        method = "reduce_full_check" if check else "reduce"
+        target = TARGETS.get(n_dofs)
+        rec = {"case": f"generated_blade_{label}", "method": method,
+               "setting": f"{ndof} DOFs, f_max {F_MAX:g} Hz",
+               "seconds_median": out["seconds"], "seconds_min": out["seconds"],
+               "seconds_max": out["seconds"], "repeats": 1, "error_gamma_P": None,
+               "error_sigma_a": None, "error_f_res": out["error_f_res"], "dofs": ndof,
+               "nnz_K": nnz, "cpu_seconds": out["cpu_seconds"],
+               "peak_rss_gb": out["peak_rss_gb"], "generation_seconds": t_gen,
+               "r": out["info"]["r"], "n_modes": out["info"]["n_modes"],
+               "factor_entries": out["info"]["factor_entries"],
+               "timings": out["info"]["timings"], "freqs_full": out["freqs_full"],
+               "freqs_reduced": out["freqs_reduced"], "cpu_count": os.cpu_count(),
+               "load_average": os.getloadavg()[0]}
+        if target:
+            rec["target_seconds"], rec["target_gb"] = target
+            rec["meets_target"] = (out["seconds"] < target[0] and out["peak_rss_gb"] < target[1])
+        print(f"  reduce {ndof:>8d} DOFs{' + full check' if check else '':>13}: "
+              f"{out['seconds']:8.2f} s (cpu {out['cpu_seconds']:.2f} s), peak {out['peak_rss_gb']:6.2f} GB, r = {rec['r']}, "
+              f"freq error {out['error_f_res']}", flush=True)
+        records.append(rec)
+    return records
+
+
+def main() -> int:
+    ap = argparse.ArgumentParser(description=__doc__)
+    ap.add_argument("--json", help="output file for the records")
+    ap.add_argument("--child", help=argparse.SUPPRESS)
+    ap.add_argument("--check", action="store_true", help=argparse.SUPPRESS)
+    args = ap.parse_args()
+    if args.child:
+        child(Path(args.child), args.check)
+        return 0
+    sizes = os.environ.get("UDMAP_BENCH_REDUCE_SIZES")
+    if sizes:
+        ns = [int(float(s)) for s in sizes.split(",")]
+    else:
+        ns = [10_000, 100_000] + ([1_000_000] if os.environ.get("UDMAP_BENCH_1E6") == "1" else [])
+    records = []
+    for n in ns:
+        with tempfile.TemporaryDirectory() as tmp:
+            records += measure(n, Path(tmp))
+    if args.json:
+        Path(args.json).write_text(json.dumps(records, indent=1) + "\n")
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
