@@ -64,6 +64,9 @@ class Case:
     analysis: dict
     name: str = "case"
     base_dir: Path = field(default_factory=Path.cwd)
+    #: For an ``fe`` blade: the validated ``fe`` section and its reduction (frequencies of the
+    #: full and reduced model, cache directory); ``blade`` is then the reduced ``matrices`` blade.
+    fe: dict | None = None
 
     def to_dict(self) -> dict:
         return {"name": self.name, "blade": copy.deepcopy(self.blade),
@@ -173,9 +176,13 @@ def validate(data: dict, base_dir: Path | str = ".") -> Case:
                 if not p.is_file():
                     raise InputError(f"blade.{key}: file not found: {p}")
                 blade[key] = str(p)
+    elif kind == "fe":
+        from .fe.case import validate_fe
+        blade = validate_fe(blade_in, base_dir)
     else:
-        raise InputError(f"blade.kind must be 'beam' or 'matrices', got {json.dumps(kind)}")
+        raise InputError(f"blade.kind must be 'beam', 'matrices' or 'fe', got {json.dumps(kind)}")
     blade["kind"] = kind
+    kind_blade = kind
 
     damper_in = data["damper"]
     if not isinstance(damper_in, dict):
@@ -204,7 +211,13 @@ def validate(data: dict, base_dir: Path | str = ".") -> Case:
     name = data.get("name", "case")
     if not isinstance(name, str):
         raise InputError("name must be a string")
-    return Case(blade=blade, damper=damper, analysis=analysis, name=name, base_dir=base_dir)
+    fe = None
+    if kind_blade == "fe":
+        # Every command works on the reduced matrices blade (reduced once, cached by content).
+        from .fe.case import resolve
+        blade, fe = resolve(blade, analysis)
+    return Case(blade=blade, damper=damper, analysis=analysis, name=name, base_dir=base_dir,
+                fe=fe)
 
 
 def read_table_csv(path: Path) -> list[tuple[float, float, float]]:
