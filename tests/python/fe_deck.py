@@ -118,7 +118,7 @@ def assemble(deck: Deck, E=E, nu=NU, rho=RHO):
 
 
 def write_inp(deck: Deck, path: Path, step: str, extra_nodes=(), extra: str = "",
-              clamp=True) -> None:
+              clamp=True, E=E, rho=RHO) -> None:
     """A CalculiX deck: mesh, material, the clamp and then ``extra`` and the ``step`` text."""
     lines = ["*HEADING", "udmap test blade", "*NODE, NSET=NALL"]
     lines += [f"{i}, {x:.17g}, {y:.17g}, {z:.17g}" for i, (x, y, z) in zip(deck.node_ids, deck.xyz)]
@@ -127,7 +127,7 @@ def write_inp(deck: Deck, path: Path, step: str, extra_nodes=(), extra: str = ""
     lines += [", ".join(str(v) for v in [k + 1, *e]) for k, e in enumerate(deck.elements)]
     lines += ["*NSET, NSET=PLAT"] + [str(i) for i in deck.platform]
     lines += ["*NSET, NSET=ROOT"] + [str(i) for i in deck.clamp]
-    lines += ["*MATERIAL, NAME=STEEL", "*ELASTIC", f"{E:.17g}, {NU}", "*DENSITY", f"{RHO}",
+    lines += ["*MATERIAL, NAME=STEEL", "*ELASTIC", f"{E!r}, {NU}", "*DENSITY", f"{rho!r}",
               "*SOLID SECTION, ELSET=EALL, MATERIAL=STEEL"]
     if clamp:
         lines += ["*BOUNDARY", "ROOT, 1, 3"]
