@@ -31,7 +31,7 @@ class Deck:
     gauge: tuple              # two nodes on the airfoil's x+ face above the platform
 
 
-def make_deck(h=0.004, neck=(0.012, 0.012, 0.016), slab=(0.032, 0.020, 0.004),
+def make_deck(h=0.004, neck=(0.016, 0.016, 0.016), slab=(0.032, 0.024, 0.004),
               airfoil=(0.008, 0.016, 0.048)) -> Deck:
     """Neck (bx, by, L), platform slab (bx, by, t) and airfoil plate (bx, by, L), centred on z."""
     def n(v):
@@ -39,7 +39,8 @@ def make_deck(h=0.004, neck=(0.012, 0.012, 0.016), slab=(0.032, 0.020, 0.004),
         assert abs(k * h - v) < 1e-12, "dimensions must be multiples of h"
         return k
     zn, zs, za = n(neck[2]), n(slab[2]), n(airfoil[2])
-    nx, ny = n(slab[0]) // 2, n(slab[1]) // 2
+    for b in (*neck[:2], *slab[:2], *airfoil[:2]):
+        assert n(b) % 2 == 0, "widths must be even multiples of h (centred sections)"
     cells = []
     for k in range(zn + zs + za):
         bx, by = (neck if k < zn else slab if k < zn + zs else airfoil)[:2]
@@ -66,7 +67,6 @@ def make_deck(h=0.004, neck=(0.012, 0.012, 0.016), slab=(0.032, 0.020, 0.004),
     xa = airfoil[0] / 2
     exc = ids[(round(xa / h), 0, round(zm / h))]
     g = (ids[(round(xa / h), 0, zn + zs + 1)], ids[(round(xa / h), 0, zn + zs + 3)])
-    del nx, ny
     return Deck(node_ids, xyz, elements, h, clamp, platform, (z0, z1),
                 [0.0, 0.0, (z0 + z1) / 2], exc, g)
 
