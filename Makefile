@@ -3,7 +3,7 @@
 PYTHON ?= python3
 BUILD ?= build
 JOBS ?= $(shell nproc 2>/dev/null || echo 2)
-APT_PACKAGES := gfortran liblapack-dev libblas-dev libarpack2-dev pkg-config valgrind
+APT_PACKAGES := gfortran liblapack-dev libblas-dev libarpack2-dev pkg-config valgrind calculix-ccx
 PY_PACKAGES := numpy scipy matplotlib fmpy pytest wheel dask distributed
 export PYTHONPATH := $(CURDIR)/wrappers/python$(if $(PYTHONPATH),:$(PYTHONPATH))
 export PIP_BREAK_SYSTEM_PACKAGES := 1

@@ -265,7 +265,13 @@ def load_case(path: str | Path | None = None) -> Case:
         data = json.loads(text, parse_constant=reject_constant)
     except json.JSONDecodeError as exc:
         raise InputError(f"case file {path}: invalid JSON: {exc}") from None
-    return validate(data, path.resolve().parent)
+    try:
+        return validate(data, path.resolve().parent)
+    except InputError as exc:
+        blade = data.get("blade") if isinstance(data, dict) else None
+        if isinstance(blade, dict) and blade.get("kind") == "fe":
+            raise InputError(f"{exc} [case file {path}]") from None
+        raise
 
 
 def beam_params(blade: dict) -> dict:

@@ -224,14 +224,14 @@ def cmd_reduce(args) -> None:
     import os
     import shutil
     from .case import load_case
-    case = load_case(args.case)
-    if case.fe is None:
-        raise InputError(f"blade.kind: reduce needs an 'fe' blade ({args.case})")
     out = Path(args.out)
     if out.suffix.lower() != ".json":
         raise InputError(f"--out must name a .json case file, got {args.out}")
     if not out.parent.is_dir():
         raise InputError(f"--out: directory not found: {out.parent}")
+    case = load_case(args.case)
+    if case.fe is None:
+        raise InputError(f"blade.kind: reduce needs an 'fe' blade ({args.case})")
     raw = json.loads(Path(args.case).read_text())
     src = Path(case.fe["cache_dir"])
     blade = {"kind": "matrices"}
