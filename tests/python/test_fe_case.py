@@ -252,3 +252,31 @@ def test_bad_input_exits_2_and_writes_nothing(work, capsys, name):
     status, _, err2 = run(["backbone", d / "case.json", "--forces", FORCES], capsys)
     assert status == 2
 
+
+
+def test_units_mm_t_s(work, capsys):
+    """The same blade exported by CalculiX in mm, t, s, N, MPa gives the same results."""
+    d, deck, case, calls = work
+    mm = make_deck()
+    mm.xyz, mm.h = mm.xyz * 1e3, mm.h * 1e3
+    sub = d / "mm"
+    sub.mkdir()
+    write_inp(mm, sub / "blade.inp", "*STEP\n*FREQUENCY, SOLVER=MATRIXSTORAGE\n*END STEP",
+              E=2.0e5, rho=7.8e-9)
+    subprocess.run(["ccx", "-i", "blade"], cwd=sub, check=True, capture_output=True, timeout=100)
+    mcase = json.loads(json.dumps(case))
+    mcase["blade"]["units"] = "mm-t-s"
+    mcase["blade"]["platform"]["ref_point"] = [x * 1e3 for x in deck.ref_point]
+    mcase["blade"]["stress"]["E"] = 2.0e5
+    (sub / "case.json").write_text(json.dumps(mcase))
+    out = []
+    for c in (d / "case.json", sub / "case.json"):
+        status, text, err = run(["backbone", c, "--forces", FORCES, "--json"], capsys)
+        assert status == 0, err
+        out.append(json.loads(text))
+    assert calls == [1, 1]
+    a, b = out
+    assert b["f1_bare"] == pytest.approx(a["f1_bare"], rel=1e-9)
+    for p, q in zip(a["points"], b["points"]):
+        for key in ("f_res", "gamma_P", "sigma_a", "u_E"):
+            assert q[key] == pytest.approx(p[key], rel=1e-7), key

@@ -191,11 +191,27 @@ def gauge_row(fe, a: int, b: int, E: float) -> sp.csr_matrix:
     return sp.csr_matrix((vals, (np.zeros(len(cols), dtype=int), cols)), shape=(1, fe.n))
 
 
+def _si(blade: dict) -> dict:
+    """The case's lengths (ref_point, boxes) and gauge E in SI (the model is converted on
+    reading)."""
+    if blade["units"] == "SI":
+        return blade
+    b = json.loads(json.dumps(blade))
+    b["platform"]["ref_point"] = [x * 1e-3 for x in b["platform"]["ref_point"]]
+    for key in ("platform", "clamp"):
+        if key in b and "box" in b[key]:
+            b[key]["box"] = [[x * 1e-3 for x in c] for c in b[key]["box"]]
+    if "stress" in b and "E" in b["stress"]:
+        b["stress"]["E"] *= 1e6
+    return b
+
+
 def reduction_inputs(fe, blade: dict) -> dict:
     """The keyword arguments of ``platform_centred_reduction`` from the case, each checked
     against the model (node ids present, sets not empty, DOFs where they are needed)."""
     fmt, files = blade["format"], blade["files"]
     where = f"nodes of {files[_NODE_FILE[fmt]]}"
+    blade = _si(blade)
     has_dof = set(fe.dof_node.tolist())
     plat = _select(fe, blade["platform"], "blade.platform", where)
     for node in plat:
