@@ -280,3 +280,45 @@ def test_units_mm_t_s(work, capsys):
     for p, q in zip(a["points"], b["points"]):
         for key in ("f_res", "gamma_P", "sigma_a", "u_E"):
             assert q[key] == pytest.approx(p[key], rel=1e-7), key
+
+
+def test_stress_recovery_row_equals_the_gauge(work, capsys):
+    """A stress-recovery row file over the model's DOFs, here the gauge's own row (PHYSICS.md
+    1.3: sigma = E ((u_b - u_a) . e) / |x_b - x_a|, checked entry by entry), gives the gauge's
+    stress."""
+    from udmap.fe import read_fe
+    from udmap.fe.case import gauge_row
+    d, deck, case, calls = work
+    fe = read_fe(case["blade"], d)
+    a, b = deck.gauge
+    row = gauge_row(fe, a, b, 2.0e11).toarray().ravel()
+    xa, xb = fe.coords(a), fe.coords(b)
+    L = np.linalg.norm(xb - xa)
+    e = (xb - xa) / L
+    index = fe.dof_index()
+    expect = np.zeros(fe.n)
+    for c in range(3):
+        expect[index[(a, c + 1)]] -= 2.0e11 * e[c] / L
+        expect[index[(b, c + 1)]] += 2.0e11 * e[c] / L
+    np.testing.assert_array_equal(row, expect)
+    with open(d / "row.mtx", "w") as f:
+        f.write(f"%%MatrixMarket matrix array real general\n{fe.n} 1\n")
+        f.writelines(f"{v:.17g}\n" for v in row)
+    rcase = json.loads(json.dumps(case))
+    rcase["blade"]["stress"] = {"row": "row.mtx"}
+    (d / "row.json").write_text(json.dumps(rcase))
+    out = []
+    for c in (d / "case.json", d / "row.json"):
+        status, text, err = run(["backbone", c, "--forces", FORCES, "--json"], capsys)
+        assert status == 0, err
+        out.append(json.loads(text))
+    for p, q in zip(out[0]["points"], out[1]["points"]):
+        assert q["sigma_a"] == pytest.approx(p["sigma_a"], rel=1e-9)
+        assert q["f_res"] == pytest.approx(p["f_res"], rel=1e-12)
+    (d / "short.mtx").write_text(f"%%MatrixMarket matrix array real general\n{fe.n - 1} 1\n" +
+                                 "0\n" * (fe.n - 1))
+    rcase["blade"]["stress"] = {"row": "short.mtx"}
+    (d / "row.json").write_text(json.dumps(rcase))
+    status, _, err = run(["backbone", d / "row.json", "--forces", FORCES], capsys)
+    assert status == 2 and re.search(r"blade\.stress\.row: .*short\.mtx has \d+ entries but "
+                                     r"the matrices are", err), err
