@@ -358,11 +358,17 @@ def reduce_fe(blade: dict, f_max: float, *, use_cache: bool = True):
         meta = json.loads(meta_path.read_text())
         meta["cached"] = True
         return final, meta
-    fe = read_fe(blade, "/")
-    check_matrices(fe, blade)
-    kw = reduction_inputs(fe, blade)
-    from ..reduction import platform_centred_reduction
-    red = platform_centred_reduction(fe, n_modes=blade.get("modes"), f_max=f_max, **kw)
+    from ..progress import Progress
+    # Stages of a reduction that can take minutes: read, check, reduce (bar on a terminal).
+    with Progress(3, "fe reduction") as bar:
+        fe = read_fe(blade, "/")
+        bar.update()
+        check_matrices(fe, blade)
+        kw = reduction_inputs(fe, blade)
+        bar.update()
+        from ..reduction import platform_centred_reduction
+        red = platform_centred_reduction(fe, n_modes=blade.get("modes"), f_max=f_max, **kw)
+        bar.update()
     Mr = np.asarray(red.M)
     if not (np.all(np.isfinite(Mr)) and np.all(np.isfinite(np.asarray(red.K)))):
         raise UdmapError("the reduced matrices are not finite")
