@@ -47,6 +47,12 @@ def symmetric_from_triplets(rows, cols, vals, n: int, field: str) -> sp.csr_matr
 
 def read_triplets(path: Path, field: str, skip_header=True):
     """Whitespace or comma separated ``row col value`` lines; comments start with % # or *."""
+    try:   # numpy's C parser for the plain whitespace layout; the loop below names bad lines
+        a = np.loadtxt(path, comments="%", ndmin=2, dtype=float)
+        if a.shape[1] == 3 and np.all(a[:, :2] == np.round(a[:, :2])):
+            return a[:, 0].astype(np.int64), a[:, 1].astype(np.int64), a[:, 2].copy()
+    except (ValueError, OSError):
+        pass
     r, c, v = [], [], []
     for lineno, line in enumerate(read_text(path, field).splitlines(), 1):
         s = line.strip()
@@ -86,7 +92,14 @@ def read_mm(path: Path, field: str, vector=False):
         raise InputError(f"{field}: {path}: no size line")
     try:
         size = [int(t) for t in data[0].split()]
-        body = np.array([[number(t) for t in s.split()] for s in data[1:]], dtype=float)
+        body = None
+        if not any("," in x for x in data[1:]):
+            try:   # numpy's C parser; decimal commas and odd lines take the loop below
+                body = np.loadtxt(data[1:], ndmin=2, dtype=float)
+            except ValueError:
+                body = None
+        if body is None:
+            body = np.array([[number(t) for t in s.split()] for s in data[1:]], dtype=float)
     except ValueError:
         raise InputError(f"{field}: {path}: a line is not numbers") from None
     nr, nc = size[0], size[1]
