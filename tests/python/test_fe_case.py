@@ -173,3 +173,22 @@ def test_stress_recovery_row_equals_the_gauge(work, capsys):
     status, _, err = run(["backbone", d / "row.json", "--forces", FORCES], capsys)
     assert status == 2 and re.search(r"blade\.stress\.row: .*short\.mtx has \d+ entries but "
                                      r"the matrices are", err), err
+
+
+def test_reduce_keeps_a_table_damper_file_reachable(work, capsys):
+    """A measured table damper keeps pointing at its CSV from the reduced case's directory."""
+    d, _, case, _ = work
+    (d / "k.csv").write_text("gamma,k_re,k_im\n1e-6,1.0e5,0\n1e-4,5.0e4,2.0e4\n1e-2,1.0e3,5.0e2\n")
+    case["damper"] = {"kind": "table", "file": "k.csv"}
+    (d / "case.json").write_text(json.dumps(case))
+    (d / "elsewhere" / "deeper").mkdir(parents=True)
+    out = d / "elsewhere" / "deeper" / "r.json"
+    assert run(["reduce", d / "case.json", "--out", out], capsys)[0] == 0
+    new = json.loads(out.read_text())
+    assert new["damper"] == {"kind": "table", "file": "../../k.csv"}
+    tables = []
+    for c in (d / "case.json", out):
+        status, text, err = run(["table", c, "--gammas", "1e-5,1e-3", "--json"], capsys)
+        assert status == 0, err
+        tables.append(json.loads(text))
+    assert tables[0] == tables[1]
