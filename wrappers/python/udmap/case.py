@@ -169,6 +169,9 @@ class Case:
     analysis: dict
     name: str = "case"
     base_dir: Path = field(default_factory=Path.cwd)
+    #: For an ``fe`` blade: the validated ``fe`` section and its reduction (frequencies of the
+    #: full and reduced model, cache directory); ``blade`` is then the reduced ``matrices`` blade.
+    fe: dict | None = None
 
     def to_dict(self) -> dict:
         return {"name": self.name, "blade": copy.deepcopy(self.blade),
@@ -363,7 +366,7 @@ def _check_section(section: str, data: dict, spec: dict[str, Field], extra=("kin
 
 
 def _kind_of(section: str, data: dict) -> str:
-    kinds = [k for s, k in SCHEMA if s == section]
+    kinds = [k for s, k in SCHEMA if s == section] + (["fe"] if section == "blade" else [])
     kind = data.get("kind")
     if not (isinstance(kind, str) and kind in kinds):
         raise InputError(f"{section}.kind must be one of {', '.join(kinds)}, got {_show(kind)}")
@@ -407,6 +410,11 @@ def validate(data: dict, base_dir: Path | str = ".") -> Case:
         kinds = [k for s, k in SCHEMA if s == section]
         if kinds == [None]:
             sections[section] = _check_section(section, raw, SCHEMA[(section, None)], extra=())
+        elif section == "blade" and raw.get("kind") == "fe":
+            # an FE blade has its own checks (udmap.fe.case): files, node sets, directions
+            from .fe.case import validate_fe
+            sections[section] = validate_fe(raw, base_dir)
+            sections[section]["kind"] = "fe"
         else:
             kind = _kind_of(section, raw)
             sections[section] = _check_section(section, raw, SCHEMA[(section, kind)])
@@ -423,8 +431,13 @@ def validate(data: dict, base_dir: Path | str = ".") -> Case:
     if not analysis["f_max"] > analysis["f_min"]:
         raise InputError(f"analysis.f_max ({analysis['f_max']}) must exceed analysis.f_min "
                          f"({analysis['f_min']})")
+    fe = None
+    if blade["kind"] == "fe":
+        # Every command works on the reduced matrices blade (reduced once, cached by content).
+        from .fe.case import resolve
+        blade, fe = resolve(blade, analysis)
     return Case(blade=blade, damper=damper, analysis=analysis, name=top["name"],
-                base_dir=base_dir)
+                base_dir=base_dir, fe=fe)
 
 
 #: Rows of a damper table: gamma [rad] and |k| [N m/rad] bounds.
@@ -510,7 +523,14 @@ def loads_case(text: str, base_dir: Path | str = ".", source: str = "case") -> C
         raise InputError(f"{source}: invalid JSON: {exc}") from None
     except RecursionError:
         raise InputError(f"{source}: invalid JSON: nested too deeply") from None
-    return validate(data, base_dir)
+    try:
+        return validate(data, base_dir)
+    except InputError as exc:
+        blade = data.get("blade") if isinstance(data, dict) else None
+        if isinstance(blade, dict) and blade.get("kind") == "fe":
+            # the fe section names files of its own: say which case they belong to
+            raise InputError(f"{exc} [{source}]") from None
+        raise
 
 
 def beam_params(blade: dict) -> dict:

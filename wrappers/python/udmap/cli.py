@@ -273,6 +273,61 @@ def cmd_dti(args) -> None:
     _emit(args, data, table)
 
 
+def cmd_reduce(args) -> None:
+    """Writes the reduced ``matrices`` case of an ``fe`` case (files beside ``--out``)."""
+    import os
+    import shutil
+    from .case import load_case
+    out = Path(args.out)
+    if out.suffix.lower() != ".json":
+        raise InputError(f"--out must name a .json case file, got {args.out}")
+    if not out.parent.is_dir():
+        raise InputError(f"--out: directory not found: {out.parent}")
+    case = load_case(args.case)
+    if case.fe is None:
+        raise InputError(f"blade.kind: reduce needs an 'fe' blade ({args.case})")
+    raw = json.loads(Path(args.case).read_text())
+    src = Path(case.fe["cache_dir"])
+    blade = {"kind": "matrices"}
+    moves = []
+    for key, name in case.fe["files"].items():
+        target = out.parent / f"{out.stem}_{name}"
+        tmp = target.with_name(f".{target.name}.tmp")
+        shutil.copyfile(src / name, tmp)
+        moves.append((tmp, target))
+        blade[key] = target.name
+    blade.update(gamma_dof=case.blade["gamma_dof"], exc_dof=case.blade["exc_dof"],
+                 zeta=case.blade["zeta"])
+    damper = dict(raw["damper"])
+    if damper.get("kind") == "table":
+        damper["file"] = os.path.relpath(case.damper["file"], out.parent.resolve())
+    new = {"name": raw.get("name", case.name),
+           "description": f"Platform Centred Reduction of {Path(args.case).name} "
+                          f"({case.fe['n_full']} DOFs -> {case.fe['n_reduced']})",
+           "blade": blade, "damper": damper, "analysis": raw["analysis"]}
+    tmp = out.with_name(f".{out.name}.tmp")
+    tmp.write_text(json.dumps(new, indent=2) + "\n")
+    moves.append((tmp, out))
+    for a, b in moves:          # the case file last: it is complete only with its matrices
+        os.replace(a, b)
+    data = {"out": str(out), "n_full": case.fe["n_full"], "n_reduced": case.fe["n_reduced"],
+            "gamma_dof": case.blade["gamma_dof"], "exc_dof": case.blade["exc_dof"],
+            "cached": case.fe["cached"], "freqs_full": case.fe["freqs_full"],
+            "freqs_reduced": case.fe["freqs_reduced"]}
+
+    def table(d):
+        print(f"wrote {d['out']}: {d['n_full']} DOFs reduced to {d['n_reduced']} "
+              f"(gamma_dof {d['gamma_dof']}, exc_dof {d['exc_dof']}"
+              f"{', from the cache' if d['cached'] else ''})")
+        ff, fr = d["freqs_full"], d["freqs_reduced"]
+        rows = [[i + 1, ff[i] if i < len(ff) else None, fr[i] if i < len(fr) else None,
+                 (fr[i] - ff[i]) / ff[i] if i < min(len(ff), len(fr)) and ff[i] > 0 else None]
+                for i in range(max(len(ff), len(fr)))]
+        _print_rows(["mode", "full [Hz]", "reduced [Hz]", "rel. diff"], rows,
+                    ["d", ".9g", ".9g", ".2e"])
+    _emit(args, data, table)
+
+
 def cmd_demo(args) -> None:
     from .demo import run_demo
     from .case import load_case
@@ -323,6 +378,10 @@ def build_parser() -> argparse.ArgumentParser:
     g.add_argument("--freq", type=_positive, help="excitation frequency [Hz]")
     g.add_argument("--peak", action="store_true", help="search the frequency of the largest "
                    "first harmonic near the single-harmonic peak")
+    p = add("reduce", cmd_reduce, "Platform Centred Reduction of an fe case to a matrices case",
+            forces=False)
+    p.add_argument("--out", required=True, help="the reduced case file (JSON) to write; its "
+                   "matrices are written beside it")
     p = sub.add_parser("demo", help="the main job on the embedded default (make demo)")
     p.add_argument("case", metavar="CASE", nargs="?", default=None,
                    help="case file (default: the embedded blade A)")

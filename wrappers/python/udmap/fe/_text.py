@@ -1,0 +1,163 @@
+"""Text parsing shared by the readers: numbers (also with decimal commas), sparse triplets,
+Matrix Market files, symmetric storage."""
+from __future__ import annotations
+
+import re
+from pathlib import Path
+
+import numpy as np
+import scipy.sparse as sp
+
+from .._lib import InputError
+
+
+def read_text(path: Path, field: str) -> str:
+    try:
+        return Path(path).read_text(errors="replace")
+    except OSError as exc:
+        raise InputError(f"{field}: cannot read {path}: {exc.strerror}") from None
+
+
+def number(token: str) -> float:
+    """A float, also written with a decimal comma (``0,15``, ``1,e-001``) or a Fortran ``D``."""
+    t = token.strip().replace(",", ".").replace("D", "E").replace("d", "e")
+    if t.endswith("."):
+        t += "0"
+    t = re.sub(r"\.([eE])", r".0\1", t)
+    return float(t)
+
+
+def symmetric_from_triplets(rows, cols, vals, n: int, field: str) -> sp.csr_matrix:
+    """Full symmetric storage from triplets (1-based) holding one triangle or both.
+
+    One triangle is mirrored; when both are present each off-diagonal pair must agree."""
+    rows = np.asarray(rows, dtype=np.int64) - 1
+    cols = np.asarray(cols, dtype=np.int64) - 1
+    vals = np.asarray(vals, dtype=float)
+    if len(rows) and (rows.min() < 0 or cols.min() < 0 or rows.max() >= n or cols.max() >= n):
+        raise InputError(f"{field}: an index is outside the {n} x {n} matrix")
+    A = sp.coo_matrix((vals, (rows, cols)), shape=(n, n)).tocsr()
+    A.sum_duplicates()
+    upper, lower = np.any(rows < cols), np.any(rows > cols)
+    if upper and lower:
+        return A
+    off = sp.triu(A, 1) if upper else sp.tril(A, -1)
+    return sp.csr_matrix(A + off.T)
+
+
+def read_triplets(path: Path, field: str, skip_header=True):
+    """Whitespace or comma separated ``row col value`` lines; comments start with % # or *."""
+    try:   # numpy's C parser for the plain whitespace layout; the loop below names bad lines
+        a = np.loadtxt(path, comments="%", ndmin=2, dtype=float)
+        if a.shape[1] == 3 and np.all(a[:, :2] == np.round(a[:, :2])):
+            return a[:, 0].astype(np.int64), a[:, 1].astype(np.int64), a[:, 2].copy()
+    except (ValueError, OSError):
+        pass
+    r, c, v = [], [], []
+    for lineno, line in enumerate(read_text(path, field).splitlines(), 1):
+        s = line.strip()
+        if not s or s[0] in "%#*" or s.startswith("**"):
+            continue
+        parts = s.replace(",", " ").split()
+        try:
+            i, j, x = int(parts[0]), int(parts[1]), float(parts[2].replace("D", "E"))
+            if len(parts) != 3:
+                raise ValueError
+        except (ValueError, IndexError):
+            raise InputError(f"{field}: {path}:{lineno}: expected 'row col value', got "
+                             f"{line.strip()!r}") from None
+        r.append(i)
+        c.append(j)
+        v.append(x)
+    return np.array(r, dtype=np.int64), np.array(c, dtype=np.int64), np.array(v)
+
+
+def read_mm(path: Path, field: str, vector=False):
+    """A Matrix Market file: a sparse symmetric matrix (full storage) or, with ``vector``,
+    the entries of an n x 1 / 1 x n array or coordinate matrix as a flat array."""
+    lines = read_text(path, field).splitlines()
+    if not lines or not lines[0].lower().startswith("%%matrixmarket"):
+        raise InputError(f"{field}: {path} is not a Matrix Market file (no %%MatrixMarket "
+                         "header)")
+    head = lines[0].lower().split()
+    if len(head) < 5 or head[1] != "matrix" or head[2] not in ("coordinate", "array"):
+        raise InputError(f"{field}: {path}: unsupported header {lines[0].strip()!r}")
+    fmt, sym = head[2], head[4]
+    if head[3] not in ("real", "integer", "double"):
+        raise InputError(f"{field}: {path}: only real or integer matrices, got {head[3]!r}")
+    if sym not in ("general", "symmetric"):
+        raise InputError(f"{field}: {path}: only general or symmetric storage, got {sym!r}")
+    data = [s for s in (x.strip() for x in lines[1:]) if s and not s.startswith("%")]
+    if not data:
+        raise InputError(f"{field}: {path}: no size line")
+    try:
+        size = [int(t) for t in data[0].split()]
+        body = None
+        if not any("," in x for x in data[1:]):
+            try:   # numpy's C parser; decimal commas and odd lines take the loop below
+                body = np.loadtxt(data[1:], ndmin=2, dtype=float)
+            except ValueError:
+                body = None
+        if body is None:
+            body = np.array([[number(t) for t in s.split()] for s in data[1:]], dtype=float)
+    except ValueError:
+        raise InputError(f"{field}: {path}: a line is not numbers") from None
+    nr, nc = size[0], size[1]
+    if fmt == "coordinate":
+        if len(size) != 3 or (len(body) and body.shape[1] != 3) or len(body) != size[2]:
+            raise InputError(f"{field}: {path}: expected {size[-1]} 'row col value' lines")
+        body = body.reshape(-1, 3)
+        rows, cols, vals = body[:, 0].astype(np.int64), body[:, 1].astype(np.int64), body[:, 2]
+    else:
+        if len(size) != 2:
+            raise InputError(f"{field}: {path}: bad array size line {data[0]!r}")
+        vals = body.ravel()
+        if sym == "symmetric":
+            jj, ii = np.triu_indices(nr)   # column-major lower triangle
+            rows, cols = ii + 1, jj + 1
+            order = np.lexsort((rows, cols))
+            rows, cols = rows[order], cols[order]
+        else:
+            cols, rows = np.divmod(np.arange(nr * nc), nr)
+            rows, cols = rows + 1, cols + 1
+        if len(vals) != len(rows):
+            raise InputError(f"{field}: {path}: expected {len(rows)} values, got {len(vals)}")
+    if vector:
+        if min(nr, nc) != 1:
+            raise InputError(f"{field}: {path}: expected a vector (n x 1), got {nr} x {nc}")
+        out = np.zeros(max(nr, nc))
+        np.add.at(out, (rows if nc == 1 else cols) - 1, vals)
+        return out
+    if nr != nc:
+        raise InputError(f"{field}: {path}: the matrix must be square, got {nr} x {nc}")
+    if sym == "symmetric" and np.any(rows < cols):
+        raise InputError(f"{field}: {path}: symmetric storage holds the lower triangle only")
+    return symmetric_from_triplets(rows, cols, vals, nr, field)
+
+
+def parse_deck_nodes(path: Path, field: str):
+    """Node ids and coordinates of the ``*NODE`` blocks of an Abaqus or CalculiX deck
+    (node lines ``id, x, y, z``; keyword lines start with ``*``, comments with ``**``)."""
+    ids, xyz = [], []
+    in_node = False
+    for lineno, line in enumerate(read_text(path, field).splitlines(), 1):
+        s = line.strip()
+        if not s or s.startswith("**"):
+            continue
+        if s.startswith("*"):
+            key = s[1:].split(",")[0].strip().upper()
+            in_node = key == "NODE"
+            continue
+        if not in_node:
+            continue
+        parts = [p for p in s.split(",") if p.strip()]
+        try:
+            ids.append(int(parts[0]))
+            c = [float(p) for p in parts[1:4]] + [0.0] * (4 - len(parts))
+        except (ValueError, IndexError):
+            raise InputError(f"{field}: {path}:{lineno}: expected 'id, x, y, z', got "
+                             f"{s!r}") from None
+        xyz.append(c)
+    if not ids:
+        raise InputError(f"{field}: {path}: no *NODE lines")
+    return np.array(ids, dtype=np.int64), np.array(xyz, dtype=float).reshape(-1, 3)

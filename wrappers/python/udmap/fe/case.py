@@ -1,0 +1,470 @@
+"""The ``fe`` blade of a case: validation, the stress witness and the excitation from the case,
+the Platform Centred Reduction cached by the content of its inputs, and the reduced ``matrices``
+blade every command then uses (PHYSICS.md 1.3, INTERFACES.md "Finite element blade").
+
+The cache lives in ``$UDMAP_CACHE_DIR`` (default ``$XDG_CACHE_HOME/udmap`` or ``~/.cache/udmap``),
+one directory per key: the SHA-256 of the blade section (without ``zeta``, which the reduction
+does not use), ``analysis.f_max`` and the bytes of every input file. Directories are written
+under a temporary name and renamed, so a cache entry is complete or absent.
+"""
+from __future__ import annotations
+
+import hashlib
+import json
+import math
+import os
+import shutil
+import tempfile
+from pathlib import Path
+
+import numpy as np
+import scipy.sparse as sp
+
+from .._lib import InputError, UdmapError
+from . import FORMAT_FILES, UNITS, read_fe, resolve_files
+
+CACHE_VERSION = "fe-reduction-1"
+_NODE_FILE = {"calculix": "inp", "abaqus": "inp", "ansys": "nodes", "nastran": "bdf",
+              "matrix_market": "nodes"}
+_MASS_FILE = {"calculix": "mas", "abaqus": "mass", "ansys": "mass", "nastran": "pch",
+              "matrix_market": "M"}
+_FIELDS = ("kind", "format", "files", "units", "platform", "clamp", "excitation", "stress",
+           "zeta", "modes", "dmig")
+
+
+def _num(path, v, positive=False):
+    if isinstance(v, bool) or not isinstance(v, (int, float)) or not math.isfinite(v):
+        raise InputError(f"{path} must be a finite number, got {json.dumps(v)}")
+    if positive and not v > 0:
+        raise InputError(f"{path} must be positive, got {v}")
+    return float(v)
+
+
+def _vec3(path, v, nonzero=False):
+    if not (isinstance(v, list) and len(v) == 3):
+        raise InputError(f"{path} must be three numbers [x, y, z], got {json.dumps(v)}")
+    out = [_num(f"{path}[{i}]", x) for i, x in enumerate(v)]
+    if nonzero and not np.linalg.norm(out) > 0:
+        raise InputError(f"{path} has zero length: it must give a direction")
+    return out
+
+
+def _node_id(path, v):
+    if isinstance(v, bool) or not isinstance(v, int):
+        raise InputError(f"{path} must be a node id (integer), got {json.dumps(v)}")
+    return v
+
+
+def _node_set(path, sec, allow_extra=()):
+    if not isinstance(sec, dict):
+        raise InputError(f"{path} must be an object with 'nodes' or 'box'")
+    for key in sec:
+        if key not in ("nodes", "box", *allow_extra):
+            raise InputError(f"{path}.{key}: unknown field")
+    if ("nodes" in sec) == ("box" in sec):
+        raise InputError(f"{path}: give exactly one of 'nodes' (ids) or 'box'")
+    if "nodes" in sec:
+        nodes = sec["nodes"]
+        if not isinstance(nodes, list):
+            raise InputError(f"{path}.nodes must be a list of node ids")
+        if not nodes:
+            raise InputError(f"{path}.nodes is empty: the set needs at least one node")
+        return {"nodes": [_node_id(f"{path}.nodes[{i}]", v) for i, v in enumerate(nodes)]}
+    box = sec["box"]
+    if not (isinstance(box, list) and len(box) == 2):
+        raise InputError(f"{path}.box must be two corners [[x0, y0, z0], [x1, y1, z1]]")
+    b = [_vec3(f"{path}.box[{i}]", c) for i, c in enumerate(box)]
+    if any(lo > hi for lo, hi in zip(*b)):
+        raise InputError(f"{path}.box: the first corner must be the lower one in x, y and z")
+    return {"box": b}
+
+
+def validate_fe(blade_in: dict, base_dir: Path) -> dict:
+    """Checks an ``fe`` blade section without reading the model; returns it normalised (files
+    as absolute paths, defaults filled in)."""
+    for key in blade_in:
+        if key not in _FIELDS:
+            raise InputError(f"blade.{key}: unknown field (allowed: {', '.join(_FIELDS)})")
+    for key in ("format", "files", "platform", "excitation"):
+        if key not in blade_in:
+            raise InputError(f"blade.{key}: missing field")
+    out = {"kind": "fe", "format": blade_in["format"]}
+    out["files"] = {k: str(p) for k, p in resolve_files(blade_in, base_dir).items()}
+    out["units"] = blade_in.get("units", "SI")
+    if out["units"] not in UNITS:
+        raise InputError(f"blade.units must be one of {', '.join(UNITS)}, got "
+                         f"{json.dumps(out['units'])}")
+    plat = blade_in["platform"]
+    if not isinstance(plat, dict):
+        raise InputError("blade.platform must be an object")
+    for key in ("ref_point", "axis"):
+        if key not in plat:
+            raise InputError(f"blade.platform.{key}: missing field")
+    out["platform"] = _node_set("blade.platform", {k: v for k, v in plat.items()
+                                                   if k not in ("ref_point", "axis")})
+    out["platform"]["ref_point"] = _vec3("blade.platform.ref_point", plat["ref_point"])
+    out["platform"]["axis"] = _vec3("blade.platform.axis", plat["axis"], nonzero=True)
+    if "clamp" in blade_in and blade_in["clamp"] is not None:
+        out["clamp"] = _node_set("blade.clamp", blade_in["clamp"])
+    exc = blade_in["excitation"]
+    if not isinstance(exc, dict) or set(exc) != {"node", "direction"}:
+        raise InputError("blade.excitation must be {\"node\": id, \"direction\": [x, y, z]}")
+    out["excitation"] = {"node": _node_id("blade.excitation.node", exc["node"]),
+                         "direction": _vec3("blade.excitation.direction", exc["direction"],
+                                            nonzero=True)}
+    if "stress" in blade_in and blade_in["stress"] is not None:
+        st = blade_in["stress"]
+        if isinstance(st, dict) and set(st) == {"gauge", "E"}:
+            g = st["gauge"]
+            if not (isinstance(g, list) and len(g) == 2):
+                raise InputError("blade.stress.gauge must be two node ids [a, b]")
+            g = [_node_id(f"blade.stress.gauge[{i}]", v) for i, v in enumerate(g)]
+            if g[0] == g[1]:
+                raise InputError("blade.stress.gauge: the two nodes must differ")
+            out["stress"] = {"gauge": g, "E": _num("blade.stress.E", st["E"], positive=True)}
+        elif isinstance(st, dict) and set(st) == {"row"}:
+            if not isinstance(st["row"], str) or not st["row"]:
+                raise InputError("blade.stress.row must be a file path (string)")
+            p = Path(st["row"])
+            p = p if p.is_absolute() else base_dir / p
+            if not p.is_file():
+                raise InputError(f"blade.stress.row: file not found: {p}")
+            out["stress"] = {"row": str(p)}
+        else:
+            raise InputError("blade.stress must be {\"gauge\": [a, b], \"E\": ...} or "
+                             "{\"row\": \"file.mtx\"}")
+    out["zeta"] = _num("blade.zeta", blade_in.get("zeta", 0.0))
+    if out["zeta"] < 0:
+        raise InputError(f"blade.zeta must be non-negative, got {out['zeta']}")
+    if blade_in.get("modes") is not None:
+        m = blade_in["modes"]
+        if isinstance(m, bool) or not isinstance(m, int) or m < 1:
+            raise InputError(f"blade.modes must be an integer >= 1, got {json.dumps(m)}")
+        out["modes"] = m
+    if blade_in.get("dmig") is not None:
+        if out["format"] != "nastran":
+            raise InputError("blade.dmig: only for format nastran")
+        dm = blade_in["dmig"]
+        if not (isinstance(dm, dict) and set(dm) <= {"K", "M"} and
+                all(isinstance(v, str) and v for v in dm.values())):
+            raise InputError("blade.dmig must be {\"K\": name, \"M\": name} (DMIG names)")
+        out["dmig"] = dict(dm)
+    return out
+
+
+# ---------------------------------------------------------------------------------------------
+# Inputs of the reduction, checked against the model
+
+def _select(fe, sec, path, where):
+    """Node ids of a set (ids or box), each checked to be in the model."""
+    known = set(fe.node_ids.tolist())
+    if "nodes" in sec:
+        for i, node in enumerate(sec["nodes"]):
+            if node not in known:
+                raise InputError(f"{path}.nodes[{i}]: node {node} is not in the model ({where})")
+        return sorted(set(sec["nodes"]))
+    (x0, y0, z0), (x1, y1, z1) = sec["box"]
+    lo, hi = np.array([x0, y0, z0]), np.array([x1, y1, z1])
+    tol = 1e-9 * max(1.0, float(np.abs(fe.node_xyz).max()))
+    inside = np.all((fe.node_xyz >= lo - tol) & (fe.node_xyz <= hi + tol), axis=1)
+    nodes = fe.node_ids[inside].tolist()
+    # Only nodes that carry DOFs count (unused coordinates of the deck do not).
+    nodes = sorted(set(nodes) & set(fe.dof_node.tolist()))
+    if not nodes:
+        raise InputError(f"{path}.box selects no node of the model ({where})")
+    return nodes
+
+
+def gauge_row(fe, a: int, b: int, E: float) -> sp.csr_matrix:
+    """The virtual strain gauge sigma = E ((u_b - u_a) . e) / |x_b - x_a| as a row over the DOFs
+    (PHYSICS.md 1.3), e the unit vector from a to b."""
+    xa, xb = fe.coords(a), fe.coords(b)
+    L = float(np.linalg.norm(xb - xa))
+    e = (xb - xa) / L
+    idx = fe.dof_index()
+    cols, vals = [], []
+    for node, sign in ((a, -1.0), (b, 1.0)):
+        for c in range(3):
+            if e[c] != 0.0 and (node, c + 1) in idx:
+                cols.append(idx[(node, c + 1)])
+                vals.append(sign * E * e[c] / L)
+    return sp.csr_matrix((vals, (np.zeros(len(cols), dtype=int), cols)), shape=(1, fe.n))
+
+
+def _si(blade: dict) -> dict:
+    """The case's lengths (ref_point, boxes) and gauge E in SI (the model is converted on
+    reading)."""
+    if blade["units"] == "SI":
+        return blade
+    b = json.loads(json.dumps(blade))
+    b["platform"]["ref_point"] = [x * 1e-3 for x in b["platform"]["ref_point"]]
+    for key in ("platform", "clamp"):
+        if key in b and "box" in b[key]:
+            b[key]["box"] = [[x * 1e-3 for x in c] for c in b[key]["box"]]
+    if "stress" in b and "E" in b["stress"]:
+        b["stress"]["E"] *= 1e6
+    return b
+
+
+def reduction_inputs(fe, blade: dict) -> dict:
+    """The keyword arguments of ``platform_centred_reduction`` from the case, each checked
+    against the model (node ids present, sets not empty, DOFs where they are needed)."""
+    fmt, files = blade["format"], blade["files"]
+    where = f"nodes of {files[_NODE_FILE[fmt]]}"
+    blade = _si(blade)
+    has_dof = set(fe.dof_node.tolist())
+    plat = _select(fe, blade["platform"], "blade.platform", where)
+    for node in plat:
+        if node not in has_dof:
+            raise InputError(f"blade.platform: node {node} has no DOF in the matrices "
+                             f"({files[_MASS_FILE[fmt]]}): constrained platform nodes cannot "
+                             "move rigidly")
+    clamp = _select(fe, blade["clamp"], "blade.clamp", where) if "clamp" in blade else None
+    if clamp and set(clamp) & set(plat):
+        raise InputError(f"blade.clamp: node {sorted(set(clamp) & set(plat))[0]} is also a "
+                         "platform node")
+    exc = blade["excitation"]["node"]
+    if exc not in set(fe.node_ids.tolist()):
+        raise InputError(f"blade.excitation.node: node {exc} is not in the model ({where})")
+    idx = fe.dof_index()
+    if exc in plat or (clamp and exc in clamp) or not all((exc, c) in idx for c in (1, 2, 3)):
+        raise InputError(f"blade.excitation.node: node {exc} must be a free node off the "
+                         "platform with its three displacements in the matrices")
+    d = np.asarray(blade["excitation"]["direction"], float)
+    axis = np.asarray(blade["platform"]["axis"], float)
+    kw = {"platform_nodes": plat, "ref_point": list(blade["platform"]["ref_point"]),
+          "axis": (axis / np.linalg.norm(axis)).tolist(), "exc_node": exc,
+          "exc_direction": (d / np.linalg.norm(d)).tolist(), "clamp_nodes": clamp,
+          "stress_rows": None}
+    st = blade.get("stress")
+    if st and "gauge" in st:
+        a, b = st["gauge"]
+        for i, node in enumerate((a, b)):
+            if node not in set(fe.node_ids.tolist()):
+                raise InputError(f"blade.stress.gauge[{i}]: node {node} is not in the model "
+                                 f"({where})")
+        if not np.linalg.norm(fe.coords(b) - fe.coords(a)) > 0:
+            raise InputError("blade.stress.gauge: the two nodes are at the same place")
+        kw["stress_rows"] = [gauge_row(fe, a, b, st["E"])]
+    elif st and "row" in st:
+        from ._text import read_mm
+        row = read_mm(st["row"], "blade.stress.row", vector=True)
+        if len(row) != fe.n:
+            raise InputError(f"blade.stress.row: {st['row']} has {len(row)} entries but the "
+                             f"matrices are {fe.n} x {fe.n}")
+        if blade["units"] == "mm-t-s":   # MPa per mm (or per rad) -> Pa per m (or per rad)
+            row = row * 1e6 / np.where(fe.dof_comp > 3, 1.0, 1e-3)
+        kw["stress_rows"] = [sp.csr_matrix(row.reshape(1, -1))]
+    return kw
+
+
+def check_matrices(fe, blade: dict) -> None:
+    """K and M symmetric, M positive definite (smallest eigenvalue by Lanczos)."""
+    files = blade["files"]
+    fmt = blade["format"]
+    for name, A, fkey in (("stiffness", fe.K, _FILES_K[fmt]), ("mass", fe.M, _MASS_FILE[fmt])):
+        big = abs(A).max()
+        if not big > 0:
+            raise InputError(f"blade.files.{fkey}: the {name} matrix is zero ({files[fkey]})")
+        if abs(A - A.T).max() > 1e-10 * big:
+            raise InputError(f"blade.files.{fkey}: the {name} matrix is not symmetric "
+                             f"({files[fkey]})")
+    fkey = _MASS_FILE[fmt]
+    d = fe.M.diagonal()
+    bad = not np.all(d > 0)
+    if not bad and fe.n <= INERTIA_MAX:
+        bad = not _positive_definite(fe.M)
+    if bad:
+        raise InputError(f"blade.files.{fkey}: the mass matrix is not positive definite "
+                         f"({files[fkey]})")
+
+
+#: Largest model whose mass matrix gets the exact inertia test (a sparse factorisation as costly
+#: as the reduction's own); above it, a positive diagonal and a positive definite reduced mass.
+INERTIA_MAX = 200_000
+
+
+def _positive_definite(M) -> bool:
+    """Sylvester's inertia from a symmetric-mode sparse LU (pivots on the diagonal, the same
+    permutation of rows and columns, so U's diagonal is D of P M P^T = L D L^T)."""
+    import scipy.sparse.linalg as sla
+    try:
+        lu = sla.splu(sp.csc_matrix(M), permc_spec="MMD_AT_PLUS_A", diag_pivot_thresh=0.0,
+                      options={"SymmetricMode": True})
+    except RuntimeError:        # exactly singular
+        return False
+    piv = lu.U.diagonal()
+    if not np.array_equal(lu.perm_r, lu.perm_c):
+        # SuperLU left the diagonal: fall back to Lanczos on the unit-diagonal scaling.
+        d = M.diagonal()
+        Dm = sp.diags(1 / np.sqrt(d))
+        try:
+            lo = sla.eigsh(sp.csr_matrix(Dm @ M @ Dm), k=1, which="SA", tol=1e-3, ncv=40,
+                           maxiter=5000, return_eigenvectors=False)[0]
+        except sla.ArpackNoConvergence as exc:
+            lo = min(exc.eigenvalues) if len(exc.eigenvalues) else 1.0
+        return bool(lo > 1e-12)
+    return bool(np.all(piv > 0))
+
+
+_FILES_K = {"calculix": "sti", "abaqus": "stiffness", "ansys": "stiffness", "nastran": "pch",
+            "matrix_market": "K"}
+
+
+# ---------------------------------------------------------------------------------------------
+# Cache
+
+def cache_root() -> Path:
+    env = os.environ.get("UDMAP_CACHE_DIR")
+    if env:
+        return Path(env)
+    xdg = os.environ.get("XDG_CACHE_HOME")
+    return (Path(xdg) if xdg else Path.home() / ".cache") / "udmap"
+
+
+def cache_key(blade: dict, f_max: float) -> str:
+    h = hashlib.sha256()
+    section = {k: v for k, v in blade.items() if k not in ("zeta",)}
+    files = dict(section.pop("files"))
+    if "stress" in section and "row" in section["stress"]:
+        files["stress.row"] = section["stress"]["row"]
+        section["stress"] = {"row": True}
+    h.update(json.dumps([CACHE_VERSION, section, float(f_max)], sort_keys=True).encode())
+    for key in sorted(files):
+        h.update(key.encode())
+        with open(files[key], "rb") as f:
+            for chunk in iter(lambda: f.read(1 << 20), b""):
+                h.update(hashlib.sha256(chunk).digest())
+    return h.hexdigest()
+
+
+def _write_mtx_dense(path: Path, A: np.ndarray) -> None:
+    n = A.shape[0]
+    jj, ii = np.triu_indices(n)        # column-major lower triangle
+    order = np.lexsort((ii, jj))
+    with open(path, "w") as f:
+        f.write("%%MatrixMarket matrix array real symmetric\n")
+        f.write(f"{n} {n}\n")
+        np.savetxt(f, A[ii[order], jj[order]], fmt="%.17g")
+
+
+def _write_mtx_vector(path: Path, v: np.ndarray) -> None:
+    with open(path, "w") as f:
+        f.write("%%MatrixMarket matrix array real general\n")
+        f.write(f"{len(v)} 1\n")
+        np.savetxt(f, v, fmt="%.17g")
+
+
+def write_reduced(directory: Path, red, prefix: str = "") -> dict:
+    """Writes the reduced matrices (and stress row) as Matrix Market; returns the file names."""
+    names = {"M": f"{prefix}M.mtx", "K": f"{prefix}K.mtx"}
+    _write_mtx_dense(directory / names["M"], np.asarray(red.M))
+    _write_mtx_dense(directory / names["K"], np.asarray(red.K))
+    if red.stress_K is not None:
+        names["stress_K"] = f"{prefix}stress_K.mtx"
+        _write_mtx_vector(directory / names["stress_K"], np.asarray(red.stress_K).ravel())
+    return names
+
+
+def reduce_fe(blade: dict, f_max: float, *, use_cache: bool = True):
+    """Reads and reduces an ``fe`` blade (or takes it from the cache). Returns
+    ``(directory, meta)``: the directory holds M.mtx, K.mtx (stress_K.mtx) and ``meta`` has
+    ``gamma_dof``, ``exc_dof``, ``freqs_full``, ``freqs_reduced``, ``info``, ``cached``."""
+    key = cache_key(blade, f_max)
+    root = cache_root() / "fe"
+    final = root / key
+    meta_path = final / "reduced.json"
+    if use_cache and meta_path.is_file():
+        meta = json.loads(meta_path.read_text())
+        meta["cached"] = True
+        return final, meta
+    from ..progress import Progress
+    # Stages of a reduction that can take minutes: read, check, reduce (bar on a terminal).
+    with Progress(3, "fe reduction") as bar:
+        fe = read_fe(blade, "/")
+        bar.update()
+        check_matrices(fe, blade)
+        kw = reduction_inputs(fe, blade)
+        bar.update()
+        from ..reduction import platform_centred_reduction
+        red = platform_centred_reduction(fe, n_modes=blade.get("modes"), f_max=f_max, **kw)
+        bar.update()
+    Mr = np.asarray(red.M)
+    if not (np.all(np.isfinite(Mr)) and np.all(np.isfinite(np.asarray(red.K)))):
+        raise UdmapError("the reduced matrices are not finite")
+    try:    # V^T M V is positive definite when M is (V of full rank): checked at any size
+        np.linalg.cholesky((Mr + Mr.T) / 2)
+    except np.linalg.LinAlgError:
+        fkey = _MASS_FILE[blade["format"]]
+        raise InputError(f"blade.files.{fkey}: the mass matrix is not positive definite "
+                         f"(its reduction is not; {blade['files'][fkey]})") from None
+    meta = {"gamma_dof": int(red.gamma_dof), "exc_dof": int(red.exc_dof),
+            "freqs_full": [float(x) for x in red.freqs_full],
+            "freqs_reduced": [float(x) for x in red.freqs_reduced],
+            "n_full": int(fe.n), "n_reduced": int(Mr.shape[0]),
+            "info": {k: v for k, v in (red.info or {}).items()
+                     if isinstance(v, (int, float, str, bool))}}
+    root.mkdir(parents=True, exist_ok=True)
+    tmp = Path(tempfile.mkdtemp(prefix=".tmp-", dir=root))
+    try:
+        meta["files"] = write_reduced(tmp, red)
+        (tmp / "reduced.json").write_text(json.dumps(meta, indent=1))
+        try:
+            os.replace(tmp, final) if not final.exists() else None
+        except OSError:
+            pass            # another process wrote the same entry first
+    finally:
+        if tmp.exists():
+            shutil.rmtree(tmp, ignore_errors=True)
+    if not meta_path.is_file():
+        raise UdmapError(f"could not write the reduction cache in {root}")
+    meta["cached"] = False
+    return final, meta
+
+
+def check_gamma_moves(directory: Path, meta: dict, f_min: float, f_max: float,
+                      axis_file: str) -> None:
+    """The platform must make gamma_P move in the band's mode: fixing gamma_P must shift the
+    bare frequency of a mode in [f_min, f_max] (a rigid-body rotation about the axis that
+    the mode does not excite would leave the damper without work); at least one mode of the
+    band must feel it."""
+    import scipy.linalg as la
+    from ._text import read_mm
+    K = read_mm(directory / meta["files"]["K"], "reduced K").toarray()
+    M = read_mm(directory / meta["files"]["M"], "reduced M").toarray()
+    try:
+        w = la.eigh(K, M, eigvals_only=True)
+    except la.LinAlgError:
+        raise UdmapError("the reduced mass matrix is not positive definite") from None
+    f = np.sqrt(np.clip(w, 0, None)) / (2 * np.pi)
+    band = f[(f >= f_min) & (f <= f_max)]
+    if not len(band):
+        return
+    g = meta["gamma_dof"] - 1
+    keep = np.delete(np.arange(len(K)), g)
+    w2 = la.eigh(K[np.ix_(keep, keep)], M[np.ix_(keep, keep)], eigvals_only=True)
+    f2 = np.sqrt(np.clip(w2, 0, None)) / (2 * np.pi)
+    shifts = [float(np.min(np.abs(f2 - fb)) / fb) for fb in band]
+    if max(shifts) < 1e-8:
+        raise InputError(f"blade.platform.axis: the platform rotation gamma_P about this axis "
+                         f"does not move in the band's mode(s) at "
+                         f"{', '.join(f'{x:.6g}' for x in band)} Hz (fixing it shifts them by "
+                         f"{max(shifts):.1e} at most): choose the platform and axis of the "
+                         f"rocking that the damper resists ({axis_file})")
+
+
+def resolve(blade: dict, analysis: dict) -> tuple[dict, dict]:
+    """The ``matrices`` blade section of a validated ``fe`` section (reducing it once, cached),
+    and a summary of the reduction."""
+    directory, meta = reduce_fe(blade, analysis["f_max"])
+    check_gamma_moves(directory, meta, analysis["f_min"], analysis["f_max"],
+                      blade["files"][_NODE_FILE[blade["format"]]])
+    out = {"kind": "matrices", "M": str(directory / meta["files"]["M"]),
+           "K": str(directory / meta["files"]["K"]), "gamma_dof": meta["gamma_dof"],
+           "exc_dof": meta["exc_dof"], "zeta": blade["zeta"]}
+    if "stress_K" in meta["files"]:
+        out["stress_K"] = str(directory / meta["files"]["stress_K"])
+    summary = dict(meta)
+    summary["cache_dir"] = str(directory)
+    summary["source"] = blade
+    return out, summary
