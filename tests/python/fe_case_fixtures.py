@@ -2,20 +2,16 @@
 directory with an empty reduction cache, and a counter of the reductions done."""
 from __future__ import annotations
 
-import importlib
 import json
 import shutil
 import subprocess
 
 import pytest
 
-import fe_reference as ref
 from fe_deck import make_deck, write_inp
 from udmap.cli import main
 
-ref.install()
-#: The project's reduction module, or the reference stand-in until it lands.
-REDUCTION = importlib.import_module("udmap.reduction")
+import udmap.reduction as REDUCTION
 
 FORCES = "0.05,0.2,1"
 

@@ -3,16 +3,13 @@
 Rigid platform by transformation (u_i = u_R + theta x (x_i - x_R), rotations equal theta),
 gamma_P = theta . a, clamp by deleting DOFs, the excitation node's translations turned so that
 one DOF is the displacement along d; full-model eigenfrequencies by eigsh in shift-invert mode and
-receptances by a direct sparse solve. ``platform_centred_reduction`` below has the signature of
-``udmap.reduction.platform_centred_reduction`` (a Craig-Bampton on top of the same
-transformation), so the command-line chain can be exercised with it.
+receptances by a direct sparse solve.
 """
 from __future__ import annotations
 
 from dataclasses import dataclass, field
 
 import numpy as np
-import scipy.linalg as la
 import scipy.sparse as sp
 import scipy.sparse.linalg as sla
 
@@ -102,64 +99,3 @@ def solve(K, M, beta, freq, rhs):
     w = 2 * np.pi * freq
     Z = (K * (1 + 1j * w * beta) - w * w * M).tocsc()
     return sla.spsolve(Z, np.asarray(rhs, dtype=complex))
-
-
-@dataclass
-class Reduced:
-    M: np.ndarray
-    K: np.ndarray
-    gamma_dof: int
-    exc_dof: int
-    stress_K: np.ndarray | None
-    freqs_full: np.ndarray
-    freqs_reduced: np.ndarray
-    info: dict
-
-
-def platform_centred_reduction(fe, *, platform_nodes, ref_point, axis, exc_node, exc_direction,
-                               clamp_nodes=None, stress_rows=None, n_modes=None, f_max=None):
-    """Craig-Bampton (the six rigid DOFs and u_E as boundary) on the reference transformation."""
-    rig = rigid_platform(fe, platform_nodes, ref_point, axis, exc_node, exc_direction,
-                         clamp_nodes)
-    K, M = rig.K.tocsc(), rig.M.tocsc()
-    n = K.shape[0]
-    bnd = np.concatenate([rig.rigid, [rig.exc]])
-    inner = np.setdiff1d(np.arange(n), bnd)
-    Kii, Mii = K[inner][:, inner].tocsc(), M[inner][:, inner].tocsc()
-    Kib = K[inner][:, bnd].toarray()
-    psi = -sp.linalg.splu(Kii).solve(Kib)
-    f_top = 3 * f_max
-    m = n_modes or 40
-    w, phi = sla.eigsh(Kii, k=min(m, len(inner) - 2), M=Mii, sigma=0, which="LM")
-    V = np.zeros((n, len(bnd) + phi.shape[1]))
-    V[bnd, np.arange(len(bnd))] = 1
-    V[np.ix_(inner, np.arange(len(bnd)))] = psi
-    V[inner, len(bnd):] = phi
-    Kr, Mr = V.T @ (K @ V), V.T @ (M @ V)
-    Kr, Mr = (Kr + Kr.T) / 2, (Mr + Mr.T) / 2
-    fr = np.sqrt(np.clip(la.eigh(Kr, Mr, eigvals_only=True), 0, None)) / (2 * np.pi)
-    s = None
-    if stress_rows:
-        s = V.T @ (rig.T.T @ np.asarray(sp.csr_matrix(stress_rows[0]).toarray()).ravel())
-    return Reduced(Mr, Kr, 4, 7, s, frequencies(rig.K, rig.M, f_top), fr[fr <= f_top],
-                   {"n_full": fe.n, "n_rigid": n, "modes": phi.shape[1]})
-
-
-def reduction_under_test():
-    """The project's reduction when it is there, else the reference Craig-Bampton above."""
-    try:
-        from udmap.reduction import platform_centred_reduction as f
-    except ImportError:
-        f = platform_centred_reduction
-    return f
-
-
-def install():
-    """Makes ``udmap.reduction`` importable for in-process command-line runs: the project's
-    module when it exists, else this reference (same signature and result fields)."""
-    import importlib
-    import sys
-    try:
-        importlib.import_module("udmap.reduction")
-    except ImportError:
-        sys.modules["udmap.reduction"] = sys.modules[__name__]
