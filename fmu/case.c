@@ -116,6 +116,7 @@ CaseConfig *case_read(const char *resourceLocation, char *msg, size_t n) {
     else if (strcmp(key, "eigen_method") == 0) c->analysis.eigen_method = (int)x;
     else if (strcmp(key, "dense_max") == 0) c->analysis.dense_max = (int)x;
     else if (strcmp(key, "sweep_points") == 0) c->analysis.sweep_points = (int)x;
+    else if (strcmp(key, "harmonic_tol") == 0) c->analysis.harmonic_tol = x;
     else if (strcmp(key, "table") == 0) {
       c->n = (int)x;
       if (c->n < 2 || c->n > 1000000 || c->gamma)

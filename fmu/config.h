@@ -31,6 +31,7 @@ typedef enum {
   GROUP_DAMPER,   /* mu, contact stiffnesses, geometry: new damper (traced again) */
   GROUP_BLADE,    /* beam parameters: new blade */
   GROUP_ANALYSIS, /* band and allowable stress: new model over the same blade and damper */
+  GROUP_HARMONICS, /* harmonics: the response point only (the model keeps its caches) */
   GROUP_POINT,    /* outputs of the response point */
   GROUP_LIMIT,    /* outputs of the limit force and the damper information */
   GROUP_RATIO     /* F_ratio: F_E over the limit force */

@@ -51,6 +51,12 @@ static bool analytic(unsigned vr) {
          vr == vr_k_re || vr == vr_k_im || vr == vr_F_lim || vr == vr_F_ratio;
 }
 
+/* The analytic slopes hold for the single-harmonic backbone (its envelope theorem); with
+ * multi-harmonic layers every output takes the finite difference. */
+static bool analytic_at(const ModelInstance *m, unsigned vr) {
+  return m->value[vr_harmonics] == 1.0 && analytic(vr);
+}
+
 /* Degree of homogeneity of an output in (F_E, CF). */
 static double cf_degree(unsigned vr) {
   return vr == vr_gamma_P || vr == vr_sigma_a || vr == vr_u_E || vr == vr_F_lim ? 1.0 : 0.0;
@@ -250,17 +256,17 @@ Status model_directional_derivative(ModelInstance *m, const char *fn,
   double y0[UDMAP_NVARS] = {0}, d[UDMAP_NVARS], total[UDMAP_NVARS] = {0};
   Status st = real_outputs(m, y0, msg, sizeof msg);
   bool others = false; /* unknowns without analytic slopes: all by finite differences */
-  for (size_t i = 0; i < nUnknowns; i++) others = others || !analytic(unknowns[i]);
+  for (size_t i = 0; i < nUnknowns; i++) others = others || !analytic_at(m, unknowns[i]);
   if (st == OK && others && (dx[vr_F_E] != 0.0 || dx[vr_CF] != 0.0)) {
     double full[UDMAP_NVARS];
     st = finite_difference(m, y0, dx, full, msg, sizeof msg);
     for (unsigned vr = 0; st == OK && vr < UDMAP_NVARS; vr++)
-      if (!analytic(vr)) total[vr] = full[vr];
+      if (!analytic_at(m, vr)) total[vr] = full[vr];
   }
   if (st == OK && (dx[vr_F_E] != 0.0 || dx[vr_CF] != 0.0)) {
     st = force_slopes(m, y0, d, msg, sizeof msg);
     for (unsigned vr = 0; st == OK && vr < UDMAP_NVARS; vr++) {
-      if (!analytic(vr)) continue;
+      if (!analytic_at(m, vr)) continue;
       const double dCF = (cf_degree(vr) * y0[vr] - V(F_E) * d[vr]) / V(CF);
       total[vr] += dx[vr_F_E] * d[vr] + dx[vr_CF] * dCF;
     }
@@ -272,7 +278,7 @@ Status model_directional_derivative(ModelInstance *m, const char *fn,
   if (st == OK && rest) {
     st = finite_difference(m, y0, dx, d, msg, sizeof msg);
     for (unsigned vr = 0; st == OK && vr < UDMAP_NVARS; vr++)
-      if (analytic(vr) || !full_done) total[vr] += d[vr];
+      if (analytic_at(m, vr) || !full_done) total[vr] += d[vr];
   }
   if (st != OK) {
     model_log(m, Error, "%s: %s", fn, msg);

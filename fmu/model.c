@@ -36,6 +36,7 @@ static const unsigned invalidates[] = {
   [GROUP_BLADE] = BIT(STAGE_BLADE) | BIT(STAGE_MODEL) | BIT(STAGE_LIMIT) | BIT(STAGE_POINT) |
                   BIT(STAGE_F1),
   [GROUP_ANALYSIS] = BIT(STAGE_MODEL) | BIT(STAGE_LIMIT) | BIT(STAGE_POINT),
+  [GROUP_HARMONICS] = BIT(STAGE_POINT),
   [GROUP_POINT] = 0,
   [GROUP_LIMIT] = 0,
   [GROUP_RATIO] = 0,
@@ -361,10 +362,15 @@ static Status compute_limit(ModelInstance *m) {
   if (!m->model || !m->damper) return failure(m, STAGE_LIMIT, "internal: no model");
   int stat = udmap_model_limit_force(m->err, m->model, &m->F_lim);
   if (stat != UDMAP_OK) return kernel_failure(m, STAGE_LIMIT, stat, "udmap_model_limit_force");
+  stat = udmap_model_limit_force_backbone(m->err, m->model, &m->F_lim_backbone);
+  if (stat != UDMAP_OK)
+    return kernel_failure(m, STAGE_LIMIT, stat, "udmap_model_limit_force_backbone");
   stat = udmap_damper_get_info(m->err, m->damper, &m->info);
   if (stat != UDMAP_OK) return kernel_failure(m, STAGE_LIMIT, stat, "udmap_damper_get_info");
   if (!isfinite(m->F_lim) || m->F_lim < 0.0)
     return failure(m, STAGE_LIMIT, "the kernel returned F_lim = %g", m->F_lim);
+  if (!isfinite(m->F_lim_backbone) || m->F_lim_backbone < 0.0)
+    return failure(m, STAGE_LIMIT, "the kernel returned F_lim_backbone = %g", m->F_lim_backbone);
   model_log_category(m, LOG_EVENTS, OK, "limit force computed: F_lim = %.17g N", m->F_lim);
   if (m->F_lim == 0.0) {
     snprintf(m->stage_message[STAGE_LIMIT], sizeof m->stage_message[STAGE_LIMIT],
@@ -406,11 +412,19 @@ static Status compute_point(ModelInstance *m) {
     }
     F_E = m->F_lim > 0.0 ? 1e-12 * m->F_lim : 1e-12;
   }
-  int stat;
   memset(&m->point, 0, sizeof m->point);
+  m->jump = 0;
+  /* harmonics only changes the point: the model keeps its caches (bare blade, the
+   * single-harmonic table, the contact element of the layers) */
+  const double tol = m->config ? m->config->analysis.harmonic_tol : 1e-3;
+  int stat = udmap_model_set_harmonics(m->err, m->model, (int)V(harmonics), tol);
+  if (stat != UDMAP_OK) return kernel_failure(m, STAGE_POINT, stat, "udmap_model_set_harmonics");
   if (f_exc == 0.0) {
     stat = udmap_model_backbone(m->err, m->model, 1, &F_E, &m->point);
     if (stat != UDMAP_OK) return kernel_failure(m, STAGE_POINT, stat, "udmap_model_backbone");
+    stat = udmap_model_backbone_jumps(m->err, m->model, 1, &m->jump);
+    if (stat != UDMAP_OK)
+      return kernel_failure(m, STAGE_POINT, stat, "udmap_model_backbone_jumps");
   } else {
     if (f_exc < V(f_min) || f_exc > V(f_max))
       return failure(m, STAGE_POINT,
@@ -422,7 +436,7 @@ static Status compute_point(ModelInstance *m) {
   udmap_point *p = &m->point;
   if (at_rest && !p->unbounded) {
     p->F_E = 0.0;
-    p->gamma_P = p->sigma_a = p->u_E = 0.0;
+    p->gamma_P = p->sigma_a = p->u_E = p->gamma_max = p->sigma_max = 0.0;
     for (int i = 0; i < p->nroots && i < UDMAP_MAX_ROOTS; i++) p->roots[i] = 0.0;
   }
   model_log_category(m, LOG_EVENTS, OK, "response point computed for F_E = %.17g N, f_exc = "
@@ -436,7 +450,7 @@ static Status compute_point(ModelInstance *m) {
              sizeof m->stage_message[STAGE_POINT]);
       return st;
     }
-    p->gamma_P = p->sigma_a = p->u_E = INFINITY;
+    p->gamma_P = p->sigma_a = p->u_E = p->gamma_max = p->sigma_max = INFINITY;
     p->k_re = p->k_im = 0.0;
     p->f_res = f_exc == 0.0 ? m->f1_bare : f_exc;
     p->regime = 3;
@@ -447,9 +461,11 @@ static Status compute_point(ModelInstance *m) {
              stage_names[STAGE_POINT], V(F_E));
     return Warning;
   }
-  const double fields[] = {p->gamma_P, p->f_res, p->sigma_a, p->u_E, p->k_re, p->k_im};
-  const char *names[] = {"gamma_P", "f_res", "sigma_a", "u_E", "k_re", "k_im"};
-  for (int i = 0; i < 6; i++)
+  const double fields[] = {p->gamma_P, p->f_res, p->sigma_a, p->u_E, p->k_re, p->k_im,
+                           p->gamma_max, p->sigma_max};
+  const char *names[] = {"gamma_P", "f_res", "sigma_a", "u_E", "k_re", "k_im", "gamma_max",
+                         "sigma_max"};
+  for (int i = 0; i < 8; i++)
     if (!isfinite(fields[i]))
       return failure(m, STAGE_POINT, "the kernel returned %s = %g for F_E = %g N", names[i],
                      fields[i], V(F_E));
@@ -597,6 +613,11 @@ Status model_output(ModelInstance *m, ValueReference vr, double *x, Stage *stage
     case vr_hcf_ok: *x = p->hcf_ok ? 1.0 : 0.0; break;
     case vr_regime: *x = (double)p->regime; break;
     case vr_F_lim: *x = m->F_lim; break;
+    case vr_F_lim_backbone: *x = m->F_lim_backbone; break;
+    case vr_gamma_max: *x = p->gamma_max; break;
+    case vr_sigma_max: *x = p->sigma_max; break;
+    case vr_harmonics_used: *x = (double)p->harmonics; break;
+    case vr_jump: *x = m->jump ? 1.0 : 0.0; break;
     case vr_lift_off: *x = m->info.lift_off ? 1.0 : 0.0; break;
     case vr_F_ratio:
       if (m->F_lim > 0.0) *x = V(F_E) / m->F_lim;

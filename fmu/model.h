@@ -94,8 +94,10 @@ struct ModelInstance {
   Status stage_status[NSTAGES];
   char stage_message[NSTAGES][512];
   double F_lim;
+  double F_lim_backbone;
   udmap_damper_info info;
   udmap_point point;
+  int jump; /* the point sits at a jump of k(gamma) */
   double f1_bare;
 
   /* counters, for tests and diagnostics (not part of the FMU state) */

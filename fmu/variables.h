@@ -97,6 +97,10 @@
     "Upper end of the frequency band searched for the resonance") \
   X(sigma_all, REAL, PARAMETER, ANALYSIS, "Pa", 80e6, 1e3, 1e10, 0, \
     "Allowable alternating stress of the HCF criterion") \
+  X(harmonics, INTEGER, PARAMETER, HARMONICS, "", 1, 0.0, 64.0, 0, \
+    "Harmonics of the platform rotation (PHYSICS.md 4.1): 1 the single-harmonic method, " \
+    "2..64 multi-harmonic layers with harmonics 0..H, 0 automatic (raised until the outputs " \
+    "change by less than the case's harmonic_tol, 1e-3 by default)") \
   /* ---------------------------------------------------------------- outputs */ \
   X(gamma_P, REAL, OUTPUT, POINT, "rad", 0.0, NOLIMIT, NOLIMIT, 0, \
     "Platform rotation amplitude (at resonance, or at f_exc); +inf when unbounded " \
@@ -117,11 +121,26 @@
   X(F_ratio, REAL, OUTPUT, RATIO, "", 0.0, NOLIMIT, NOLIMIT, 0, \
     "F_E / F_lim") \
   X(hcf_ok, BOOLEAN, OUTPUT, POINT, "", 0.0, NOLIMIT, NOLIMIT, 0, \
-    "HCF criterion: F_E <= 0.5 F_lim and sigma_a <= sigma_all") \
+    "HCF criterion: F_E <= 0.5 min(F_lim, F_lim_backbone) and sigma_a <= sigma_all " \
+    "(sigma_max instead of sigma_a when harmonics is not 1)") \
   X(regime, INTEGER, OUTPUT, POINT, "", 0.0, NOLIMIT, NOLIMIT, 0, \
     "Contact regime at gamma_P: 0 stuck, 1 partial slip, 2 full slip, 3 at or above F_lim") \
   X(lift_off, BOOLEAN, OUTPUT, LIMIT, "", 0.0, NOLIMIT, NOLIMIT, 0, \
-    "A damper contact opens during the cycle (the damper left its design envelope)")
+    "A damper contact opens during the cycle (the damper left its design envelope)") \
+  X(gamma_max, REAL, OUTPUT, POINT, "rad", 0.0, NOLIMIT, NOLIMIT, 0, \
+    "Largest excursion of the platform rotation from its mean, from all harmonics (gamma_P " \
+    "when harmonics = 1); +inf when unbounded") \
+  X(sigma_max, REAL, OUTPUT, POINT, "Pa", 0.0, NOLIMIT, NOLIMIT, 0, \
+    "Largest excursion of the junction stress from its mean, from all harmonics (sigma_a " \
+    "when harmonics = 1); +inf when unbounded") \
+  X(harmonics_used, INTEGER, OUTPUT, POINT, "", 0.0, NOLIMIT, NOLIMIT, 0, \
+    "Harmonics H of the point (the one chosen when harmonics = 0, automatic)") \
+  X(F_lim_backbone, REAL, OUTPUT, LIMIT, "N", 0.0, NOLIMIT, NOLIMIT, 0, \
+    "Limit force from the backbone: the supremum of the force that peaks at an amplitude " \
+    "(PHYSICS.md 5); below F_lim when a contact lifts off") \
+  X(jump, BOOLEAN, OUTPUT, POINT, "", 0.0, NOLIMIT, NOLIMIT, 0, \
+    "The peak sits at a jump gamma_c of the damper stiffness k(gamma) (PHYSICS.md 2.5): " \
+    "gamma_P = gamma_c, k interpolated between its one-sided values")
 
 /* X(name, kg, m, s, rad, factor, description) over the units used above. */
 #define UDMAP_UNITS(X) \

@@ -85,7 +85,7 @@ def test_kind_of_any_type_is_named(section, kind):
     (("analysis", "harmonics"), 0, "analysis.harmonics must be 1"),
     (("analysis", "harmonics"), 101, "analysis.harmonics must be 1"),
     (("analysis", "harmonics"), "Auto", "analysis.harmonics must be 1"),
-    (("analysis", "harmonic_tol"), 0.0, "analysis.harmonic_tol must be in [1e-12, 0.1], got 0"),
+    (("analysis", "harmonic_tol"), 0.0, "analysis.harmonic_tol must be in [1e-10, 0.1], got 0"),
     (("name",), ["x"], 'name must be a string, got ["x"]'),
     (("description",), 3, "description must be a string, got 3"),
     (("name",), "\ud800", 'name must be valid Unicode text, got "\\ud800"'),

@@ -18,11 +18,14 @@ INPUTS = {"F_E": "N", "f_exc": "Hz", "mu": "", "CF": "N", "kn_flat": "N/m", "kt_
 PARAMETERS = ["neck_L", "neck_h", "neck_b", "platform_L", "platform_m", "platform_J",
               "airfoil_L", "airfoil_h", "airfoil_b", "neck_elements", "airfoil_elements", "E",
               "rho", "zeta", "pitch", "y_P", "beta_L_deg", "beta_R_deg", "flat1_x", "flat1_y",
-              "flat2_x", "flat2_y", "curved_x", "curved_y", "f_min", "f_max", "sigma_all"]
+              "flat2_x", "flat2_y", "curved_x", "curved_y", "f_min", "f_max", "sigma_all",
+              "harmonics"]
 OUTPUTS = {"gamma_P": "rad", "sigma_a": "Pa", "F_lim": "N", "f_res": "Hz", "u_E": "m",
            "k_re": "N.m/rad", "k_im": "N.m/rad", "F_ratio": "", "hcf_ok": "",
-           "regime": "", "lift_off": ""}
-DISCRETE_TYPES = {"hcf_ok": "Boolean", "regime": "Integer", "lift_off": "Boolean"}
+           "regime": "", "lift_off": "", "gamma_max": "rad", "sigma_max": "Pa",
+           "harmonics_used": "", "F_lim_backbone": "N", "jump": ""}
+DISCRETE_TYPES = {"hcf_ok": "Boolean", "regime": "Integer", "lift_off": "Boolean",
+                  "harmonics_used": "Integer", "jump": "Boolean"}
 # Base units per unit name (kg, m, s, rad) and factor: a unit means what its name says.
 BASE = {"N": (1, 1, -2, 0), "Hz": (0, 0, -1, 0), "m": (0, 1, 0, 0), "kg": (1, 0, 0, 0),
         "kg.m2": (1, 2, 0, 0), "kg/m3": (1, -3, 0, 0), "Pa": (1, -1, -2, 0),
@@ -46,6 +49,7 @@ def case_values() -> dict:
     v["curved_x"], v["curved_y"] = d["curved_point"]
     v["f_min"], v["f_max"] = a["f_min"], a["f_max"]
     v["sigma_all"] = a.get("sigma_all", 80e6)
+    v["harmonics"] = a.get("harmonics", 1)
     v["F_E"], v["f_exc"] = 5.0, 0.0
     return v
 
@@ -119,7 +123,8 @@ def test_variables_follow_interfaces(version):
     for name in PARAMETERS:
         v = variables[name]
         assert v.variability == "tunable" and v.description, name
-        assert v.type == (integer if name.endswith("_elements") else real), name
+        assert v.type == (integer if name.endswith("_elements") or name == "harmonics"
+                          else real), name
     assert variables["beta_L_deg"].unit == "deg" and variables["f_min"].unit == "Hz"
     assert variables["sigma_all"].unit == "Pa" and variables["platform_J"].unit == "kg.m2"
 
@@ -157,6 +162,8 @@ def test_model_structure(version):
     assert deps["gamma_P"] == set(INPUTS) and deps["regime"] == set(INPUTS)
     assert deps["F_lim"] == set(INPUTS) - {"F_E", "f_exc"}
     assert deps["lift_off"] == set(INPUTS) - {"F_E", "f_exc"}
+    assert deps["F_lim_backbone"] == set(INPUTS) - {"F_E", "f_exc"}
+    assert deps["gamma_max"] == deps["jump"] == set(INPUTS)
     assert deps["F_ratio"] == set(INPUTS) - {"f_exc"}
     # every dependency is declared with its kind: non-linear, "dependent"
     for name, u in outputs.items():

@@ -147,8 +147,8 @@ SCHEMA: dict[tuple, dict[str, Field]] = {
                              default=400),
         "harmonics": Field("harmonics", 2, 64, default=1,
                            doc="1, harmonics 0..H, or auto (PHYSICS.md 4.1)"),
-        "harmonic_tol": _real(1e-12, 0.1, "", "relative change that stops harmonics auto",
-                              default=1e-3),
+        "harmonic_tol": _real(1e-10, 0.1, "", "relative change that stops harmonics auto "
+                              "(the kernel's limits)", default=1e-3),
     },
 }
 #: Top-level fields besides the sections.

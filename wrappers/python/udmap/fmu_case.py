@@ -53,7 +53,8 @@ def matrices_case(case: Case) -> Case:
 def starts_and_absent(case: Case) -> tuple[dict, set]:
     """Start values of the variables from the case, and the variables that do not apply."""
     b, d, a = case.blade, case.damper, case.analysis
-    starts = {"f_min": a["f_min"], "f_max": a["f_max"], "sigma_all": a["sigma_all"]}
+    starts = {"f_min": a["f_min"], "f_max": a["f_max"], "sigma_all": a["sigma_all"],
+              "harmonics": 0 if a["harmonics"] == "auto" else a["harmonics"]}
     absent: set[str] = set()
     if b["kind"] == "beam":
         starts.update(beam_params(b))
@@ -104,7 +105,8 @@ def _case_file(case: Case, starts: dict, absent: set, files: dict) -> str:
     from .case import EIGEN_METHODS
     lines += [f"rtol {float(a['rtol'])!r}", f"grid_per_decade {int(a['grid_per_decade'])}",
               f"eigen_method {int(EIGEN_METHODS[a['eigen_method']])}",
-              f"dense_max {int(a['dense_max'])}", f"sweep_points {int(a['sweep_points'])}"]
+              f"dense_max {int(a['dense_max'])}", f"sweep_points {int(a['sweep_points'])}",
+              f"harmonic_tol {float(a['harmonic_tol'])!r}"]
     lines += [f"start {k} {float(v)!r}" for k, v in sorted(starts.items())]
     lines += [f"absent {k}" for k in sorted(absent)]
     return "\n".join(lines) + "\n"
