@@ -192,3 +192,34 @@ def test_reduce_keeps_a_table_damper_file_reachable(work, capsys):
         assert status == 0, err
         tables.append(json.loads(text))
     assert tables[0] == tables[1]
+
+
+def test_fmu_of_the_fe_case(work, capsys, tmp_path):
+    # `udmap fmu` on the fe case: the FMU holds the reduced matrices blade, and its outputs are
+    # the command line's on the fe case, co-simulation and model exchange, FMI 2.0 and 3.0
+    from fmpy import simulate_fmu
+
+    d, _, _, calls = work
+    status, out, err = run(["backbone", d / "case.json", "--forces", FORCES, "--json"], capsys)
+    assert status == 0, err
+    ref = {p["F_E"]: p for p in json.loads(out)["points"]}
+    rows, t = [], 0.0
+    for F in ref:
+        rows += [(t, F), (t + 0.5, F)]
+        t += 0.5
+    table = np.array(rows, dtype=[("time", float), ("F_E", float)])
+    for fmi in (2, 3):
+        fmu = tmp_path / f"fe{fmi}.fmu"
+        status, _, err = run(["fmu", d / "case.json", "--out", fmu, "--fmi", fmi], capsys)
+        assert status == 0, err
+        for kind in ("CoSimulation", "ModelExchange"):
+            res = simulate_fmu(str(fmu), fmi_type=kind, stop_time=t - 1e-9, output_interval=0.25,
+                               input=table, output=["F_E", "gamma_P", "sigma_a", "f_res"])
+            seen = set()
+            for row in res:
+                p = ref[float(row["F_E"])]
+                seen.add(p["F_E"])
+                for name in ("gamma_P", "sigma_a", "f_res"):
+                    assert row[name] == pytest.approx(p[name], rel=1e-10, abs=0), (fmi, kind)
+            assert seen == set(ref)
+    assert calls == [1]   # the FMU re-used the cached reduction

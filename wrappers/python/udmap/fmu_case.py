@@ -38,15 +38,8 @@ def matrices_case(case: Case) -> Case:
     """The case with a blade the FMU can hold (``beam`` or ``matrices``): a ``fe`` blade is
     reduced to its ``matrices`` case (the reduction of ``udmap reduce``)."""
     kind = case.blade["kind"]
-    if kind in ("beam", "matrices"):
+    if kind in ("beam", "matrices"):  # load_case has already reduced an fe blade to matrices
         return case
-    if kind == "fe":
-        try:  # the FE reduction (udmap reduce): its matrices case
-            from .reduce import reduced_case
-        except ImportError:
-            raise InputError("blade.kind 'fe' needs the FE reduction of 'udmap reduce', which "
-                             "this installation lacks") from None
-        return reduced_case(case)
     raise InputError(f"blade.kind {kind!r} cannot go into an FMU")
 
 
