@@ -195,31 +195,43 @@ def test_reduce_keeps_a_table_damper_file_reachable(work, capsys):
 
 
 def test_fmu_of_the_fe_case(work, capsys, tmp_path):
-    # `udmap fmu` on the fe case: the FMU holds the reduced matrices blade, and its outputs are
-    # the command line's on the fe case, co-simulation and model exchange, FMI 2.0 and 3.0
+    # `udmap fmu` on an fe case with blade A's asymmetric damper: the FMU holds the reduced
+    # matrices blade, passes fmpy's validation, and over a sequence of F_E, mu and CF its outputs
+    # are the command line's on the fe case, co-simulation and model exchange, FMI 2.0 and 3.0
     from fmpy import simulate_fmu
 
-    d, _, _, calls = work
-    status, out, err = run(["backbone", d / "case.json", "--forces", FORCES, "--json"], capsys)
-    assert status == 0, err
-    ref = {p["F_E"]: p for p in json.loads(out)["points"]}
+    from fmu_harness import CASE
+
+    d, _, case, calls = work
+    case["damper"] = json.loads(CASE.read_text())["damper"]
+    (d / "asym.json").write_text(json.dumps(case))
+    sequence = [(0.3, 900.0, 0.05), (0.3, 900.0, 1.0), (0.25, 900.0, 1.0), (0.25, 1200.0, 0.2)]
+    ref = {}
+    for mu, CF, F in sequence:
+        case["damper"].update(mu=mu, CF=CF)
+        (d / "one.json").write_text(json.dumps(case))
+        status, out, err = run(["backbone", d / "one.json", "--forces", F, "--json"], capsys)
+        assert status == 0, err
+        ref[(mu, CF, F)] = json.loads(out)["points"][0]
     rows, t = [], 0.0
-    for F in ref:
-        rows += [(t, F), (t + 0.5, F)]
+    for mu, CF, F in sequence:
+        rows += [(t, F, mu, CF), (t + 0.5, F, mu, CF)]
         t += 0.5
-    table = np.array(rows, dtype=[("time", float), ("F_E", float)])
+    table = np.array(rows, dtype=[("time", float), ("F_E", float), ("mu", float), ("CF", float)])
     for fmi in (2, 3):
         fmu = tmp_path / f"fe{fmi}.fmu"
-        status, _, err = run(["fmu", d / "case.json", "--out", fmu, "--fmi", fmi], capsys)
+        status, _, err = run(["fmu", d / "asym.json", "--out", fmu, "--fmi", fmi], capsys)
         assert status == 0, err
         for kind in ("CoSimulation", "ModelExchange"):
             res = simulate_fmu(str(fmu), fmi_type=kind, stop_time=t - 1e-9, output_interval=0.25,
-                               input=table, output=["F_E", "gamma_P", "sigma_a", "f_res"])
+                               input=table, validate=True,
+                               output=["F_E", "mu", "CF", "gamma_P", "sigma_a", "f_res"])
             seen = set()
             for row in res:
-                p = ref[float(row["F_E"])]
-                seen.add(p["F_E"])
+                key = (float(row["mu"]), float(row["CF"]), float(row["F_E"]))
+                p = ref[key]
+                seen.add(key)
                 for name in ("gamma_P", "sigma_a", "f_res"):
-                    assert row[name] == pytest.approx(p[name], rel=1e-10, abs=0), (fmi, kind)
+                    assert row[name] == pytest.approx(p[name], rel=1e-10, abs=0), (fmi, kind, key)
             assert seen == set(ref)
-    assert calls == [1]   # the FMU re-used the cached reduction
+    assert calls == [1]   # one reduction for every command and both FMUs (the cache)
