@@ -1,8 +1,9 @@
 """Stress test of the multi-harmonic layers (PHYSICS.md 4.1): friction coefficients, centrifugal
 loads and face angles across their range, lift-off designs, forces up to near F_lim, and blades
-whose second mode sits near 5 or 4.5 times the resonance (a strongly amplified harmonic). Every
-call returns finite numbers or a clear error naming the harmonic count and the layer (status 3
-or 4), never a NaN or a hang."""
+whose second mode sits near 5 or 4.5 times the resonance or is crossed by 2 or 3 times it over
+the forces (a strongly amplified harmonic). Every call returns finite numbers or a clear error
+naming the harmonic count and the layer (status 3 or 4), never a NaN or a hang; at the crossings
+the layers still equal the standard method with the same harmonics."""
 import copy
 import math
 
@@ -22,6 +23,10 @@ DESIGNS = [
     ("beta_L 60, beta_R 30", {"damper": {"beta_L_deg": 60.0, "beta_R_deg": 30.0}}),
     ("mode 2 near 5 f_res (neck_L 0.04)", {"blade": {"neck": {"L": 0.04}}}),
     ("mode 2 near 4.5 f_res (platform_J 2e-4)", {"blade": {"platform": {"J": 2e-4}}}),
+    # f2 / f_res goes from 2.94 to 3.05 over the forces: 3 f_res crosses the second mode
+    ("mode 2 crosses 3 f_res (platform_J 6e-4)", {"blade": {"platform": {"J": 6e-4}}}),
+    # f2 / f_res goes from 1.90 to 2.03: 2 f_res crosses the second mode
+    ("mode 2 crosses 2 f_res (platform_J 1.6e-3)", {"blade": {"platform": {"J": 1.6e-3}}}),
 ]
 
 
@@ -69,3 +74,24 @@ def test_finite_or_clear_error(name, change):
                 assert 0.8 * f1 < p["f_res"] < 1.25 * f1
                 assert p["gamma_max"] > 0 and p["sigma_max"] >= 0
     assert a["sigma_all"] > 0
+
+
+@pytest.mark.parametrize("J", [6e-4, 1.6e-3], ids=["3 f_res", "2 f_res"])
+def test_crossing_equals_standard_method(J):
+    # where 3 (or 2) f_res meets the second mode, the third (second) harmonic is resonant: the
+    # layers at H = 3 still give the standard method's peak with the same harmonics (1e-6)
+    from udmap import hbm
+    case = copy.deepcopy(load_case())
+    case.blade["platform"]["J"] = J
+    blade, damper = build_blade(case), build_damper(case)
+    f1 = float(blade.natural_frequencies(1)[0])
+    model = Model(blade, damper, 0.8 * f1, 1.25 * f1, harmonics=3)
+    F = 0.6 * model.limit_force()
+    p = model.backbone([F])[0]
+    r = hbm.hbm(blade, case.damper, 0.8 * f1, 1.25 * f1, [F], harmonics=3, harmonic0=1,
+                warm_start=2, full_band=0)[0]
+    for key in ("gamma_P", "sigma_a", "f_res"):
+        assert p[key] == pytest.approx(r[key], rel=1e-6), key
+    # the resonant harmonic is large: the single-harmonic peak is off by several per cent
+    model.set_harmonics(1)
+    assert abs(model.backbone([F])[0]["gamma_P"] / p["gamma_P"] - 1) > 0.01
