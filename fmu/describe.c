@@ -407,12 +407,11 @@ static void write_html(FILE *f) {
   fputs("</table>\n", f);
   fputs(
     "<h2>Binaries and licences</h2>\n"
-    "<p>The shared object links the udmap kernel (Fortran, compiled without ARPACK) and the "
-    "reference LAPACK and BLAS statically, and exports only the FMI functions. It needs only "
-    "the C library, libm, libgcc_s and the two libraries bundled beside it in the binaries "
-    "folder, which it finds through <code>RPATH=$ORIGIN</code>:</p>\n<ul>\n"
-    "<li><code>libgfortran.so.5</code> and <code>libquadmath.so.0</code> (GCC runtime "
-    "libraries: GPL 3 with the GCC Runtime Library Exception, and LGPL 2.1 for libquadmath): "
+    "<p>The Linux shared object holds the udmap kernel (Fortran, compiled without ARPACK) "
+    "and everything it calls, and exports only the FMI functions: it needs only the C "
+    "library and libm, and nothing lies beside it. Linked into it:</p>\n<ul>\n"
+    "<li>the GCC runtime libraries libgfortran and libgcc (GPL 3 with the GCC Runtime Library "
+    "Exception) and libquadmath (LGPL 2.1), linked in statically: "
     "<a href=\"licenses/gcc-runtime-copyright.txt\">copyright</a>, "
     "<a href=\"licenses/GPL-3.txt\">GPL-3</a>, "
     "<a href=\"licenses/LGPL-2.1.txt\">LGPL-2.1</a>;</li>\n"

@@ -1,7 +1,8 @@
-"""The FMU binaries are self-contained: only glibc, ld-linux, libgcc_s and the bundled GCC
-runtime libraries are needed, the bundled ones are found beside the binary (checked with
-LD_DEBUG=libs, whether or not gfortran is installed), only FMI functions are exported, and the
-C layer matches the standard FMI headers (those shipped with fmpy)."""
+"""The FMU binaries are self-contained: one library per platform with the GCC runtime linked in
+statically, needing only the C library (no NEEDED entry for libgfortran or libquadmath, nothing
+beside it; checked with LD_DEBUG=libs, whether or not gfortran is installed), only FMI
+functions are exported, and the C layer matches the standard FMI headers (those shipped with
+fmpy)."""
 from __future__ import annotations
 
 import os
@@ -15,8 +16,7 @@ import pytest
 from fmu_harness import PLATFORM, ROOT, binary, extract
 
 SYSTEM = {"libc.so.6", "libm.so.6", "libmvec.so.1", "libpthread.so.0", "libdl.so.2",
-          "librt.so.1", "libgcc_s.so.1", "ld-linux-x86-64.so.2"}
-BUNDLED = {"libgfortran.so.5", "libquadmath.so.0"}
+          "librt.so.1", "ld-linux-x86-64.so.2"}
 
 FMI2_FUNCTIONS = """GetTypesPlatform GetVersion SetDebugLogging Instantiate FreeInstance
 SetupExperiment EnterInitializationMode ExitInitializationMode Terminate Reset GetReal GetInteger
@@ -55,15 +55,21 @@ def needed(path: Path) -> set[str]:
 def test_dynamic_dependencies(version):
     so = binary(version)
     deps = needed(so)
-    assert deps <= SYSTEM | BUNDLED, deps - SYSTEM - BUNDLED
-    assert "libgfortran.so.5" in deps  # the Fortran kernel is inside
-    assert not any("lapack" in d or "blas" in d or "arpack" in d for d in deps)
-    for lib in BUNDLED:
-        assert needed(so.parent / lib) <= SYSTEM | BUNDLED, lib
-    # DT_RPATH (searched for the bundled libraries' own dependencies too), not DT_RUNPATH
+    assert deps <= SYSTEM, deps - SYSTEM
+    assert not any(lib in d for d in deps
+                   for lib in ("gfortran", "quadmath", "gcc_s", "lapack", "blas", "arpack"))
+    # the Fortran kernel and its runtime are inside: nothing beside the binary, no search path
+    assert sorted(p.name for p in extract(version).glob(f"binaries/{PLATFORM[version]}/*")) \
+        == ["udmap.so"]
     d = dynamic(so)
-    assert re.search(r"\(RPATH\)\s+Library rpath: \[\$ORIGIN\]", d), d
-    assert "RUNPATH" not in d
+    assert "RPATH" not in d and "RUNPATH" not in d, d
+
+
+def test_kernel_opens_no_asynchronous_unit():
+    # fmu/gfortran_runtime.c stands in for libgfortran's asynchronous I/O on that ground
+    for src in sorted((ROOT / "kernel" / "src").rglob("*.[fF]90")):
+        text = src.read_text()
+        assert not re.search(r"asynchronous\s*=", text, re.IGNORECASE), src
 
 
 @pytest.mark.parametrize("version", [2, 3])
@@ -108,7 +114,7 @@ def loader(tmp_path_factory):
 
 
 @pytest.mark.parametrize("version", [2, 3])
-def test_bundled_libraries_resolve_inside_the_fmu(version, loader, tmp_path):
+def test_the_binary_loads_alone(version, loader, tmp_path):
     # a fresh copy of the unpacked FMU in a new place: nothing may depend on where it was built
     fmu_dir = tmp_path / "unpacked"
     shutil.copytree(extract(version), fmu_dir)
@@ -126,14 +132,8 @@ def test_bundled_libraries_resolve_inside_the_fmu(version, loader, tmp_path):
         if path.parent == bindir:
             continue
         assert name in SYSTEM, f"{name} resolved outside the FMU: {path}"
-    for lib in BUNDLED | {"udmap.so"}:
-        assert lib in resolved, f"{lib} not loaded: {sorted(resolved)}"
-        assert resolved[lib].parent == bindir, f"{lib} resolved to {resolved[lib]}"
-    # libquadmath is libgfortran's dependency: found through udmap.so's DT_RPATH
-    assert re.search(r"find library=libquadmath\.so\.0 \[0\]; searching\n\s*\d+:\s*search "
-                     r"path=%s\s+\(RPATH from file %s\)"
-                     % (re.escape(str(bindir)), re.escape(str(bindir / "udmap.so"))),
-                     r.stderr), r.stderr[-3000:]
+    assert resolved["udmap.so"].parent == bindir
+    assert not any("gfortran" in n or "quadmath" in n for n in resolved), sorted(resolved)
 
 
 @pytest.mark.parametrize("version", [2, 3])

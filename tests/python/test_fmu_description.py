@@ -65,8 +65,7 @@ def test_archive_layout(version):
         names = set(zf.namelist())
     bindir = f"binaries/{PLATFORM[version]}/"
     for required in ("modelDescription.xml", "documentation/index.html",
-                     bindir + "udmap.so", bindir + "libgfortran.so.5",
-                     bindir + "libquadmath.so.0", "documentation/licenses/license.txt",
+                     bindir + "udmap.so", "documentation/licenses/license.txt",
                      "documentation/licenses/gcc-runtime-copyright.txt",
                      "documentation/licenses/GPL-3.txt", "documentation/licenses/LGPL-2.1.txt",
                      "documentation/licenses/lapack-copyright.txt"):
@@ -202,7 +201,7 @@ def test_documentation_describes_every_variable(version):
             ">", "&gt;") in row.group(0), v.name
     token = md.guid if version == 2 else md.instantiationToken
     assert token in html
-    for lib in ("libgfortran.so.5", "libquadmath.so.0", "LAPACK", "BLAS"):
+    for lib in ("libgfortran", "libquadmath", "LAPACK", "BLAS"):
         assert lib in licence and lib in html
     assert "GCC RUNTIME LIBRARY EXCEPTION" in gcc
     assert "Redistribution and use in source and binary forms" in lapack
