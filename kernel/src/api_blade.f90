@@ -3,18 +3,19 @@
 !> A udmap_blade handle points to a blade_type allocated here. Every pointer argument is checked
 !> for NULL; every function returns a status and leaves a message in the error handle.
 module udmap_api_blade
-  use, intrinsic :: iso_c_binding, only: c_ptr, c_null_ptr, c_associated, c_f_pointer, c_loc, &
-    & c_int, c_double, c_char, c_size_t
+  use, intrinsic :: iso_c_binding, only: c_ptr, c_associated, c_f_pointer, c_loc, c_int, &
+    & c_double
   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
   use udmap_kinds, only: wp, pi
   use udmap_error, only: error_type, fatal_error, UDMAP_EINPUT, UDMAP_EPHYSICS
-  use udmap_api, only: set_error, clear_error, error_from_handle, c_string_to_fortran
+  use udmap_api_support, only: set_error, clear_error, check_handle, check_input, take_handle, &
+    & handle_slot, indexed_name, c_string, put_out
   use udmap_beam, only: beam_params_type
   use udmap_blade, only: blade_type, receptances_type, new_beam_blade, read_matrices_blade, &
     & export_blade, layer_response
   implicit none
   private
-  public :: c_beam_params
+  public :: c_beam_params, beam_from_c
 
   !> udmap_beam_params: 12 doubles then 2 ints, as in the header.
   type, bind(C) :: c_beam_params
@@ -24,14 +25,6 @@ module udmap_api_blade
     real(c_double) :: airfoil_L, airfoil_h, airfoil_b
     integer(c_int) :: neck_elements, airfoil_elements
   end type c_beam_params
-
-  interface
-    function c_strlen(s) bind(C, name="strlen") result(n)
-      import :: c_ptr, c_size_t
-      type(c_ptr), value :: s
-      integer(c_size_t) :: n
-    end function c_strlen
-  end interface
 
 contains
 
@@ -44,32 +37,18 @@ contains
     type(c_ptr), pointer :: out
     type(blade_type), pointer :: b
     type(error_type), allocatable :: err
-    type(beam_params_type) :: p
     call clear_error(error)
-    if (.not.c_associated(blade)) then
-      err = error_from_handle("blade")
-    else if (.not.c_associated(params)) then
-      err = error_from_handle("params")
-    end if
+    call check_handle(blade, "blade", err)
+    call check_handle(params, "params", err)
     if (allocated(err)) then
       stat = set_error(error, err)
       return
     end if
-    call c_f_pointer(blade, out)
-    out = c_null_ptr
+    out => handle_slot(blade)
     call c_f_pointer(params, cp)
-    p = beam_params_type(E=cp%E, rho=cp%rho, zeta=cp%zeta, neck_L=cp%neck_L, neck_h=cp%neck_h, &
-      & neck_b=cp%neck_b, platform_L=cp%platform_L, platform_m=cp%platform_m, &
-      & platform_J=cp%platform_J, airfoil_L=cp%airfoil_L, airfoil_h=cp%airfoil_h, &
-      & airfoil_b=cp%airfoil_b, neck_elements=int(cp%neck_elements), &
-      & airfoil_elements=int(cp%airfoil_elements))
     allocate(b)
-    call new_beam_blade(b, p, err)
-    if (allocated(err)) then
-      deallocate(b)
-    else
-      out = c_loc(b)
-    end if
+    call new_beam_blade(b, beam_from_c(cp), err)
+    call hand_over(b, err, out)
     stat = set_error(error, err)
   end function udmap_new_blade_beam
 
@@ -85,57 +64,25 @@ contains
     type(c_ptr), pointer :: out
     type(blade_type), pointer :: b
     type(error_type), allocatable :: err
+    ! unallocated: an absent optional argument of read_matrices_blade
+    character(len=:), allocatable :: C_file, sK_file, sM_file
     call clear_error(error)
-    if (.not.c_associated(blade)) then
-      err = error_from_handle("blade")
-    else if (.not.c_associated(M_path)) then
-      err = error_from_handle("M_path")
-    else if (.not.c_associated(K_path)) then
-      err = error_from_handle("K_path")
-    end if
+    call check_handle(blade, "blade", err)
+    call check_handle(M_path, "M_path", err)
+    call check_handle(K_path, "K_path", err)
     if (allocated(err)) then
       stat = set_error(error, err)
       return
     end if
-    call c_f_pointer(blade, out)
-    out = c_null_ptr
+    out => handle_slot(blade)
+    ! Optional paths: NULL means absent.
+    if (c_associated(C_path)) C_file = c_string(C_path)
+    if (c_associated(sK_path)) sK_file = c_string(sK_path)
+    if (c_associated(sM_path)) sM_file = c_string(sM_path)
     allocate(b)
-    ! Optional paths: NULL means absent (an absent optional actual argument below).
-    if (c_associated(C_path)) then
-      if (c_associated(sK_path) .and. c_associated(sM_path)) then
-        call read_matrices_blade(b, string(M_path), string(K_path), int(gamma_dof), int(exc_dof), &
-          & real(zeta, wp), err, C_path=string(C_path), sK_path=string(sK_path), &
-          & sM_path=string(sM_path))
-      else if (c_associated(sK_path)) then
-        call read_matrices_blade(b, string(M_path), string(K_path), int(gamma_dof), int(exc_dof), &
-          & real(zeta, wp), err, C_path=string(C_path), sK_path=string(sK_path))
-      else if (c_associated(sM_path)) then
-        call read_matrices_blade(b, string(M_path), string(K_path), int(gamma_dof), int(exc_dof), &
-          & real(zeta, wp), err, C_path=string(C_path), sM_path=string(sM_path))
-      else
-        call read_matrices_blade(b, string(M_path), string(K_path), int(gamma_dof), int(exc_dof), &
-          & real(zeta, wp), err, C_path=string(C_path))
-      end if
-    else
-      if (c_associated(sK_path) .and. c_associated(sM_path)) then
-        call read_matrices_blade(b, string(M_path), string(K_path), int(gamma_dof), int(exc_dof), &
-          & real(zeta, wp), err, sK_path=string(sK_path), sM_path=string(sM_path))
-      else if (c_associated(sK_path)) then
-        call read_matrices_blade(b, string(M_path), string(K_path), int(gamma_dof), int(exc_dof), &
-          & real(zeta, wp), err, sK_path=string(sK_path))
-      else if (c_associated(sM_path)) then
-        call read_matrices_blade(b, string(M_path), string(K_path), int(gamma_dof), int(exc_dof), &
-          & real(zeta, wp), err, sM_path=string(sM_path))
-      else
-        call read_matrices_blade(b, string(M_path), string(K_path), int(gamma_dof), int(exc_dof), &
-          & real(zeta, wp), err)
-      end if
-    end if
-    if (allocated(err)) then
-      deallocate(b)
-    else
-      out = c_loc(b)
-    end if
+    call read_matrices_blade(b, c_string(M_path), c_string(K_path), int(gamma_dof), int(exc_dof), &
+      & real(zeta, wp), err, C_path=C_file, sK_path=sK_file, sM_path=sM_file)
+    call hand_over(b, err, out)
     stat = set_error(error, err)
   end function udmap_new_blade_matrices
 
@@ -146,11 +93,9 @@ contains
     type(blade_type), pointer :: b
     if (.not.c_associated(blade)) return
     call c_f_pointer(blade, handle)
-    if (c_associated(handle)) then
-      call c_f_pointer(handle, b)
-      deallocate(b)
-      handle = c_null_ptr
-    end if
+    if (.not.c_associated(handle)) return
+    call c_f_pointer(take_handle(handle), b)
+    deallocate(b)
   end subroutine udmap_delete_blade
 
   !> int udmap_blade_get_size(udmap_error, udmap_blade, int *ndof, int *has_stress)
@@ -159,21 +104,15 @@ contains
     type(c_ptr), value :: error, blade, ndof, has_stress
     integer(c_int) :: stat
     type(blade_type), pointer :: b
-    integer(c_int), pointer :: pn, ps
     type(error_type), allocatable :: err
     call clear_error(error)
-    if (.not.c_associated(blade)) then
-      err = error_from_handle("blade")
-    else if (.not.c_associated(ndof)) then
-      err = error_from_handle("ndof")
-    else if (.not.c_associated(has_stress)) then
-      err = error_from_handle("has_stress")
-    else
+    call check_handle(blade, "blade", err)
+    call check_handle(ndof, "ndof", err)
+    call check_handle(has_stress, "has_stress", err)
+    if (.not.allocated(err)) then
       call c_f_pointer(blade, b)
-      call c_f_pointer(ndof, pn)
-      call c_f_pointer(has_stress, ps)
-      pn = int(b%ndof, c_int)
-      ps = merge(1_c_int, 0_c_int, b%has_stress)
+      call put_out(ndof, b%ndof)
+      call put_out(has_stress, merge(1, 0, b%has_stress))
     end if
     stat = set_error(error, err)
   end function udmap_blade_get_size
@@ -185,23 +124,18 @@ contains
     integer(c_int), value :: nmodes
     integer(c_int) :: stat
     type(blade_type), pointer :: b
-    real(c_double), pointer :: f(:)
     real(wp), allocatable :: fw(:)
     type(error_type), allocatable :: err
     call clear_error(error)
-    if (.not.c_associated(blade)) then
-      err = error_from_handle("blade")
-    else if (.not.c_associated(f_hz)) then
-      err = error_from_handle("f_hz")
-    else if (nmodes < 1) then
-      call fatal_error(err, "nmodes must be at least 1", UDMAP_EINPUT)
-    else
+    call check_handle(blade, "blade", err)
+    call check_handle(f_hz, "f_hz", err)
+    call check_input(nmodes >= 1, "nmodes must be at least 1", err)
+    if (.not.allocated(err)) then
       call c_f_pointer(blade, b)
       allocate(fw(nmodes))
       call b%natural_frequencies(fw, err)
       if (.not.allocated(err)) then
-        call c_f_pointer(f_hz, f, [nmodes])
-        f = real(fw, c_double)
+        call put_out(f_hz, real(fw, c_double))
       else
         err%message = "nmodes: "//err%message
       end if
@@ -269,8 +203,8 @@ contains
         if (allocated(err)) exit
         call layer_response(r, k, g, s, ue)
         if (.not.all(ieee_is_finite([g%re, g%im, s%re, s%im, ue%re, ue%im]))) then
-          call fatal_error(err, "the layer response is unbounded at f_hz["//itoa(i-1)// &
-            & "] (1 + k H_gg = 0: an undamped natural frequency of the blade with the damper)", &
+          call fatal_error(err, "the layer response is unbounded at "//indexed_name("f_hz", i)// &
+            & " (1 + k H_gg = 0: an undamped natural frequency of the blade with the damper)", &
             & UDMAP_EPHYSICS)
           exit
         end if
@@ -287,61 +221,59 @@ contains
     type(blade_type), pointer :: b
     type(error_type), allocatable :: err
     call clear_error(error)
-    if (.not.c_associated(blade)) then
-      err = error_from_handle("blade")
-    else if (.not.c_associated(dir)) then
-      err = error_from_handle("dir")
-    else
+    call check_handle(blade, "blade", err)
+    call check_handle(dir, "dir", err)
+    if (.not.allocated(err)) then
       call c_f_pointer(blade, b)
-      call export_blade(b, string(dir), err)
+      call export_blade(b, c_string(dir), err)
     end if
     stat = set_error(error, err)
   end function udmap_blade_export
 
   ! ------------------------------------------------------------------ helpers
 
+  !> The kernel's parameters of the beam blade from the C struct.
+  pure function beam_from_c(cp) result(p)
+    type(c_beam_params), intent(in) :: cp
+    type(beam_params_type) :: p
+    p = beam_params_type(E=cp%E, rho=cp%rho, zeta=cp%zeta, neck_L=cp%neck_L, neck_h=cp%neck_h, &
+      & neck_b=cp%neck_b, platform_L=cp%platform_L, platform_m=cp%platform_m, &
+      & platform_J=cp%platform_J, airfoil_L=cp%airfoil_L, airfoil_h=cp%airfoil_h, &
+      & airfoil_b=cp%airfoil_b, neck_elements=int(cp%neck_elements), &
+      & airfoil_elements=int(cp%airfoil_elements))
+  end function beam_from_c
+
+  !> Gives a new blade to the caller's handle, or frees it on error.
+  subroutine hand_over(b, err, out)
+    type(blade_type), pointer, intent(inout) :: b
+    type(error_type), allocatable, intent(in) :: err
+    type(c_ptr), intent(inout) :: out
+    if (allocated(err)) then
+      deallocate(b)
+    else
+      out = c_loc(b)
+    end if
+  end subroutine hand_over
+
   subroutine check_arrays(blade, n, f_hz, out, err)
     type(c_ptr), intent(in) :: blade, f_hz, out
     integer(c_int), intent(in) :: n
     type(error_type), allocatable, intent(out) :: err
-    if (.not.c_associated(blade)) then
-      err = error_from_handle("blade")
-    else if (n < 0) then
-      call fatal_error(err, "n must not be negative", UDMAP_EINPUT)
-    else if (n > 0 .and. .not.c_associated(f_hz)) then
-      err = error_from_handle("f_hz")
-    else if (n > 0 .and. .not.c_associated(out)) then
-      err = error_from_handle("out")
-    end if
+    call check_handle(blade, "blade", err)
+    call check_input(n >= 0, "n must not be negative", err)
+    if (n <= 0) return
+    call check_handle(f_hz, "f_hz", err)
+    call check_handle(out, "out", err)
   end subroutine check_arrays
 
   subroutine check_frequency(f, i, err)
     real(c_double), intent(in) :: f
     integer, intent(in) :: i
     type(error_type), allocatable, intent(out) :: err
-    if (.not.ieee_is_finite(f)) then
-      call fatal_error(err, "f_hz["//itoa(i-1)//"] must be a non-negative finite frequency", &
-        & UDMAP_EINPUT)
-    else if (f < 0.0_c_double) then
-      call fatal_error(err, "f_hz["//itoa(i-1)//"] must be a non-negative finite frequency", &
-        & UDMAP_EINPUT)
+    if (ieee_is_finite(f)) then
+      if (f >= 0.0_c_double) return
     end if
+    call fatal_error(err, indexed_name("f_hz", i)//" must be a non-negative finite frequency", &
+      & UDMAP_EINPUT)
   end subroutine check_frequency
-
-  !> The Fortran string of a NUL-terminated C string.
-  function string(p) result(s)
-    type(c_ptr), intent(in) :: p
-    character(len=:), allocatable :: s
-    character(kind=c_char), pointer :: chars(:)
-    call c_f_pointer(p, chars, [int(c_strlen(p)) + 1])
-    s = c_string_to_fortran(chars)
-  end function string
-
-  pure function itoa(i) result(s)
-    integer, intent(in) :: i
-    character(len=:), allocatable :: s
-    character(len=24) :: buf
-    write(buf, '(i0)') i
-    s = trim(buf)
-  end function itoa
 end module udmap_api_blade

@@ -6,12 +6,13 @@ module udmap_api_damper
     & c_int, c_double
   use udmap_kinds, only: wp, pi
   use udmap_error, only: error_type, fatal_error, UDMAP_EINPUT
-  use udmap_api, only: set_error, clear_error, error_from_handle
+  use udmap_api_support, only: set_error, clear_error, check_handle, check_input, take_handle, &
+    & indexed_name
   use udmap_damper, only: damper_type, asymmetric_params_type, new_asymmetric_damper, &
     & new_jenkins_damper, new_table_damper, DAMPER_TABLE
   implicit none
   private
-  public :: udmap_asymmetric_params, udmap_damper_info, damper_from_handle
+  public :: udmap_asymmetric_params, udmap_damper_info, damper_from_handle, asymmetric_from_c
 
   !> udmap_asymmetric_params: 16 doubles in the header's order.
   type, bind(C) :: udmap_asymmetric_params
@@ -35,12 +36,20 @@ contains
     character(len=*), intent(in) :: name
     type(error_type), allocatable, intent(out) :: error
     damper => null()
-    if (.not. c_associated(handle)) then
-      error = error_from_handle(name)
-      return
-    end if
-    call c_f_pointer(handle, damper)
+    call check_handle(handle, name, error)
+    if (.not. allocated(error)) call c_f_pointer(handle, damper)
   end subroutine damper_from_handle
+
+  !> The kernel's parameters of the asymmetric damper from the C struct.
+  pure function asymmetric_from_c(params) result(p)
+    type(udmap_asymmetric_params), intent(in) :: params
+    type(asymmetric_params_type) :: p
+    p = asymmetric_params_type(CF=params%CF, mu=params%mu, pitch=params%pitch, y_P=params%y_P, &
+      & beta_L_deg=params%beta_L_deg, beta_R_deg=params%beta_R_deg, &
+      & flat=reshape([params%flat1_x, params%flat1_y, params%flat2_x, params%flat2_y], [2, 2]), &
+      & curved=[params%curved_x, params%curved_y], kn_flat=params%kn_flat, &
+      & kt_flat=params%kt_flat, kn_curved=params%kn_curved, kt_curved=params%kt_curved)
+  end function asymmetric_from_c
 
   function udmap_new_damper_asymmetric(herr, params, hdamper) result(stat) &
       & bind(C, name="udmap_new_damper_asymmetric")
@@ -48,26 +57,12 @@ contains
     type(udmap_asymmetric_params), intent(in) :: params
     type(c_ptr), intent(out) :: hdamper
     integer(c_int) :: stat
-    type(asymmetric_params_type) :: p
     type(damper_type), pointer :: d
     type(error_type), allocatable :: error
     call clear_error(herr)
     hdamper = c_null_ptr
-    p%CF = params%CF
-    p%mu = params%mu
-    p%pitch = params%pitch
-    p%y_P = params%y_P
-    p%beta_L_deg = params%beta_L_deg
-    p%beta_R_deg = params%beta_R_deg
-    p%flat(:,1) = [params%flat1_x, params%flat1_y]
-    p%flat(:,2) = [params%flat2_x, params%flat2_y]
-    p%curved = [params%curved_x, params%curved_y]
-    p%kn_flat = params%kn_flat
-    p%kt_flat = params%kt_flat
-    p%kn_curved = params%kn_curved
-    p%kt_curved = params%kt_curved
     allocate(d)
-    call new_asymmetric_damper(d, p, error)
+    call new_asymmetric_damper(d, asymmetric_from_c(params), error)
     call finish_new(d, error, hdamper)
     stat = set_error(herr, error)
   end function udmap_new_damper_asymmetric
@@ -100,8 +95,8 @@ contains
     type(error_type), allocatable :: error
     call clear_error(herr)
     hdamper = c_null_ptr
-    if (n < 2) then
-      call fatal_error(error, "udmap_new_damper_table: 'n' must be at least 2", UDMAP_EINPUT)
+    call check_input(n >= 2, "udmap_new_damper_table: 'n' must be at least 2", error)
+    if (allocated(error)) then
       stat = set_error(herr, error)
       return
     end if
@@ -120,11 +115,9 @@ contains
   subroutine udmap_delete_damper(hdamper) bind(C, name="udmap_delete_damper")
     type(c_ptr), intent(inout) :: hdamper
     type(damper_type), pointer :: d
-    if (c_associated(hdamper)) then
-      call c_f_pointer(hdamper, d)
-      deallocate(d)
-      hdamper = c_null_ptr
-    end if
+    if (.not.c_associated(hdamper)) return
+    call c_f_pointer(take_handle(hdamper), d)
+    deallocate(d)
   end subroutine udmap_delete_damper
 
   function udmap_damper_get_info(herr, hdamper, info) result(stat) &
@@ -210,9 +203,7 @@ contains
     integer :: i
     call clear_error(herr)
     call damper_from_handle(hdamper, d, "damper", error)
-    if (.not. allocated(error) .and. n < 1) then
-      call fatal_error(error, "udmap_damper_loop: 'n' must be at least 1", UDMAP_EINPUT)
-    end if
+    call check_input(n >= 1, "udmap_damper_loop: 'n' must be at least 1", error)
     if (.not. allocated(error)) then
       allocate(t(n), M(n))
       do i = 1, n
@@ -247,24 +238,19 @@ contains
     integer(c_int), intent(in) :: n
     real(c_double), intent(in) :: gamma(*)
     type(error_type), allocatable, intent(out) :: error
-    character(len=200) :: buf
+    character(len=16) :: buf
     integer :: i
-    if (n < 0) then
-      call fatal_error(error, "damper stiffness: 'n' must not be negative", UDMAP_EINPUT)
-      return
-    end if
+    call check_input(n >= 0, "damper stiffness: 'n' must not be negative", error)
     do i = 1, n
+      if (allocated(error)) return
       if (.not. (gamma(i) > 0 .and. gamma(i) <= huge(1.0_c_double))) then
-        write(buf, '(a, i0, a)') "damper stiffness: amplitude 'gamma[", i - 1, &
-          & "]' must be a positive finite number [rad]"
-        call fatal_error(error, trim(buf), UDMAP_EINPUT)
-        return
-      end if
-      if (d%kind == DAMPER_TABLE .and. gamma(i) > d%gamma_max) then
-        write(buf, '(a, i0, a, es12.5)') "damper stiffness: amplitude 'gamma[", i - 1, &
-          & "]' lies beyond the table's last row ", d%gamma_max
-        call fatal_error(error, trim(buf)//" rad and the table has no 'delta_M'", UDMAP_EINPUT)
-        return
+        call fatal_error(error, "damper stiffness: amplitude '"//indexed_name("gamma", i)// &
+          & "' must be a positive finite number [rad]", UDMAP_EINPUT)
+      else if (d%kind == DAMPER_TABLE .and. gamma(i) > d%gamma_max) then
+        write(buf, '(es12.5)') d%gamma_max
+        call fatal_error(error, "damper stiffness: amplitude '"//indexed_name("gamma", i)// &
+          & "' lies beyond the table's last row "//trim(buf)//" rad and the table has no "// &
+          & "'delta_M'", UDMAP_EINPUT)
       end if
     end do
   end subroutine check_amplitudes

@@ -6,13 +6,13 @@ module udmap_api_hbm
     & c_int, c_double
   use udmap_kinds, only: wp
   use udmap_error, only: error_type, fatal_error, UDMAP_EINPUT
-  use udmap_api, only: set_error, clear_error, error_from_handle
+  use udmap_api_support, only: set_error, clear_error, check_handle, check_input, take_handle, &
+    & copy_out
   use udmap_blade, only: blade_type
   use udmap_linear_structure, only: structure_type, structure_from_blade
   use udmap_hysteretic, only: hysteretic_element_type, jenkins_element_type, new_jenkins_element
   use udmap_contact_element, only: contact_element_type, new_contact_element
-  use udmap_damper_params, only: asymmetric_params_type
-  use udmap_api_damper, only: udmap_asymmetric_params
+  use udmap_api_damper, only: udmap_asymmetric_params, asymmetric_from_c
   use udmap_aft, only: aft_workspace_type, aft_moment
   use udmap_hbm, only: hbm_settings_type, hbm_point_type, hbm_curve_type, hbm_peak, &
     & hbm_peaks, hbm_response, HBM_MAX_PEAKS
@@ -107,24 +107,10 @@ contains
     integer(c_int) :: stat
     type(error_type), allocatable :: error
     type(c_contact_type), pointer :: c
-    type(asymmetric_params_type) :: p
     type(contact_element_type) :: el
     contact = c_null_ptr
     call clear_error(ehandle)
-    p%CF = params%CF
-    p%mu = params%mu
-    p%pitch = params%pitch
-    p%y_P = params%y_P
-    p%beta_L_deg = params%beta_L_deg
-    p%beta_R_deg = params%beta_R_deg
-    p%flat(:,1) = [params%flat1_x, params%flat1_y]
-    p%flat(:,2) = [params%flat2_x, params%flat2_y]
-    p%curved = [params%curved_x, params%curved_y]
-    p%kn_flat = params%kn_flat
-    p%kt_flat = params%kt_flat
-    p%kn_curved = params%kn_curved
-    p%kt_curved = params%kt_curved
-    call new_contact_element(el, p, error)
+    call new_contact_element(el, asymmetric_from_c(params), error)
     if (.not.allocated(error)) then
       allocate(c)
       allocate(c%element, source=el)
@@ -137,11 +123,9 @@ contains
   subroutine udmap_delete_contact(contact) bind(C, name="udmap_delete_contact")
     type(c_ptr), intent(inout) :: contact
     type(c_contact_type), pointer :: c
-    if (c_associated(contact)) then
-      call c_f_pointer(contact, c)
-      deallocate(c)
-      contact = c_null_ptr
-    end if
+    if (.not.c_associated(contact)) return
+    call c_f_pointer(take_handle(contact), c)
+    deallocate(c)
   end subroutine udmap_delete_contact
 
   !> One AFT evaluation with the loading history: gamma = G0 + Re(sum G_h e^{i h tau}).
@@ -162,13 +146,12 @@ contains
     call clear_error(ehandle)
     M0 = 0.0_c_double
     gamma_max = 0.0_c_double
-    if (.not.c_associated(contact)) then
-      error = error_from_handle("contact")
-    else if (H < 1 .or. H > max_harmonics) then
-      call fatal_error(error, "contact_aft: H must be in 1..64", UDMAP_EINPUT)
-    else if (samples < 0 .or. (samples > 0 .and. samples < 2*H + 1)) then
-      call fatal_error(error, "contact_aft: samples must be 0 (exact) or >= 2 H + 1", UDMAP_EINPUT)
-    else
+    call check_handle(contact, "contact", error)
+    call check_input(H >= 1 .and. H <= max_harmonics, "contact_aft: H must be in 1..64", error)
+    ! 2 H + 1 is computed for a valid H only
+    if (.not.allocated(error)) call check_input(samples == 0 .or. samples >= 2*H + 1, &
+      & "contact_aft: samples must be 0 (exact) or >= 2 H + 1", error)
+    if (.not.allocated(error)) then
       call c_f_pointer(contact, c)
       allocate(Gc(H), Mc(H))
       do k = 1, H
@@ -214,8 +197,7 @@ contains
     type(hbm_point_type), allocatable :: pts(:)
     integer :: i
     call clear_error(ehandle)
-    call prepare(blade, contact, n, st, c, error)
-    if (.not.allocated(error)) call settings_from_c(settings, set, error)
+    call prepare(blade, contact, n, st, c, error, settings, set)
     if (.not.allocated(error)) then
       call hbm_peaks(st, c%element, real(f_min, wp), real(f_max, wp), &
         & real(F_E(1:n), wp), set, pts, error)
@@ -245,8 +227,7 @@ contains
     type(hbm_point_type) :: pt
     integer :: i
     call clear_error(ehandle)
-    call prepare(blade, contact, n, st, c, error)
-    if (.not.allocated(error)) call settings_from_c(settings, set, error)
+    call prepare(blade, contact, n, st, c, error, settings, set)
     if (.not.allocated(error)) then
       do i = 1, n
         call hbm_response(st, c%element, real(f_min, wp), real(f_exc, wp), real(F_E(i), wp), &
@@ -277,21 +258,19 @@ contains
     integer :: m
     call clear_error(ehandle)
     npoints = 0
-    call prepare(blade, contact, 1, st, c, error)
-    if (.not.allocated(error)) call settings_from_c(settings, set, error)
-    if (.not.allocated(error) .and. capacity < 1) &
-      & call fatal_error(error, "hbm_curve: capacity must be >= 1", UDMAP_EINPUT)
+    call prepare(blade, contact, 1, st, c, error, settings, set)
+    call check_input(capacity >= 1, "hbm_curve: capacity must be >= 1", error)
     if (.not.allocated(error)) then
       call hbm_peak(st, c%element, real(f_min, wp), real(f_max, wp), real(F_E, wp), set, pt, &
         & error, curve)
       ! the curve is returned even when no peak is found in the band
       if (curve%n > 0) then
-        m = min(curve%n, int(capacity))
-        npoints = int(curve%n, c_int)
-        f(1:m) = curve%f(1:m)
-        gamma_1(1:m) = curve%gamma_1(1:m)
-        sigma_1(1:m) = curve%sigma_1(1:m)
-        gamma_max(1:m) = curve%gamma_max(1:m)
+        m = curve%n
+        npoints = int(m, c_int)
+        call copy_out(curve%f(1:m), f, int(capacity))
+        call copy_out(curve%gamma_1(1:m), gamma_1, int(capacity))
+        call copy_out(curve%sigma_1(1:m), sigma_1, int(capacity))
+        call copy_out(curve%gamma_max(1:m), gamma_max, int(capacity))
       end if
     end if
     stat = set_error(ehandle, error)
@@ -322,22 +301,8 @@ contains
     real(c_double), intent(in) :: F_E(*)
     type(c_dti_point), intent(out) :: points(*)
     integer(c_int) :: stat
-    type(error_type), allocatable :: error
-    type(structure_type) :: st
-    type(c_contact_type), pointer :: c
-    type(dti_point_type) :: pt
-    integer :: i
-    call clear_error(ehandle)
-    call prepare(blade, contact, n, st, c, error)
-    if (.not.allocated(error)) then
-      do i = 1, n
-        call dti_response(st, c%element, real(f_exc, wp), real(F_E(i), wp), &
-          & dti_from_c(settings), pt, error)
-        if (allocated(error)) exit
-        call dti_point_to_c(pt, points(i))
-      end do
-    end if
-    stat = set_error(ehandle, error)
+    stat = dti_points(ehandle, blade, contact, settings, f_exc, f_exc, n, F_E, points, &
+      & at_peak=.false.)
   end function udmap_dti_response
 
   !> Time integration at the frequency of the largest gamma_1 near the H = 1 peak.
@@ -350,6 +315,22 @@ contains
     real(c_double), intent(in) :: F_E(*)
     type(c_dti_point), intent(out) :: points(*)
     integer(c_int) :: stat
+    stat = dti_points(ehandle, blade, contact, settings, f_min, f_max, n, F_E, points, &
+      & at_peak=.true.)
+  end function udmap_dti_peak
+
+  !> Time integration for n forces at f_a (f_b unused) or, at_peak, at the peak in
+  !> [f_a, f_b]; the status.
+  function dti_points(ehandle, blade, contact, settings, f_a, f_b, n, F_E, points, at_peak) &
+      & result(stat)
+    type(c_ptr), intent(in) :: ehandle, blade, contact
+    type(c_dti_settings), intent(in) :: settings
+    real(c_double), intent(in) :: f_a, f_b
+    integer(c_int), intent(in) :: n
+    real(c_double), intent(in) :: F_E(*)
+    type(c_dti_point), intent(out) :: points(*)
+    logical, intent(in) :: at_peak
+    integer(c_int) :: stat
     type(error_type), allocatable :: error
     type(structure_type) :: st
     type(c_contact_type), pointer :: c
@@ -359,42 +340,43 @@ contains
     call prepare(blade, contact, n, st, c, error)
     if (.not.allocated(error)) then
       do i = 1, n
-        call dti_peak(st, c%element, real(f_min, wp), real(f_max, wp), real(F_E(i), wp), &
-          & dti_from_c(settings), pt, error)
+        if (at_peak) then
+          call dti_peak(st, c%element, real(f_a, wp), real(f_b, wp), real(F_E(i), wp), &
+            & dti_from_c(settings), pt, error)
+        else
+          call dti_response(st, c%element, real(f_a, wp), real(F_E(i), wp), &
+            & dti_from_c(settings), pt, error)
+        end if
         if (allocated(error)) exit
         call dti_point_to_c(pt, points(i))
       end do
     end if
     stat = set_error(ehandle, error)
-  end function udmap_dti_peak
+  end function dti_points
 
   ! ------------------------------------------------------------------ helpers
 
-  !> The structure of the blade handle and the contact element of the contact handle.
-  subroutine prepare(blade, contact, n, st, c, error)
+  !> The structure of the blade handle, the contact element of the contact handle and, when
+  !> given, the settings of the standard method.
+  subroutine prepare(blade, contact, n, st, c, error, settings, set)
     type(c_ptr), intent(in) :: blade, contact
     integer(c_int), intent(in) :: n
     type(structure_type), intent(out) :: st
     type(c_contact_type), pointer, intent(out) :: c
     type(error_type), allocatable, intent(out) :: error
+    type(c_hbm_settings), intent(in), optional :: settings
+    type(hbm_settings_type), intent(out), optional :: set
     type(blade_type), pointer :: b
     nullify(c)
-    if (.not.c_associated(blade)) then
-      error = error_from_handle("blade")
-      return
-    end if
-    if (.not.c_associated(contact)) then
-      error = error_from_handle("contact")
-      return
-    end if
-    if (n < 0) then
-      call fatal_error(error, "argument 'n' must be >= 0", UDMAP_EINPUT)
-      return
-    end if
+    call check_handle(blade, "blade", error)
+    call check_handle(contact, "contact", error)
+    call check_input(n >= 0, "argument 'n' must be >= 0", error)
+    if (allocated(error)) return
     call c_f_pointer(blade, b)
     call structure_from_blade(st, b, error)
     if (allocated(error)) return
     call c_f_pointer(contact, c)
+    if (present(settings)) call settings_from_c(settings, set, error)
   end subroutine prepare
 
   subroutine settings_to_c(s, c)

@@ -46,10 +46,11 @@ module udmap_api_legacy
   use udmap_kinds, only: wp
   use udmap_error, only: error_type, UDMAP_EINPUT
   use udmap_version_info, only: udmap_version_major, udmap_version_minor, udmap_version_patch
-  use udmap_beam, only: beam_params_type
+  use udmap_api_support, only: copy_out
+  use udmap_api_blade, only: c_beam_params, beam_from_c
+  use udmap_api_damper, only: udmap_asymmetric_params, asymmetric_from_c
   use udmap_blade, only: blade_type, new_beam_blade
-  use udmap_damper, only: damper_type, asymmetric_params_type, new_asymmetric_damper, &
-    & new_jenkins_damper
+  use udmap_damper, only: damper_type, new_asymmetric_damper, new_jenkins_damper
   use udmap_model, only: analysis_type, point_type, curve_type, model_type, new_model, &
     & limit_force, backbone, response, response_curves, REGIME_LIMIT
   implicit none
@@ -167,27 +168,8 @@ contains
     real(c_double), intent(out) :: gamma_P(nforce), f_res(nforce), sigma_a(nforce), &
       & u_E(nforce), F_lim
     integer(c_int), intent(out) :: regime(nforce), info
-    type(blade_type), target :: blade
-    type(damper_type), target :: d
-    type(model_type) :: model
-    type(point_type), allocatable :: points(:)
-    type(error_type), allocatable :: error
-
-    F_lim = 0
-    call check_common(nbeam, ndamper, nanalysis, nforce, F_E, 7, 8, info)
-    if (info /= 0) return
-    call zero_points(nforce, gamma_P, f_res, sigma_a, u_E, regime)
-    call build_model(beam, damper, ndamper, analysis, nanalysis, blade, d, model, F_lim, &
-      & 1, 3, 5, info)
-    if (info /= 0) return
-    if (nforce == 0) return
-    call backbone(model, real(F_E, wp), points, error)
-    if (allocated(error)) then
-      info = info_of(error, 8)
-      F_lim = 0
-      return
-    end if
-    call store_points(points, gamma_P, f_res, sigma_a, u_E, regime)
+    call solve_points(beam, nbeam, damper, ndamper, analysis, nanalysis, nforce, F_E, gamma_P, &
+      & f_res, sigma_a, u_E, regime, F_lim, info)
   end subroutine udmap_backbone_arrays
 
   !> UDMAP_RESPONSE_ARRAYS(BEAM, NBEAM, DAMPER, NDAMPER, ANALYS, NANALY, FEXC, NFORCE, FE,
@@ -212,33 +194,10 @@ contains
       & F_E(nforce)
     real(c_double), intent(out) :: gamma_P(nforce), sigma_a(nforce), u_E(nforce), F_lim
     integer(c_int), intent(out) :: regime(nforce), info
-    type(blade_type), target :: blade
-    type(damper_type), target :: d
-    type(model_type) :: model
-    type(point_type), allocatable :: points(:)
-    type(error_type), allocatable :: error
     real(c_double), allocatable :: f_res(:)
-
-    F_lim = 0
-    call check_common(nbeam, ndamper, nanalysis, nforce, F_E, 8, 9, info)
-    if (info /= 0) return
-    allocate(f_res(nforce))
-    call zero_points(nforce, gamma_P, f_res, sigma_a, u_E, regime)
-    if (.not.(f_exc >= analysis(1) .and. f_exc <= analysis(2))) then
-      info = -7
-      return
-    end if
-    call build_model(beam, damper, ndamper, analysis, nanalysis, blade, d, model, F_lim, &
-      & 1, 3, 5, info)
-    if (info /= 0) return
-    if (nforce == 0) return
-    call response(model, real(f_exc, wp), real(F_E, wp), points, error)
-    if (allocated(error)) then
-      info = info_of(error, 9)
-      F_lim = 0
-      return
-    end if
-    call store_points(points, gamma_P, f_res, sigma_a, u_E, regime)
+    allocate(f_res(max(nforce, 0_c_int)))
+    call solve_points(beam, nbeam, damper, ndamper, analysis, nanalysis, nforce, F_E, gamma_P, &
+      & f_res, sigma_a, u_E, regime, F_lim, info, f_exc)
   end subroutine udmap_response_arrays
 
   !> UDMAP_CURVE_ARRAYS(BEAM, NBEAM, DAMPER, NDAMPER, ANALYS, NANALY, FE, LAYERS, MAXPTS,
@@ -297,13 +256,57 @@ contains
       info = -9
       return
     end if
-    f(1:npts) = real(curves(1)%f, c_double)
-    gamma_P(1:npts) = real(curves(1)%gamma_P, c_double)
-    sigma_a(1:npts) = real(curves(1)%sigma_a, c_double)
-    branch(1:npts) = int(curves(1)%branch, c_int)
+    call copy_out(curves(1)%f, f, int(npts))
+    call copy_out(curves(1)%gamma_P, gamma_P, int(npts))
+    call copy_out(curves(1)%sigma_a, sigma_a, int(npts))
+    call copy_out(curves(1)%branch, branch, int(npts))
   end subroutine udmap_curve_arrays
 
   ! ------------------------------------------------------------------ helpers
+
+  !> UDMAP_BACKBONE_ARRAYS or, given f_exc, UDMAP_RESPONSE_ARRAYS (whose arguments from
+  !> NFORCE on stand one later, FEXC being the 7th).
+  subroutine solve_points(beam, nbeam, damper, ndamper, analysis, nanalysis, nforce, F_E, &
+      & gamma_P, f_res, sigma_a, u_E, regime, F_lim, info, f_exc)
+    integer(c_int), intent(in) :: nbeam, ndamper, nanalysis, nforce
+    real(c_double), intent(in) :: beam(*), damper(*), analysis(*), F_E(*)
+    real(c_double), intent(out) :: gamma_P(*), f_res(*), sigma_a(*), u_E(*), F_lim
+    integer(c_int), intent(out) :: regime(*), info
+    real(c_double), intent(in), optional :: f_exc
+    type(blade_type), target :: blade
+    type(damper_type), target :: d
+    type(model_type) :: model
+    type(point_type), allocatable :: points(:)
+    type(error_type), allocatable :: error
+    integer :: shift
+
+    shift = merge(1, 0, present(f_exc))
+    F_lim = 0
+    call check_common(nbeam, ndamper, nanalysis, nforce, F_E, 7 + shift, 8 + shift, info)
+    if (info /= 0) return
+    call zero_points(nforce, gamma_P, f_res, sigma_a, u_E, regime)
+    if (present(f_exc)) then
+      if (.not.(f_exc >= analysis(1) .and. f_exc <= analysis(2))) then
+        info = -7
+        return
+      end if
+    end if
+    call build_model(beam, damper, ndamper, analysis, nanalysis, blade, d, model, F_lim, &
+      & 1, 3, 5, info)
+    if (info /= 0) return
+    if (nforce == 0) return
+    if (present(f_exc)) then
+      call response(model, real(f_exc, wp), real(F_E(1:nforce), wp), points, error)
+    else
+      call backbone(model, real(F_E(1:nforce), wp), points, error)
+    end if
+    if (allocated(error)) then
+      info = info_of(error, 8 + shift)
+      F_lim = 0
+      return
+    end if
+    call store_points(points, gamma_P, f_res, sigma_a, u_E, regime)
+  end subroutine solve_points
 
   !> INFO from a kernel error: -arg for bad input (the argument whose values were rejected),
   !> the status (3 physics, 4 numerics) otherwise.
@@ -381,25 +384,14 @@ contains
     integer(c_int), intent(in) :: n
     type(damper_type), intent(out) :: damper
     type(error_type), allocatable, intent(out) :: error
-    type(asymmetric_params_type) :: a
     if (n == LEGACY_NDAMPER_JENKINS) then
       call new_jenkins_damper(damper, real(p(1), wp), real(p(2), wp), error)
       return
     end if
-    a%CF = real(p(1), wp)
-    a%mu = real(p(2), wp)
-    a%pitch = real(p(3), wp)
-    a%y_P = real(p(4), wp)
-    a%beta_L_deg = real(p(5), wp)
-    a%beta_R_deg = real(p(6), wp)
-    a%flat(:, 1) = real(p(7:8), wp)
-    a%flat(:, 2) = real(p(9:10), wp)
-    a%curved = real(p(11:12), wp)
-    a%kn_flat = real(p(13), wp)
-    a%kt_flat = real(p(14), wp)
-    a%kn_curved = real(p(15), wp)
-    a%kt_curved = real(p(16), wp)
-    call new_asymmetric_damper(damper, a, error)
+    ! DAMPER holds the fields of udmap_asymmetric_params in order
+    call new_asymmetric_damper(damper, asymmetric_from_c(udmap_asymmetric_params(p(1), p(2), &
+      & p(3), p(4), p(5), p(6), p(7), p(8), p(9), p(10), p(11), p(12), p(13), p(14), p(15), &
+      & p(16))), error)
   end subroutine build_damper
 
   !> Blade, damper and model from the parameter arrays, and F_lim; INFO names the array
@@ -414,7 +406,6 @@ contains
     real(c_double), intent(out) :: F_lim
     integer, intent(in) :: beam_arg, damper_arg, analysis_arg
     integer(c_int), intent(out) :: info
-    type(beam_params_type) :: bp
     type(analysis_type) :: a
     type(error_type), allocatable :: error
     real(wp) :: F
@@ -425,33 +416,15 @@ contains
       info = int(-beam_arg, c_int)
       return
     end if
-    if (nanalysis >= 5) then
-      if (.not.whole(analysis(5))) then
-        info = int(-analysis_arg, c_int)
-        return
-      end if
+    ! grid_per_decade and harmonics, where given, are whole numbers
+    if (.not.all(whole(analysis(5:min(nanalysis, 6_c_int))))) then
+      info = int(-analysis_arg, c_int)
+      return
     end if
-    if (nanalysis >= 6) then
-      if (.not.whole(analysis(6))) then
-        info = int(-analysis_arg, c_int)
-        return
-      end if
-    end if
-    bp%E = real(beam(1), wp)
-    bp%rho = real(beam(2), wp)
-    bp%zeta = real(beam(3), wp)
-    bp%neck_L = real(beam(4), wp)
-    bp%neck_h = real(beam(5), wp)
-    bp%neck_b = real(beam(6), wp)
-    bp%platform_L = real(beam(7), wp)
-    bp%platform_m = real(beam(8), wp)
-    bp%platform_J = real(beam(9), wp)
-    bp%airfoil_L = real(beam(10), wp)
-    bp%airfoil_h = real(beam(11), wp)
-    bp%airfoil_b = real(beam(12), wp)
-    bp%neck_elements = nint(beam(13))
-    bp%airfoil_elements = nint(beam(14))
-    call new_beam_blade(blade, bp, error)
+    ! BEAM holds the fields of udmap_beam_params in order
+    call new_beam_blade(blade, beam_from_c(c_beam_params(beam(1), beam(2), beam(3), beam(4), &
+      & beam(5), beam(6), beam(7), beam(8), beam(9), beam(10), beam(11), beam(12), &
+      & nint(beam(13)), nint(beam(14)))), error)
     if (allocated(error)) then
       info = info_of(error, beam_arg)
       return

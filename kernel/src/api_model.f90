@@ -6,7 +6,8 @@ module udmap_api_model
     & c_loc, c_int, c_double
   use udmap_kinds, only: wp
   use udmap_error, only: error_type, fatal_error, UDMAP_EINPUT
-  use udmap_api, only: set_error, clear_error, error_from_handle
+  use udmap_api_support, only: set_error, clear_error, check_handle, check_input, take_handle, &
+    & copy_out
   use udmap_blade, only: blade_type
   use udmap_damper, only: damper_type
   use udmap_model, only: model_type, analysis_type, point_type, curve_type, new_model, &
@@ -80,11 +81,9 @@ contains
     type(analysis_type) :: a
     call clear_error(errh)
     modelh = c_null_ptr
-    if (.not.c_associated(bladeh)) then
-      error = error_from_handle("blade")
-    else if (.not.c_associated(damperh)) then
-      error = error_from_handle("damper")
-    else
+    call check_handle(bladeh, "blade", error)
+    call check_handle(damperh, "damper", error)
+    if (.not.allocated(error)) then
       call c_f_pointer(bladeh, blade)
       call c_f_pointer(damperh, damper)
       a%f_min = analysis%f_min
@@ -112,11 +111,9 @@ contains
   subroutine udmap_delete_model(modelh) bind(C, name="udmap_delete_model")
     type(c_ptr), intent(inout) :: modelh
     type(c_model_type), pointer :: m
-    if (c_associated(modelh)) then
-      call c_f_pointer(modelh, m)
-      deallocate(m)
-      modelh = c_null_ptr
-    end if
+    if (.not.c_associated(modelh)) return
+    call c_f_pointer(take_handle(modelh), m)
+    deallocate(m)
   end subroutine udmap_delete_model
 
   !> int udmap_model_set_damper(error, model, damper): couples another damper.
@@ -127,13 +124,9 @@ contains
     type(error_type), allocatable :: error
     type(c_model_type), pointer :: m
     type(damper_type), pointer :: damper
-    call clear_error(errh)
-    if (.not.c_associated(modelh)) then
-      error = error_from_handle("model")
-    else if (.not.c_associated(damperh)) then
-      error = error_from_handle("damper")
-    else
-      call c_f_pointer(modelh, m)
+    call model_from_handle(errh, modelh, m, error)
+    call check_handle(damperh, "damper", error)
+    if (.not.allocated(error)) then
       call c_f_pointer(damperh, damper)
       call set_damper(m%model, damper, error)
       if (allocated(m%curves)) deallocate(m%curves)
@@ -147,19 +140,7 @@ contains
     type(c_ptr), value :: errh, modelh
     real(c_double), intent(out) :: F_lim
     integer(c_int) :: stat
-    type(error_type), allocatable :: error
-    type(c_model_type), pointer :: m
-    real(wp) :: value
-    call clear_error(errh)
-    F_lim = 0
-    if (.not.c_associated(modelh)) then
-      error = error_from_handle("model")
-    else
-      call c_f_pointer(modelh, m)
-      call limit_force(m%model, value, error)
-      if (.not.allocated(error)) F_lim = value
-    end if
-    stat = set_error(errh, error)
+    stat = model_limit(errh, modelh, F_lim, backbone_level=.false.)
   end function udmap_model_limit_force
 
   !> int udmap_model_limit_force_backbone(error, model, double *F_lim_backbone) [N]: the level
@@ -171,20 +152,29 @@ contains
     type(c_ptr), value :: errh, modelh
     real(c_double), intent(out) :: F
     integer(c_int) :: stat
+    stat = model_limit(errh, modelh, F, backbone_level=.true.)
+  end function udmap_model_limit_force_backbone
+
+  !> F_lim or, backbone_level, F_lim_backbone (computed after F_lim); the status.
+  function model_limit(errh, modelh, F, backbone_level) result(stat)
+    type(c_ptr), intent(in) :: errh, modelh
+    real(c_double), intent(out) :: F
+    logical, intent(in) :: backbone_level
+    integer(c_int) :: stat
     type(error_type), allocatable :: error
     type(c_model_type), pointer :: m
     real(wp) :: value
-    call clear_error(errh)
     F = 0
-    if (.not.c_associated(modelh)) then
-      error = error_from_handle("model")
-    else
-      call c_f_pointer(modelh, m)
+    call model_from_handle(errh, modelh, m, error)
+    if (.not.allocated(error)) then
       call limit_force(m%model, value, error)
-      if (.not.allocated(error)) F = limit_force_backbone(m%model)
+      if (.not.allocated(error)) then
+        F = value
+        if (backbone_level) F = limit_force_backbone(m%model)
+      end if
     end if
     stat = set_error(errh, error)
-  end function udmap_model_limit_force_backbone
+  end function model_limit
 
   !> int udmap_model_backbone_jumps(error, model, n, int *jump): per point of the last
   !> udmap_model_backbone call (n of them) 1 if gamma_P is the amplitude gamma_c of a jump of
@@ -197,11 +187,8 @@ contains
     integer(c_int) :: stat
     type(error_type), allocatable :: error
     type(c_model_type), pointer :: m
-    call clear_error(errh)
-    if (.not.c_associated(modelh)) then
-      error = error_from_handle("model")
-    else
-      call c_f_pointer(modelh, m)
+    call model_from_handle(errh, modelh, m, error)
+    if (.not.allocated(error)) then
       if (.not.allocated(m%jump)) then
         call fatal_error(error, "backbone_jumps: no udmap_model_backbone call yet", UDMAP_EINPUT)
       else if (n /= size(m%jump)) then
@@ -226,13 +213,9 @@ contains
     type(error_type), allocatable :: error
     type(c_model_type), pointer :: m
     real(wp), allocatable :: Fb(:), fr(:)
-    call clear_error(errh)
-    if (.not.c_associated(modelh)) then
-      error = error_from_handle("model")
-    else if (n < 0) then
-      call fatal_error(error, "backbone_curve: n must not be negative", UDMAP_EINPUT)
-    else
-      call c_f_pointer(modelh, m)
+    call model_from_handle(errh, modelh, m, error)
+    call check_input(n >= 0, "backbone_curve: n must not be negative", error)
+    if (.not.allocated(error)) then
       allocate(Fb(n), fr(n))
       call backbone_curve(m%model, gamma(1:n), Fb, fr, error)
       if (.not.allocated(error)) then
@@ -276,28 +259,7 @@ contains
     real(c_double), intent(in) :: F_E(*)
     type(c_point_type), intent(out) :: points(*)
     integer(c_int) :: stat
-    type(error_type), allocatable :: error
-    type(c_model_type), pointer :: m
-    type(point_type), allocatable :: p(:)
-    integer :: i
-    call clear_error(errh)
-    if (.not.c_associated(modelh)) then
-      error = error_from_handle("model")
-    else if (n < 0) then
-      call fatal_error(error, "backbone: n must not be negative", UDMAP_EINPUT)
-    else
-      call c_f_pointer(modelh, m)
-      if (allocated(m%jump)) deallocate(m%jump)
-      call backbone(m%model, F_E(1:n), p, error)
-      if (.not.allocated(error)) then
-        do i = 1, n
-          call to_c_point(p(i), points(i))
-        end do
-        m%jump = p(1:n)%jump
-        call move_alloc(p, m%last)
-      end if
-    end if
-    stat = set_error(errh, error)
+    stat = model_points(errh, modelh, n, F_E, points)
   end function udmap_model_backbone
 
   !> int udmap_model_response(error, model, f_exc, n, F_E, udmap_point *): the response at
@@ -310,27 +272,45 @@ contains
     real(c_double), intent(in) :: F_E(*)
     type(c_point_type), intent(out) :: points(*)
     integer(c_int) :: stat
+    stat = model_points(errh, modelh, n, F_E, points, f_exc)
+  end function udmap_model_response
+
+  !> The backbone points of n forces or, given f_exc, the response at f_exc; kept for
+  !> udmap_model_point_harmonics (and the jumps of the backbone for udmap_model_backbone_jumps).
+  function model_points(errh, modelh, n, F_E, points, f_exc) result(stat)
+    type(c_ptr), intent(in) :: errh, modelh
+    integer(c_int), intent(in) :: n
+    real(c_double), intent(in) :: F_E(*)
+    type(c_point_type), intent(out) :: points(*)
+    real(c_double), intent(in), optional :: f_exc
+    integer(c_int) :: stat
     type(error_type), allocatable :: error
     type(c_model_type), pointer :: m
     type(point_type), allocatable :: p(:)
     integer :: i
-    call clear_error(errh)
-    if (.not.c_associated(modelh)) then
-      error = error_from_handle("model")
-    else if (n < 0) then
-      call fatal_error(error, "response: n must not be negative", UDMAP_EINPUT)
+    call model_from_handle(errh, modelh, m, error)
+    if (present(f_exc)) then
+      call check_input(n >= 0, "response: n must not be negative", error)
     else
-      call c_f_pointer(modelh, m)
-      call response(m%model, f_exc, F_E(1:n), p, error)
+      call check_input(n >= 0, "backbone: n must not be negative", error)
+    end if
+    if (.not.allocated(error)) then
+      if (present(f_exc)) then
+        call response(m%model, f_exc, F_E(1:n), p, error)
+      else
+        if (allocated(m%jump)) deallocate(m%jump)
+        call backbone(m%model, F_E(1:n), p, error)
+      end if
       if (.not.allocated(error)) then
         do i = 1, n
           call to_c_point(p(i), points(i))
         end do
+        if (.not.present(f_exc)) m%jump = p(1:n)%jump
         call move_alloc(p, m%last)
       end if
     end if
     stat = set_error(errh, error)
-  end function udmap_model_response
+  end function model_points
 
   !> int udmap_model_set_harmonics(error, model, harmonics, harmonic_tol): harmonics of the
   !> platform rotation for the next calls (1: the single-harmonic method; H = 2..64: harmonics
@@ -344,11 +324,8 @@ contains
     integer(c_int) :: stat
     type(error_type), allocatable :: error
     type(c_model_type), pointer :: m
-    call clear_error(errh)
-    if (.not.c_associated(modelh)) then
-      error = error_from_handle("model")
-    else
-      call c_f_pointer(modelh, m)
+    call model_from_handle(errh, modelh, m, error)
+    if (.not.allocated(error)) then
       call set_harmonics(m%model, int(harmonics), real(harmonic_tol, wp), error)
     end if
     stat = set_error(errh, error)
@@ -368,14 +345,9 @@ contains
     integer(c_int) :: stat
     type(error_type), allocatable :: error
     type(c_model_type), pointer :: m
-    integer :: k
-    real(wp) :: two(2)
-    call clear_error(errh)
     nh = 0
-    if (.not.c_associated(modelh)) then
-      error = error_from_handle("model")
-    else
-      call c_f_pointer(modelh, m)
+    call model_from_handle(errh, modelh, m, error)
+    if (.not.allocated(error)) then
       if (.not.allocated(m%last)) then
         call fatal_error(error, "point_harmonics: no backbone or response computed yet", &
           & UDMAP_EINPUT)
@@ -387,16 +359,12 @@ contains
         associate(p => m%last(i + 1))
           if (allocated(p%gamma_h)) then
             nh = int(size(p%gamma_h), c_int)
-            k = min(int(nh), int(nmax))
-            gamma_h(1:k) = p%gamma_h(0:k-1)
-            sigma_h(1:k) = p%sigma_h(0:k-1)
+            call copy_out(p%gamma_h, gamma_h, int(nmax))
+            call copy_out(p%sigma_h, sigma_h, int(nmax))
           else
             nh = 2
-            two = [0.0_wp, p%gamma_P]
-            k = min(2, int(nmax))
-            gamma_h(1:k) = two(1:k)
-            two = [0.0_wp, p%sigma_a]
-            sigma_h(1:k) = two(1:k)
+            call copy_out([0.0_wp, p%gamma_P], gamma_h, int(nmax))
+            call copy_out([0.0_wp, p%sigma_a], sigma_h, int(nmax))
           end if
         end associate
       end if
@@ -414,13 +382,9 @@ contains
     integer(c_int) :: stat
     type(error_type), allocatable :: error
     type(c_model_type), pointer :: m
-    call clear_error(errh)
-    if (.not.c_associated(modelh)) then
-      error = error_from_handle("model")
-    else if (n < 0) then
-      call fatal_error(error, "curves: n must not be negative", UDMAP_EINPUT)
-    else
-      call c_f_pointer(modelh, m)
+    call model_from_handle(errh, modelh, m, error)
+    call check_input(n >= 0, "curves: n must not be negative", error)
+    if (.not.allocated(error)) then
       if (allocated(m%curves)) deallocate(m%curves)
       call response_curves(m%model, F_E(1:n), int(layers), m%curves, error)
       if (allocated(error) .and. allocated(m%curves)) deallocate(m%curves)
@@ -428,19 +392,25 @@ contains
     stat = set_error(errh, error)
   end function udmap_model_curves
 
+  !> The model behind a C handle (clearing the error handle first), or the NULL-handle error.
+  subroutine model_from_handle(errh, modelh, m, error)
+    type(c_ptr), intent(in) :: errh, modelh
+    type(c_model_type), pointer, intent(out) :: m
+    type(error_type), allocatable, intent(out) :: error
+    call clear_error(errh)
+    m => null()
+    call check_handle(modelh, "model", error)
+    if (.not.allocated(error)) call c_f_pointer(modelh, m)
+  end subroutine model_from_handle
+
   !> The stored curve i (0-based), or an error.
   subroutine get_curve(errh, modelh, i, m, error)
     type(c_ptr), intent(in) :: errh, modelh
     integer(c_int), intent(in) :: i
     type(c_model_type), pointer, intent(out) :: m
     type(error_type), allocatable, intent(out) :: error
-    call clear_error(errh)
-    m => null()
-    if (.not.c_associated(modelh)) then
-      error = error_from_handle("model")
-      return
-    end if
-    call c_f_pointer(modelh, m)
+    call model_from_handle(errh, modelh, m, error)
+    if (allocated(error)) return
     if (.not.allocated(m%curves)) then
       call fatal_error(error, "curves: none computed yet (call udmap_model_curves)", UDMAP_EINPUT)
     else if (i < 0 .or. i >= size(m%curves)) then
@@ -483,11 +453,11 @@ contains
           & "(udmap_model_curve_size)", UDMAP_EINPUT)
       else
         associate(c => m%curves(i + 1))
-          f_hz(1:n) = c%f
-          gamma_P(1:n) = c%gamma_P
-          sigma_a(1:n) = c%sigma_a
-          branch(1:n) = c%branch
-          part(1:n) = c%part
+          call copy_out(c%f, f_hz, n)
+          call copy_out(c%gamma_P, gamma_P, n)
+          call copy_out(c%sigma_a, sigma_a, n)
+          call copy_out(c%branch, branch, n)
+          call copy_out(c%part, part, n)
         end associate
       end if
     end if

@@ -2,17 +2,15 @@
 !> blade given by COO arrays (PHYSICS.md 1.3). A udmap_reduction handle points to a
 !> reduction_type allocated here and owned by the caller. Every pointer argument is checked.
 module udmap_api_reduce
-  use, intrinsic :: iso_c_binding, only: c_ptr, c_null_ptr, c_associated, c_f_pointer, c_loc, &
-    & c_int, c_double, c_int64_t
+  use, intrinsic :: iso_c_binding, only: c_ptr, c_associated, c_f_pointer, c_loc, c_int, &
+    & c_double, c_int64_t
   use udmap_kinds, only: wp
-  use udmap_error, only: error_type, fatal_error
-  use udmap_api, only: set_error, clear_error, error_from_handle
+  use udmap_error, only: error_type
+  use udmap_api_support, only: set_error, clear_error, check_handle, check_input, take_handle, &
+    & handle_slot, put_out
   use udmap_craig_bampton, only: reduction_type, platform_centred_reduction
   implicit none
   private
-
-  !> Entries of udmap_reduction_info.
-  integer, parameter :: n_info = 15
 
 contains
 
@@ -36,44 +34,32 @@ contains
     type(reduction_type), pointer :: red
     integer(c_int), target :: none_i(1)
     call clear_error(error)
-    if (c_associated(reduction)) then
-      call c_f_pointer(reduction, out)
-      out = c_null_ptr
-    end if
-    if (.not.c_associated(reduction)) then
-      err = error_from_handle("reduction")
-    else if (n < 1) then
-      call fatal_error(err, "n: the model has no DOF")
-    else if (nnz_k < 1) then
-      call fatal_error(err, "nnz_K: K has no entry")
-    else if (nnz_m < 1) then
-      call fatal_error(err, "nnz_M: M has no entry")
-    else if (nnz_k > huge(1_c_int) .or. nnz_m > huge(1_c_int)) then
-      call fatal_error(err, "nnz_K/nnz_M: more than 2^31 - 1 entries")
-    else if (n_nodes < 1) then
-      call fatal_error(err, "n_nodes: no node")
-    else if (n_platform < 1) then
-      call fatal_error(err, "platform_nodes: the platform set is empty")
-    else if (n_clamp < 0 .or. n_stress < 0) then
-      call fatal_error(err, "n_clamp/n_stress: negative")
-    else
-      call null_check(k_row, "K_row")
-      call null_check(k_col, "K_col")
-      call null_check(k_val, "K_val")
-      call null_check(m_row, "M_row")
-      call null_check(m_col, "M_col")
-      call null_check(m_val, "M_val")
-      call null_check(dof_node, "dof_node")
-      call null_check(dof_comp, "dof_comp")
-      call null_check(node_ids, "node_ids")
-      call null_check(node_xyz, "node_xyz")
-      call null_check(platform_nodes, "platform_nodes")
-      call null_check(ref_point, "ref_point")
-      call null_check(axis, "axis")
-      call null_check(exc_direction, "exc_direction")
-      if (n_clamp > 0) call null_check(clamp_nodes, "clamp_nodes")
-      if (n_stress > 0) call null_check(stress_rows, "stress_rows")
-    end if
+    out => handle_slot(reduction)
+    call check_handle(reduction, "reduction", err)
+    call check_input(n >= 1, "n: the model has no DOF", err)
+    call check_input(nnz_k >= 1, "nnz_K: K has no entry", err)
+    call check_input(nnz_m >= 1, "nnz_M: M has no entry", err)
+    call check_input(nnz_k <= huge(1_c_int) .and. nnz_m <= huge(1_c_int), &
+      & "nnz_K/nnz_M: more than 2^31 - 1 entries", err)
+    call check_input(n_nodes >= 1, "n_nodes: no node", err)
+    call check_input(n_platform >= 1, "platform_nodes: the platform set is empty", err)
+    call check_input(n_clamp >= 0 .and. n_stress >= 0, "n_clamp/n_stress: negative", err)
+    call check_handle(k_row, "K_row", err)
+    call check_handle(k_col, "K_col", err)
+    call check_handle(k_val, "K_val", err)
+    call check_handle(m_row, "M_row", err)
+    call check_handle(m_col, "M_col", err)
+    call check_handle(m_val, "M_val", err)
+    call check_handle(dof_node, "dof_node", err)
+    call check_handle(dof_comp, "dof_comp", err)
+    call check_handle(node_ids, "node_ids", err)
+    call check_handle(node_xyz, "node_xyz", err)
+    call check_handle(platform_nodes, "platform_nodes", err)
+    call check_handle(ref_point, "ref_point", err)
+    call check_handle(axis, "axis", err)
+    call check_handle(exc_direction, "exc_direction", err)
+    if (n_clamp > 0) call check_handle(clamp_nodes, "clamp_nodes", err)
+    if (n_stress > 0) call check_handle(stress_rows, "stress_rows", err)
     if (allocated(err)) then
       stat = set_error(error, err)
       return
@@ -113,13 +99,6 @@ contains
       out = c_loc(red)
     end if
     stat = set_error(error, err)
-  contains
-    subroutine null_check(p, name)
-      type(c_ptr), intent(in) :: p
-      character(len=*), intent(in) :: name
-      if (allocated(err)) return
-      if (.not.c_associated(p)) err = error_from_handle(name)
-    end subroutine null_check
   end function udmap_reduce
 
   !> void udmap_delete_reduction(udmap_reduction *)
@@ -129,11 +108,9 @@ contains
     type(reduction_type), pointer :: red
     if (.not.c_associated(reduction)) return
     call c_f_pointer(reduction, handle)
-    if (c_associated(handle)) then
-      call c_f_pointer(handle, red)
-      deallocate(red)
-      handle = c_null_ptr
-    end if
+    if (.not.c_associated(handle)) return
+    call c_f_pointer(take_handle(handle), red)
+    deallocate(red)
   end subroutine udmap_delete_reduction
 
   !> int udmap_reduction_sizes(error, reduction, int *r, int *n_modes, int *n_stress,
@@ -142,41 +119,15 @@ contains
       & gamma_dof, exc_dof) result(stat) bind(C, name="udmap_reduction_sizes")
     type(c_ptr), value :: error, reduction, r, n_modes, n_stress, n_freqs_full, gamma_dof, exc_dof
     integer(c_int) :: stat
-    type(error_type), allocatable :: err
     type(reduction_type), pointer :: red
-    integer(c_int), pointer :: p
-    call clear_error(error)
-    if (.not.c_associated(reduction)) then
-      err = error_from_handle("reduction")
-      stat = set_error(error, err)
-      return
-    end if
-    call c_f_pointer(reduction, red)
-    if (c_associated(r)) then
-      call c_f_pointer(r, p)
-      p = int(red%r, c_int)
-    end if
-    if (c_associated(n_modes)) then
-      call c_f_pointer(n_modes, p)
-      p = int(red%n_modes, c_int)
-    end if
-    if (c_associated(n_stress)) then
-      call c_f_pointer(n_stress, p)
-      p = int(size(red%S, 2), c_int)
-    end if
-    if (c_associated(n_freqs_full)) then
-      call c_f_pointer(n_freqs_full, p)
-      p = int(size(red%freqs_full), c_int)
-    end if
-    if (c_associated(gamma_dof)) then
-      call c_f_pointer(gamma_dof, p)
-      p = int(red%gamma_dof, c_int)
-    end if
-    if (c_associated(exc_dof)) then
-      call c_f_pointer(exc_dof, p)
-      p = int(red%exc_dof, c_int)
-    end if
-    stat = 0
+    call reduction_from_handle(error, reduction, red, stat)
+    if (stat /= 0) return
+    call put_out(r, red%r)
+    call put_out(n_modes, red%n_modes)
+    call put_out(n_stress, size(red%S, 2))
+    call put_out(n_freqs_full, size(red%freqs_full))
+    call put_out(gamma_dof, red%gamma_dof)
+    call put_out(exc_dof, red%exc_dof)
   end function udmap_reduction_sizes
 
   !> int udmap_reduction_get(error, reduction, double *M, double *K, double *stress,
@@ -187,37 +138,14 @@ contains
       & result(stat) bind(C, name="udmap_reduction_get")
     type(c_ptr), value :: error, reduction, m, k, stress, freqs_reduced, freqs_full
     integer(c_int) :: stat
-    type(error_type), allocatable :: err
     type(reduction_type), pointer :: red
-    real(c_double), pointer :: a(:, :), f(:)
-    call clear_error(error)
-    if (.not.c_associated(reduction)) then
-      err = error_from_handle("reduction")
-      stat = set_error(error, err)
-      return
-    end if
-    call c_f_pointer(reduction, red)
-    if (c_associated(m)) then
-      call c_f_pointer(m, a, [red%r, red%r])
-      a = red%M
-    end if
-    if (c_associated(k)) then
-      call c_f_pointer(k, a, [red%r, red%r])
-      a = red%K
-    end if
-    if (c_associated(stress)) then
-      call c_f_pointer(stress, a, [red%r, size(red%S, 2)])
-      a = red%S
-    end if
-    if (c_associated(freqs_reduced)) then
-      call c_f_pointer(freqs_reduced, f, [red%r])
-      f = red%freqs_reduced
-    end if
-    if (c_associated(freqs_full)) then
-      call c_f_pointer(freqs_full, f, [size(red%freqs_full)])
-      f = red%freqs_full
-    end if
-    stat = 0
+    call reduction_from_handle(error, reduction, red, stat)
+    if (stat /= 0) return
+    call put_out(m, red%M)
+    call put_out(k, red%K)
+    call put_out(stress, red%S)
+    call put_out(freqs_reduced, red%freqs_reduced)
+    call put_out(freqs_full, red%freqs_full)
   end function udmap_reduction_get
 
   !> int udmap_reduction_info(error, reduction, double info[15]): f_cut, f_check, cut_count,
@@ -229,22 +157,32 @@ contains
     integer(c_int) :: stat
     type(error_type), allocatable :: err
     type(reduction_type), pointer :: red
-    real(c_double), pointer :: o(:)
     call clear_error(error)
-    if (.not.c_associated(reduction)) then
-      err = error_from_handle("reduction")
-    else if (.not.c_associated(info)) then
-      err = error_from_handle("info")
-    end if
+    call check_handle(reduction, "reduction", err)
+    call check_handle(info, "info", err)
     if (allocated(err)) then
       stat = set_error(error, err)
       return
     end if
     call c_f_pointer(reduction, red)
-    call c_f_pointer(info, o, [n_info])
-    o = [red%f_cut, red%f_check, real(red%cut_count, wp), real(red%cut_found, wp), &
-      & real(red%full_count, wp), real(red%full_found, wp), real(red%n_t, wp), &
-      & real(red%n_i, wp), real(red%factor_entries, wp), real(red%n_residual, wp), red%timings]
+    call put_out(info, [red%f_cut, red%f_check, real(red%cut_count, wp), &
+      & real(red%cut_found, wp), real(red%full_count, wp), real(red%full_found, wp), &
+      & real(red%n_t, wp), real(red%n_i, wp), real(red%factor_entries, wp), &
+      & real(red%n_residual, wp), red%timings])
     stat = 0
   end function udmap_reduction_info
+
+  !> The reduction behind a C handle, clearing the error handle; stat /= 0 with the NULL-handle
+  !> error in the error handle when it is NULL.
+  subroutine reduction_from_handle(error, reduction, red, stat)
+    type(c_ptr), intent(in) :: error, reduction
+    type(reduction_type), pointer, intent(out) :: red
+    integer(c_int), intent(out) :: stat
+    type(error_type), allocatable :: err
+    call clear_error(error)
+    nullify(red)
+    call check_handle(reduction, "reduction", err)
+    stat = set_error(error, err)
+    if (stat == 0) call c_f_pointer(reduction, red)
+  end subroutine reduction_from_handle
 end module udmap_api_reduce
