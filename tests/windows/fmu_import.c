@@ -1,9 +1,15 @@
 /*
- * A minimal FMI 2.0 / FMI 3.0 co-simulation importer for the Windows test
+ * A minimal FMI 2.0 / FMI 3.0 importer (co-simulation or model exchange) for the Windows test
  * (tests/windows/test_fmu_wine.py): the same source is built for Windows with MinGW-w64 (run
  * under Wine on udmap.dll) and for Linux (run on udmap.so), and the two outputs are compared.
  *
- *   udmap-fmu-import <2|3> <binary> <token> <resource location> <script>
+ *   udmap-fmu-import <2|3> <binary> <token> <resource location> <script> [cs|me]
+ *
+ * Co-simulation (cs, the default): per step the inputs are set, fmiDoStep(time, step size)
+ * runs and the outputs are read. Model exchange (me): after initialization the event mode is
+ * left (NewDiscreteStates / UpdateDiscreteStates until nothing is to iterate) for the
+ * continuous-time mode; per step the time is set to time + step size, the inputs are set, the
+ * outputs are read and the integrator step is completed.
  *
  * The script (text, whitespace separated) lists the value references, then the steps:
  *   <nIn> <vr>...      real inputs set before each step
@@ -62,6 +68,14 @@ typedef int (*fmi2SetRealT)(void *, const unsigned int *, size_t, const double *
 typedef int (*fmi2GetRealT)(void *, const unsigned int *, size_t, double *);
 typedef int (*fmi2GetIntegerT)(void *, const unsigned int *, size_t, int *);
 typedef int (*fmi2DoStepT)(void *, double, double, int);
+typedef struct {
+  int newDiscreteStatesNeeded, terminateSimulation, nominalsOfContinuousStatesChanged,
+      valuesOfContinuousStatesChanged, nextEventTimeDefined;
+  double nextEventTime;
+} fmi2EventInfo;
+typedef int (*fmi2NewDiscreteStatesT)(void *, fmi2EventInfo *);
+typedef int (*fmi2SetTimeT)(void *, double);
+typedef int (*fmi2CompletedIntegratorStepT)(void *, int, int *, int *);
 
 /* FMI 3.0 */
 typedef void (*fmi3LogMessage)(void *, int, const char *, const char *);
@@ -76,6 +90,12 @@ typedef int (*fmi3GetFloat64T)(void *, const uint32_t *, size_t, double *, size_
 typedef int (*fmi3GetInt32T)(void *, const uint32_t *, size_t, int32_t *, size_t);
 typedef int (*fmi3GetBooleanT)(void *, const uint32_t *, size_t, bool *, size_t);
 typedef int (*fmi3DoStepT)(void *, double, double, bool, bool *, bool *, bool *, double *);
+typedef void *(*fmi3InstantiateModelExchangeT)(const char *, const char *, const char *, bool,
+                                               bool, void *, fmi3LogMessage);
+typedef int (*fmi3UpdateDiscreteStatesT)(void *, bool *, bool *, bool *, bool *, bool *,
+                                         double *);
+typedef int (*fmi3SetTimeT)(void *, double);
+typedef int (*fmi3CompletedIntegratorStepT)(void *, bool, bool *, bool *);
 
 static void logger2(void *env, const char *name, int status, const char *category,
                  const char *message, ...) {
@@ -126,10 +146,14 @@ static void print_real(double x) {
 static int max_status(int a, int b) { return a > b ? a : b; }
 
 int main(int argc, char **argv) {
-  if (argc != 6)
-    return fail("usage: udmap-fmu-import <2|3> <binary> <token> <resource> <script>", NULL);
+  if (argc != 6 && argc != 7)
+    return fail("usage: udmap-fmu-import <2|3> <binary> <token> <resource> <script> [cs|me]",
+                NULL);
   int version = atoi(argv[1]);
   if (version != 2 && version != 3) return fail("the FMI version must be 2 or 3", argv[1]);
+  if (argc == 7 && strcmp(argv[6], "cs") != 0 && strcmp(argv[6], "me") != 0)
+    return fail("the interface must be cs or me", argv[6]);
+  const bool me = argc == 7 && strcmp(argv[6], "me") == 0;
   FILE *f = fopen(argv[5], "r");
   if (!f) return fail("cannot open the script", argv[5]);
   size_t n_in, n_real, n_int, n_bool, n_steps;
@@ -171,13 +195,32 @@ int main(int argc, char **argv) {
     SYMBOL(get_integer, fmi2GetIntegerT, "fmi2GetInteger");
     SYMBOL(get_boolean, fmi2GetIntegerT, "fmi2GetBoolean");
     SYMBOL(do_step, fmi2DoStepT, "fmi2DoStep");
+    fmi2NewDiscreteStatesT new_discrete_states = NULL;
+    fmi2ComponentT enter_continuous = NULL;
+    fmi2SetTimeT set_time = NULL;
+    fmi2CompletedIntegratorStepT completed = NULL;
+    if (me) {
+      SYMBOL(nds, fmi2NewDiscreteStatesT, "fmi2NewDiscreteStates");
+      SYMBOL(ect, fmi2ComponentT, "fmi2EnterContinuousTimeMode");
+      SYMBOL(stm, fmi2SetTimeT, "fmi2SetTime");
+      SYMBOL(cis, fmi2CompletedIntegratorStepT, "fmi2CompletedIntegratorStep");
+      new_discrete_states = nds, enter_continuous = ect, set_time = stm, completed = cis;
+    }
     fmi2Callbacks cb = {logger2, calloc, free, NULL, NULL};
-    void *c = instantiate("udmap", 1 /* fmi2CoSimulation */, argv[3], argv[4], &cb, 0, 0);
+    /* fmi2ModelExchange = 0, fmi2CoSimulation = 1 */
+    void *c = instantiate("udmap", me ? 0 : 1, argv[3], argv[4], &cb, 0, 0);
     if (!c) rc = fail("fmi2Instantiate returned NULL", NULL);
     if (c) {
       int st = setup(c, 0, 0.0, 0.0, 0, 0.0);
       st = max_status(st, enter(c));
       st = max_status(st, exit_init(c));
+      if (me) {
+        fmi2EventInfo event = {1, 0, 0, 0, 0, 0.0};
+        for (int i = 0; st <= 1 && event.newDiscreteStatesNeeded && i < 100; i++)
+          st = max_status(st, new_discrete_states(c, &event));
+        if (event.newDiscreteStatesNeeded) rc = fail("event iteration does not end", NULL);
+        st = max_status(st, enter_continuous(c));
+      }
       if (st > 1) rc = fail("initialization failed", NULL);
       for (size_t k = 0; !rc && k < n_steps; k++) {
         double t, h;
@@ -185,11 +228,17 @@ int main(int argc, char **argv) {
         for (size_t i = 0; !rc && i < n_in; i++)
           if (fscanf(f, "%lf", &in[i]) != 1) rc = fail("malformed input value", argv[5]);
         if (rc) break;
-        st = set_real(c, vr2_in, n_in, in);
-        st = max_status(st, do_step(c, t, h, 1));
+        st = me ? set_time(c, t + h) : 0;
+        st = max_status(st, set_real(c, vr2_in, n_in, in));
+        if (!me) st = max_status(st, do_step(c, t, h, 1));
         st = max_status(st, get_real(c, vr2_real, n_real, real));
         st = max_status(st, get_integer(c, vr2_int, n_int, ints));
         st = max_status(st, get_boolean(c, vr2_bool, n_bool, bools2));
+        if (me) {
+          int enter_event = 0, terminate_sim = 0;
+          st = max_status(st, completed(c, 1, &enter_event, &terminate_sim));
+          if (enter_event || terminate_sim) rc = fail("unexpected event or termination", NULL);
+        }
         printf("%u %d", (unsigned int)k, st);
         for (size_t i = 0; i < n_real; i++) print_real(real[i]);
         for (size_t i = 0; i < n_int; i++) printf(" %d", (int)ints[i]);
@@ -200,7 +249,6 @@ int main(int argc, char **argv) {
       free_instance(c);
     }
   } else {
-    SYMBOL(instantiate, fmi3InstantiateCoSimulationT, "fmi3InstantiateCoSimulation");
     SYMBOL(enter, fmi3EnterInitializationModeT, "fmi3EnterInitializationMode");
     SYMBOL(exit_init, fmi3InstanceT, "fmi3ExitInitializationMode");
     SYMBOL(terminate, fmi3InstanceT, "fmi3Terminate");
@@ -210,13 +258,39 @@ int main(int argc, char **argv) {
     SYMBOL(get_integer, fmi3GetInt32T, "fmi3GetInt32");
     SYMBOL(get_boolean, fmi3GetBooleanT, "fmi3GetBoolean");
     SYMBOL(do_step, fmi3DoStepT, "fmi3DoStep");
+    fmi3UpdateDiscreteStatesT update_discrete_states = NULL;
+    fmi3InstanceT enter_continuous = NULL;
+    fmi3SetTimeT set_time = NULL;
+    fmi3CompletedIntegratorStepT completed = NULL;
     const char *resource = argv[4][0] ? argv[4] : NULL;
-    void *c = instantiate("udmap", argv[3], resource, false, false, false, false, NULL, 0, NULL,
-                          logger3, NULL);
-    if (!c) rc = fail("fmi3InstantiateCoSimulation returned NULL", NULL);
+    void *c;
+    if (me) {
+      SYMBOL(instantiate, fmi3InstantiateModelExchangeT, "fmi3InstantiateModelExchange");
+      SYMBOL(uds, fmi3UpdateDiscreteStatesT, "fmi3UpdateDiscreteStates");
+      SYMBOL(ect, fmi3InstanceT, "fmi3EnterContinuousTimeMode");
+      SYMBOL(stm, fmi3SetTimeT, "fmi3SetTime");
+      SYMBOL(cis, fmi3CompletedIntegratorStepT, "fmi3CompletedIntegratorStep");
+      update_discrete_states = uds, enter_continuous = ect, set_time = stm, completed = cis;
+      c = instantiate("udmap", argv[3], resource, false, false, NULL, logger3);
+    } else {
+      SYMBOL(instantiate, fmi3InstantiateCoSimulationT, "fmi3InstantiateCoSimulation");
+      c = instantiate("udmap", argv[3], resource, false, false, false, false, NULL, 0, NULL,
+                      logger3, NULL);
+    }
+    if (!c) rc = fail("fmi3Instantiate returned NULL", NULL);
     if (c) {
       int st = enter(c, false, 0.0, 0.0, false, 0.0);
       st = max_status(st, exit_init(c));
+      if (me) {
+        bool again = true, terminate_sim = false, nominals = false, values = false,
+             next_defined = false;
+        double next = 0.0;
+        for (int i = 0; st <= 1 && again && i < 100; i++)
+          st = max_status(st, update_discrete_states(c, &again, &terminate_sim, &nominals,
+                                                     &values, &next_defined, &next));
+        if (again) rc = fail("event iteration does not end", NULL);
+        st = max_status(st, enter_continuous(c));
+      }
       if (st > 1) rc = fail("initialization failed", NULL);
       for (size_t k = 0; !rc && k < n_steps; k++) {
         double t, h;
@@ -226,11 +300,17 @@ int main(int argc, char **argv) {
         if (rc) break;
         bool event = false, terminate_sim = false, early = false;
         double last = 0.0;
-        st = set_real(c, vr_in, n_in, in, n_in);
-        st = max_status(st, do_step(c, t, h, true, &event, &terminate_sim, &early, &last));
+        st = me ? set_time(c, t + h) : 0;
+        st = max_status(st, set_real(c, vr_in, n_in, in, n_in));
+        if (!me)
+          st = max_status(st, do_step(c, t, h, true, &event, &terminate_sim, &early, &last));
         st = max_status(st, get_real(c, vr_real, n_real, real, n_real));
         st = max_status(st, get_integer(c, vr_int, n_int, ints, n_int));
         st = max_status(st, get_boolean(c, vr_bool, n_bool, bools3, n_bool));
+        if (me) {
+          st = max_status(st, completed(c, true, &event, &terminate_sim));
+          if (event || terminate_sim) rc = fail("unexpected event or termination", NULL);
+        }
         printf("%u %d", (unsigned int)k, st);
         for (size_t i = 0; i < n_real; i++) print_real(real[i]);
         for (size_t i = 0; i < n_int; i++) printf(" %d", (int)ints[i]);

@@ -4,10 +4,14 @@ FMI functions only, and giving the Linux outputs under Wine.
 
 The same importer source (tests/windows/fmu_import.c) is built with MinGW-w64 and run under
 Debian's wine64 on udmap.dll, and built natively and run on udmap.so; both drive FMI
-co-simulation over blade A's F_E sequence with changes of CF, mu and the excitation frequency,
-and print the outputs as IEEE-754 bit patterns. Real outputs agree to 1e-12 relative,
-integers, booleans and statuses exactly. The numbers are written to
-<build>/windows-test.json for the record."""
+co-simulation or model exchange over blade A's F_E sequence with changes of CF, mu and the
+excitation frequency, then two out-of-range inputs (an FMI error; the instance keeps its values
+and goes on), and print the outputs as IEEE-754 bit patterns. Real outputs agree to 1e-12
+relative, integers, booleans, statuses and the error messages exactly. The same holds for an
+FMU of a case made by `python -m udmap fmu` (blade A as a matrices blade read from Matrix
+Market files, with a measured damper table), unpacked into a folder whose name has a space, so
+that its resources are found through a percent-encoded file URI (FMI 2) or a Windows path
+(FMI 3). The numbers are written to <build>/windows-test.json for the record."""
 from __future__ import annotations
 
 import json
@@ -16,6 +20,8 @@ import re
 import shutil
 import struct
 import subprocess
+import sys
+import urllib.parse
 import xml.etree.ElementTree as ET
 import zipfile
 from pathlib import Path
@@ -43,7 +49,10 @@ SEGMENTS = ([(900.0, 0.3, 0.0, FORCES)]
             + [(1200.0, 0.22, 0.0, [0.5, 2.0, 5.0, 12.0, 20.0])]
             + [(700.0, 0.35, 0.0, [0.5, 3.5, 8.0, 20.0])]
             + [(900.0, 0.3, 185.0, [1.0, 5.0, 12.0])])
+# out of range (mu in [1e-4, 10], CF in [1e-3, 1e6]): an FMI error, nothing of the call taken
+BAD = [(900.0, 20.0, 185.0, [12.0]), (0.0, 0.3, 185.0, [30.0])]
 STEP = 0.5
+OK, ERROR = 0, 3
 
 
 def wine() -> str:
@@ -66,10 +75,16 @@ def windows_path(path: Path) -> str:
     return "Z:" + str(path.resolve()).replace("/", "\\")
 
 
-def unpacked(version: int, tmp: Path) -> Path:
-    assert FMUS[version].is_file(), f"{FMUS[version]} is missing: build with make test-windows"
-    d = tmp / f"fmi{version}"
-    with zipfile.ZipFile(FMUS[version]) as zf:
+def windows_uri(path: Path) -> str:
+    """file:///Z:/dir%20name/... (RFC 8089, percent-encoded), as a Windows importer gives."""
+    return "file:///" + urllib.parse.quote(windows_path(path).replace("\\", "/"), safe="/:")
+
+
+def unpacked(version: int, tmp: Path, fmu: Path | None = None) -> Path:
+    fmu = fmu or FMUS[version]
+    assert fmu.is_file(), f"{fmu} is missing: build with make test-windows"
+    d = tmp / f"fmi{version} unpacked"  # a space: percent-encoded in the FMI 2 resource URI
+    with zipfile.ZipFile(fmu) as zf:
         zf.extractall(d)
     return d
 
@@ -89,25 +104,37 @@ def variables(root: Path) -> tuple[dict, str]:
     return out, token
 
 
-def script(vars_: dict) -> tuple[str, list[str], list[str], list[str]]:
+def steps(vars_: dict) -> list[dict]:
+    """The input values of each step (the inputs the FMU has) and the status it must give."""
+    out = []
+    for segments, status in ((SEGMENTS, OK), (BAD, ERROR)):
+        for CF, mu, f_exc, forces in segments:
+            for F in forces:
+                values = {"F_E": F, "CF": CF, "mu": mu, "f_exc": f_exc}
+                out.append({"inputs": {n: values[n] for n in INPUTS if n in vars_},
+                            "status": status})
+    # an FMU without mu and CF (a table damper) cannot be given out-of-range values of them
+    return [s for s in out if s["status"] == OK or set(s["inputs"]) == set(INPUTS)]
+
+
+def script(vars_: dict) -> tuple[str, list[str], list[str], list[str], list[dict]]:
     real_kinds = {"Real", "Float64"}
     outs = [n for n, (_, _, c) in vars_.items() if c == "output"]
     reals = [n for n in outs if vars_[n][1] in real_kinds]
     ints = [n for n in outs if vars_[n][1] in {"Integer", "Int32"}]
     bools = [n for n in outs if vars_[n][1] == "Boolean"]
     assert len(reals) >= 8 and ints and bools, outs
+    inputs = [n for n in INPUTS if n in vars_]
+    assert "F_E" in inputs and "f_exc" in inputs, inputs
     lines = []
-    for names in (INPUTS, reals, ints, bools):
+    for names in (inputs, reals, ints, bools):
         lines.append(" ".join([str(len(names))] + [str(vars_[n][0]) for n in names]))
-    rows = []
-    t = 0.0
-    for CF, mu, f_exc, forces in SEGMENTS:
-        for F in forces:
-            rows.append(f"{t!r} {STEP!r} {F!r} {CF!r} {mu!r} {f_exc!r}")
-            t += STEP
-    lines.append(str(len(rows)))
-    lines += rows
-    return "\n".join(lines) + "\n", reals, ints, bools
+    todo = steps(vars_)
+    lines.append(str(len(todo)))
+    for k, step in enumerate(todo):
+        lines.append(" ".join([repr(k * STEP), repr(STEP)]
+                              + [repr(step["inputs"][n]) for n in inputs]))
+    return "\n".join(lines) + "\n", reals, ints, bools, todo
 
 
 def parse(stdout: str, n_real: int, n_int: int, n_bool: int) -> list[tuple]:
@@ -167,33 +194,36 @@ def record(key: str, value) -> None:
     path.write_text(json.dumps(data, indent=1, sort_keys=True) + "\n")
 
 
-@pytest.mark.parametrize("version", [2, 3])
-def test_wine_gives_the_linux_outputs(version, tmp_path):
-    root = unpacked(version, tmp_path)
+def run_both(version: int, root: Path, tmp: Path, interface: str) -> dict:
+    """Runs the importer on the Linux binary and, under Wine, on the DLL of the unpacked FMU
+    `root`, compares the two and returns the record of the comparison."""
     vars_, token = variables(root)
-    text, reals, ints, bools = script(vars_)
-    (tmp_path / "steps.txt").write_text(text)
+    text, reals, ints, bools, todo = script(vars_)
+    (tmp / "steps.txt").write_text(text)
     so = root / "binaries" / LINUX[version] / "udmap.so"
     dll = root / "binaries" / WINDOWS[version] / "udmap.dll"
-    resources = (root / "resources").as_uri() if version == 2 else ""
-    linux = subprocess.run([str(IMPORTER), str(version), str(so), token, resources,
-                            str(tmp_path / "steps.txt")],
+    # FMI 2: the resources as a file URI; FMI 3: the resources folder's path, ending in a
+    # separator
+    resources = root / "resources"
+    linux_res = resources.as_uri() if version == 2 else str(resources) + "/"
+    win_res = windows_uri(resources) if version == 2 else windows_path(resources) + "\\"
+    linux = subprocess.run([str(IMPORTER), str(version), str(so), token, linux_res,
+                            str(tmp / "steps.txt"), interface],
                            capture_output=True, text=True, timeout=60)
     assert linux.returncode == 0, linux.stderr[-2000:]
-    win_resources = ("file:///" + windows_path(root / "resources").replace("\\", "/")
-                     if version == 2 else "")
     win = subprocess.run([wine(), str(IMPORTER_EXE), str(version), windows_path(dll), token,
-                          win_resources, windows_path(tmp_path / "steps.txt")],
+                          win_res, windows_path(tmp / "steps.txt"), interface],
                          capture_output=True, text=True, timeout=100, env=wine_env())
     assert win.returncode == 0, (win.stdout[-1000:], win.stderr[-2000:])
     a = parse(linux.stdout, len(reals), len(ints), len(bools))
     b = parse(win.stdout, len(reals), len(ints), len(bools))
-    n_steps = sum(len(s[3]) for s in SEGMENTS)
-    assert len(a) == len(b) == n_steps
+    assert len(a) == len(b) == len(todo)
     worst, where, identical = 0.0, None, 0
-    for (k, st_a, ra, ia), (k_b, st_b, rb, ib) in zip(a, b):
-        assert k == k_b and st_a == st_b == 0, (k, st_a, st_b)
+    for (k, st_a, ra, ia), (k_b, st_b, rb, ib), step in zip(a, b, todo):
+        assert k == k_b and st_a == st_b == step["status"], (k, st_a, st_b, step)
         assert ia == ib, (k, dict(zip(ints + bools, ia)), dict(zip(ints + bools, ib)))
+        if step["status"] == ERROR:  # nothing of the call taken: the last step's outputs
+            assert (ra, ia) == (a[k - 1][2], a[k - 1][3]), k
         for name, x, y in zip(reals, ra, rb):
             assert x == x and y == y, (k, name, x, y)  # no NaN
             d = abs(x - y) / abs(x) if x != 0.0 else abs(y)
@@ -201,11 +231,73 @@ def test_wine_gives_the_linux_outputs(version, tmp_path):
                 worst, where = d, (k, name, x, y)
             identical += x == y
             assert d <= RTOL, (k, name, x, y, d)
+    # the error messages (the FMU's own formatting of the numbers) are the same
+    def errors(stderr: str) -> list[str]:
+        return [line.split(": ", 1)[1] for line in stderr.splitlines() if "must be" in line]
+    n_bad = sum(s["status"] == ERROR for s in todo)
+    assert len(errors(linux.stderr)) == n_bad, linux.stderr[-2000:]
+    assert errors(win.stderr) == errors(linux.stderr), (win.stderr[-2000:], linux.stderr)
+    return {"regimes": sorted({r[3][ints.index("regime")] for r in a}), "steps": len(todo),
+            "error_steps": n_bad, "error_messages": errors(linux.stderr),
+            "real_outputs": reals, "max_relative_difference": worst, "worst": where,
+            "bitwise_identical_values": identical, "values": len(todo) * len(reals)}
+
+
+@pytest.mark.parametrize("interface", ["cs", "me"])
+@pytest.mark.parametrize("version", [2, 3])
+def test_wine_gives_the_linux_outputs(version, interface, tmp_path):
+    result = run_both(version, unpacked(version, tmp_path), tmp_path, interface)
     # the sequence crosses the regimes: 0 stuck, 1 partial slip, 2 full slip
-    regimes = sorted({r[3][ints.index("regime")] for r in a})
-    assert {0, 1, 2} <= set(regimes), regimes
-    record(f"fmi{version}_wine_vs_linux", {
-        "regimes": regimes,
-        "steps": n_steps, "real_outputs": reals, "max_relative_difference": worst,
-        "worst": where, "bitwise_identical_values": identical,
-        "values": n_steps * len(reals)})
+    assert {0, 1, 2} <= set(result["regimes"]), result["regimes"]
+    assert result["error_steps"] == len(BAD)
+    record(f"fmi{version}_{interface}_wine_vs_linux", result)
+
+
+@pytest.fixture(scope="module")
+def case_file(tmp_path_factory):
+    """Blade A as a matrices blade (its Matrix Market export with the stress rows) with blade
+    A's damper tabulated as a measured table: the case of tests/python/test_fmu_case.py."""
+    sys.path.insert(0, str(ROOT / "wrappers" / "python"))
+    import numpy as np
+    from udmap.case import build_blade, build_damper, load_case
+    d = tmp_path_factory.mktemp("case")
+    case = load_case(ROOT / "cases" / "blade_a.json")
+    build_blade(case).export(d)
+    damper = build_damper(case)
+    gammas = np.geomspace(1e-6, 5e-3, 60)
+    k = damper.stiffness(gammas)
+    with open(d / "k.csv", "w") as f:
+        f.write("gamma,k_re,k_im\n")
+        for row in zip(gammas, k.real, k.imag):
+            f.write(",".join(repr(float(x)) for x in row) + "\n")
+    data = {"blade": {"kind": "matrices", "M": "M.mtx", "K": "K.mtx", "stress_K": "stress_K.mtx",
+                      "stress_M": "stress_M.mtx", "gamma_dof": 16, "exc_dof": 39,
+                      "zeta": 0.002},
+            "damper": {"kind": "table", "file": "k.csv",
+                       "delta_M": damper.M_max - damper.M_min},
+            "analysis": {"f_min": 150.0, "f_max": 230.0}}
+    path = d / "matrices_table.json"
+    path.write_text(json.dumps(data))
+    return path
+
+
+@pytest.mark.parametrize("version", [2, 3])
+def test_wine_gives_the_linux_outputs_of_a_case_fmu(version, case_file, tmp_path):
+    fmu = tmp_path / f"case-fmi{version}.fmu"
+    env = dict(os.environ, PYTHONPATH=str(ROOT / "wrappers" / "python"),
+               UDMAP_BUILD_DIR=str(BUILD))
+    r = subprocess.run([sys.executable, "-m", "udmap", "fmu", str(case_file), "--out", str(fmu),
+                        "--fmi", str(version)], cwd=ROOT, env=env, capture_output=True,
+                       text=True, timeout=100)
+    assert r.returncode == 0, r.stderr
+    root = unpacked(version, tmp_path, fmu)
+    # the case is read at instantiation: its token differs from the generic FMU's, and its
+    # blade comes from the Matrix Market files beside the case file
+    assert variables(root)[1] != variables(unpacked(version, tmp_path / "generic"))[1]
+    assert (root / "resources" / "udmap-case.txt").is_file()
+    assert (root / "resources" / "K.mtx").is_file()
+    vars_ = variables(root)[0]
+    assert "mu" not in vars_ and "CF" not in vars_  # a table damper
+    result = run_both(version, root, tmp_path, "cs")
+    assert result["error_steps"] == 0
+    record(f"fmi{version}_case_wine_vs_linux", result)
