@@ -20,9 +20,10 @@ module udmap_harmonic_layer
   use udmap_kinds, only: wp, pi
   use udmap_error, only: error_type, fatal_error, UDMAP_EINPUT, UDMAP_ENUMERIC, UDMAP_EPHYSICS
   use udmap_blade, only: blade_type, receptances_type
-  use udmap_lapack, only: dgesv
+  use udmap_lapack, only: dgetrf, dgetrs
   use udmap_hysteretic, only: hysteretic_element_type
-  use udmap_aft, only: aft_workspace_type, aft_moment, waveform_value, waveform_extrema
+  use udmap_aft, only: aft_workspace_type, aft_moment, aft_moment_jacobian, waveform_value, &
+    & waveform_extrema
   implicit none
   private
   public :: harmonic_workspace_type, harmonic_state_type, harmonic_outputs_type
@@ -152,6 +153,9 @@ contains
     integer, allocatable :: ipiv(:)
     real(wp) :: rn, rnt, t, step, step_prev
     logical :: fresh, accepted
+    !> J holds the LU factors of the layer Jacobian for the current s%JM (the receptances are
+    !> fixed within a solve): one factorization per damper Jacobian
+    logical :: lu_ok
     complex(wp) :: dM1, dP
     character(len=64) :: buf
 
@@ -177,6 +181,7 @@ contains
       end if
     end do
     allocate(x(n), R(n), xt(n), Rt(n), J(n, n), dx(n), ipiv(n), dRw(n))
+    lu_ok = .false.
     call pack_x(s, x)
     ! a warm start that leads Newton astray (e.g. across a change of the contact topology) is
     ! dropped for a cold one (all other harmonics 0), which is then the answer
@@ -204,20 +209,17 @@ contains
     end if
     s%P = (gamma + s%r(1)%gg*s%M(1))/s%r(1)%gE
     ! dGamma/domega = -J^-1 dR/domega, dR_h/domega = h H_gg'(h omega) M_h
-    call build_J(J)
+    if (.not.factorize()) then
+      call fail("the layer's Jacobian is singular")
+      return
+    end if
     dRw = 0
     do h1 = 2, H
       dRw(2*h1-2) = real(h1*s%r(h1)%dgg*s%M(h1), wp)
       dRw(2*h1-1) = aimag(h1*s%r(h1)%dgg*s%M(h1))
     end do
     dx = -dRw
-    if (n > 0) then
-      call dgesv(n, 1, J, n, ipiv, dx, n, info)
-      if (info /= 0) then
-        call fail("the layer's Jacobian is singular")
-        return
-      end if
-    end if
+    call dgetrs('N', n, 1, J, n, ipiv, dx, n, info)
     dM1 = cmplx(dot_product(s%JM(2, :), dx), dot_product(s%JM(3, :), dx), wp)
     dP = (s%r(1)%dgg*s%M(1) + s%r(1)%gg*dM1)/s%r(1)%gE - s%P*s%r(1)%dgE/s%r(1)%gE
     s%psi = 2*real(conjg(s%P)*dP, wp)
@@ -238,13 +240,12 @@ contains
           if (allocated(error)) return
           fresh = .true.
         end if
-        call build_J(J)
-        dx = -R
-        call dgesv(n, 1, J, n, ipiv, dx, n, info)
-        if (info /= 0) then
+        if (.not.factorize()) then
           what = "the layer's Jacobian is singular"
           return
         end if
+        dx = -R
+        call dgetrs('N', n, 1, J, n, ipiv, dx, n, info)
         ! backtracking on |R|; a stale Jacobian that fails to descend is renewed first
         t = 1
         accepted = .false.
@@ -341,19 +342,42 @@ contains
       if (allocated(err)) err%message = "harmonic layer: "//err%message
     end subroutine moments
 
-    !> Forward differences of the moments about xv, whose moments s%M0, s%M hold (and hold
-    !> again on return).
+    !> dM/dGamma about xv, whose moments s%M0, s%M hold (and hold again on return): in closed
+    !> form from one trace (aft_moment_jacobian), or by forward differences (2H - 1 traces)
+    !> where the sequence of contact events changes within the perturbation.
     subroutine jacobian(xv, err)
       real(wp), intent(in) :: xv(:)
       type(error_type), allocatable, intent(out) :: err
-      real(wp) :: m_base(2*H+1), m_pert(2*H+1), xp(size(xv)), d, M0_base
-      complex(wp) :: Mc_base(H)
-      logical :: lift_base
+      real(wp) :: m_base(2*H+1), m_pert(2*H+1), xp(size(xv)), d, M0_base, JA(2*H+1, 2*H+1)
+      real(wp) :: M0_a
+      complex(wp) :: Mc_base(H), Mc_a(H)
+      logical :: lift_base, ok
       integer :: k
+      lift_base = ws%aft%lift_off
+      s%G(1) = cmplx(gamma, 0.0_wp, wp)
+      do k = 2, H
+        s%G(k) = cmplx(xv(2*k-2), xv(2*k-1), wp)
+      end do
+      call aft_moment_jacobian(ws%element, ws%aft, xv(1), s%G, aft_min_periods, &
+        & aft_max_periods, aft_loop_rtol, M0_a, Mc_a, JA, ok, err)
+      ws%traces = ws%traces + 1
+      if (allocated(err)) then
+        err%message = "harmonic layer: "//err%message
+        return
+      end if
+      ws%aft%lift_off = lift_base
+      if (ok) then
+        ! columns Gamma_0, Re/Im Gamma_2.. (Gamma_1 is fixed)
+        s%JM(:, 1) = JA(:, 1)
+        s%JM(:, 2:n) = JA(:, 4:2*H+1)
+        s%x_jm = xv
+        s%jm_valid = .true.
+        lu_ok = .false.
+        return
+      end if
       call pack_m(m_base)
       M0_base = s%M0
       Mc_base = s%M
-      lift_base = ws%aft%lift_off
       do k = 1, n
         xp = xv
         d = fd_step*max(gamma, abs(xv(k)))
@@ -372,7 +396,18 @@ contains
       ws%aft%lift_off = lift_base
       s%x_jm = xv
       s%jm_valid = .true.
+      lu_ok = .false.
     end subroutine jacobian
+
+    !> The LU factors of J for the current s%JM in J (false: singular).
+    logical function factorize()
+      factorize = .true.
+      if (lu_ok) return
+      call build_J(J)
+      call dgetrf(n, n, J, n, ipiv, info)
+      factorize = info == 0
+      lu_ok = factorize
+    end function factorize
 
     subroutine pack_m(m)
       real(wp), intent(out) :: m(:)
