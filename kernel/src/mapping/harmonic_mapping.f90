@@ -217,8 +217,8 @@ contains
     model%harm%revision = model%damper%revision
     model%harm%fingerprint = fp
     ! a new damper: no warm start from the old one's roots
-    model%harm%last = harmonic_state_type()
-    model%harm%last_F = 0
+    if (allocated(model%harm%rung)) deallocate(model%harm%rung)
+    allocate(model%harm%rung(HARMONICS_MAX))
   end subroutine ensure_element
 
   !> The multi-harmonic counterpart of the single-harmonic point p1: every root refined, the
@@ -235,10 +235,13 @@ contains
     logical :: jump
     real(wp), allocatable :: roots(:)
     real(wp) :: F_lim, omega1, change
+    !> The root search's Jacobian at the last rung of the automatic H (starts the next rung)
+    real(wp) :: J_rung(2, 2)
     integer :: H, j, nr, n_new
     logical :: auto
 
     F_lim = limit_force_or_huge(model)
+    J_rung = 0
     nr = size(p1%roots)
     allocate(roots(nr))
     auto = model%analysis%harmonics == 0
@@ -344,13 +347,16 @@ contains
       st%omega = omega0
       if (at_peak) then
         Jb = 0
-        if (.not.present(warm) .and. .not.auto .and. nr == 1 .and. &
-          & model%harm%last%H == Hs .and. model%harm%last_F > 0) then
-          ! after a change of F_E alone: from the last root at this H and its Jacobian
-          st = model%harm%last
-          Jb = model%harm%last_J
-          call harmonic_peak_root(model%harm, model%blade, p1%F_E, st%gamma, st%omega, &
-            & model%omega_lo, model%omega_hi, rtol_h, st, ok, err, Jb)
+        if (.not.present(warm) .and. nr == 1 .and. model%harm%rung(Hs)%gamma1 > 0) then
+          ! from the last root with Hs harmonics (after a change of F_E alone, the previous
+          ! force): its layer and Jacobian, moved by the change of the single-harmonic root
+          associate(mem => model%harm%rung(Hs))
+            st = mem%root
+            Jb = mem%J
+            call harmonic_peak_root(model%harm, model%blade, p1%F_E, &
+              & gamma0*(mem%root%gamma/mem%gamma1), omega0*(mem%root%omega/mem%omega1), &
+              & model%omega_lo, model%omega_hi, rtol_h, st, ok, err, Jb)
+          end associate
           if (allocated(err)) return
           if (ok) then
             call remember(st, Jb)
@@ -361,11 +367,28 @@ contains
           st%omega = omega0
           Jb = 0
         end if
+        if (present(warm) .and. any(J_rung /= 0)) then
+          ! the next rung of the automatic H: from the last rung's root and Jacobian
+          Jb = J_rung
+          call harmonic_peak_root(model%harm, model%blade, p1%F_E, gamma0, omega0, &
+            & model%omega_lo, model%omega_hi, rtol_h, st, ok, err, Jb)
+          if (allocated(err)) return
+          if (ok) then
+            J_rung = Jb
+            if (nr == 1) call remember(st, Jb)
+            return
+          end if
+          st = warm
+          call harmonic_resize(st, Hs)
+          st%omega = omega0
+          Jb = 0
+        end if
         call harmonic_peak_root(model%harm, model%blade, p1%F_E, gamma0, omega0, &
           & model%omega_lo, model%omega_hi, rtol_h, st, ok, err, Jb)
         if (allocated(err)) return
         if (ok) then
-          if (.not.auto .and. nr == 1) call remember(st, Jb)
+          J_rung = Jb
+          if (nr == 1) call remember(st, Jb)
           return
         end if
         ! fallback: a secant on gamma around full peak searches, started with the
@@ -381,13 +404,14 @@ contains
       end if
     end subroutine solve_root
 
-    !> Keeps a root and its Jacobian for the next force (fixed H only).
+    !> Keeps a root and its Jacobian for the next root with as many harmonics.
     subroutine remember(st, Jr)
       type(harmonic_state_type), intent(in) :: st
       real(wp), intent(in) :: Jr(2, 2)
-      model%harm%last = st
-      model%harm%last_F = p1%F_E
-      model%harm%last_J = Jr
+      model%harm%rung(st%H)%root = st
+      model%harm%rung(st%H)%J = Jr
+      model%harm%rung(st%H)%gamma1 = p1%gamma_P
+      model%harm%rung(st%H)%omega1 = omega1
     end subroutine remember
   end subroutine multi_point
 
