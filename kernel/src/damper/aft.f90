@@ -85,9 +85,10 @@ contains
     complex(wp), intent(in) :: G(:)
     real(wp), allocatable, intent(out) :: tau(:)
     integer, intent(out) :: n
-    integer :: H, ns, j, k, imax, h1
-    real(wp), allocatable :: ts(:), ds(:), roots(:), c1(:), s1(:), ch(:), sh(:)
+    integer :: H, ns, j, k, imax, h1, nh
+    real(wp), allocatable :: ts(:), ds(:), roots(:), c1(:), s1(:), ch(:), sh(:), sa(:), cb(:)
     real(wp) :: gr, gi, cn
+    complex(wp) :: z, zs
     real(wp) :: a, b, fa, fb, x, fx, d2, best, v, scale, xn
     H = size(G)
     n = 0
@@ -119,28 +120,48 @@ contains
     end if
     ! general waveform: sign changes of gamma' on a grid fine enough for H harmonics
     ns = max(64, 16*H)
-    allocate(ts(0:ns), ds(0:ns), roots(ns), c1(0:ns-1), s1(0:ns-1), ch(0:ns-1), sh(0:ns-1))
-    do j = 0, ns - 1
+    allocate(ts(0:ns), ds(0:ns), roots(ns))
+    do j = 0, ns
       ts(j) = two_pi*j/ns
-      c1(j) = cos(ts(j))
-      s1(j) = sin(ts(j))
     end do
-    ! gamma'(tau_j) = -sum_h h (Re G_h sin(h tau_j) + Im G_h cos(h tau_j)); cos/sin(h tau_j) by
-    ! the angle-addition recurrence, the grid the inner (vector) loop
-    do j = 0, ns - 1
+    ! gamma'(tau_j) = -(sa_j + cb_j), sa_j = sum_h h Re G_h sin(h tau_j), cb_j = sum_h h Im G_h
+    ! cos(h tau_j); at tau_{ns-j} = 2 pi - tau_j the sines change sign: sa_j - cb_j. So only
+    ! j = 0..ns/2, cos/sin(h tau_j) by the angle-addition recurrence (the grid the inner loop),
+    ! cos/sin(tau_j) exact every 8th point and rotated in between.
+    nh = ns/2
+    allocate(c1(0:nh), s1(0:nh), ch(0:nh), sh(0:nh), sa(0:nh), cb(0:nh))
+    zs = cmplx(cos(two_pi/ns), sin(two_pi/ns), wp)
+    do j = 0, nh
+      if (mod(j, 8) == 0) then
+        z = cmplx(cos(ts(j)), sin(ts(j)), wp)
+      else
+        z = z*zs
+      end if
+      c1(j) = real(z, wp)
+      s1(j) = aimag(z)
+    end do
+    do j = 0, nh
       ch(j) = c1(j)
       sh(j) = s1(j)
-      ds(j) = -(real(G(1), wp)*s1(j) + aimag(G(1))*c1(j))
+      sa(j) = real(G(1), wp)*s1(j)
+      cb(j) = aimag(G(1))*c1(j)
     end do
     do k = 2, H
       gr = k*real(G(k), wp)
       gi = k*aimag(G(k))
-      do j = 0, ns - 1
+      do j = 0, nh
         cn = ch(j)*c1(j) - sh(j)*s1(j)
         sh(j) = sh(j)*c1(j) + ch(j)*s1(j)
         ch(j) = cn
-        ds(j) = ds(j) - (gr*sh(j) + gi*cn)
+        sa(j) = sa(j) + gr*sh(j)
+        cb(j) = cb(j) + gi*cn
       end do
+    end do
+    do j = 0, nh
+      ds(j) = -(sa(j) + cb(j))
+    end do
+    do j = 1, nh - 1
+      ds(ns-j) = sa(j) - cb(j)
     end do
     ts(ns) = two_pi
     ds(ns) = ds(0)
