@@ -237,6 +237,10 @@ contains
     real(wp) :: F_lim, omega1, change
     !> The root search's Jacobian at the last rung of the automatic H (starts the next rung)
     real(wp) :: J_rung(2, 2)
+    !> Tolerance of the root searches: the rungs of the automatic H are only compared with
+    !> each other (to harmonic_tol), so they are solved to a thousandth of it, and the chosen
+    !> one is then refined to rtol_h
+    real(wp) :: tol_s
     integer :: H, j, nr, n_new
     logical :: auto
 
@@ -251,6 +255,8 @@ contains
     else
       H = model%analysis%harmonics
     end if
+    tol_s = rtol_h
+    if (auto) tol_s = max(rtol_h, 1.0e-3_wp*model%analysis%harmonic_tol)
     ! the largest root first: it gives the outputs (and, with auto, H)
     call solve_root(p1%gamma_P, omega1, H, s, error)
     if (allocated(error)) return
@@ -270,6 +276,13 @@ contains
           & rel(out%sigma_max, out_prev%sigma_max))
         if (change < model%analysis%harmonic_tol) exit
       end do
+      tol_s = rtol_h
+      if (.not.jump) then
+        s_prev = s
+        call solve_root(s_prev%gamma, s_prev%omega, H, s, error, s_prev)
+        if (allocated(error)) return
+        call harmonic_outputs(model%harm, s, model%blade%has_stress, out)
+      end if
     end if
     roots(nr) = s%gamma
     point%F_E = p1%F_E
@@ -355,7 +368,7 @@ contains
             Jb = mem%J
             call harmonic_peak_root(model%harm, model%blade, p1%F_E, &
               & gamma0*(mem%root%gamma/mem%gamma1), omega0*(mem%root%omega/mem%omega1), &
-              & model%omega_lo, model%omega_hi, rtol_h, st, ok, err, Jb)
+              & model%omega_lo, model%omega_hi, tol_s, st, ok, err, Jb)
           end associate
           if (allocated(err)) return
           if (ok) then
@@ -371,7 +384,7 @@ contains
           ! the next rung of the automatic H: from the last rung's root and Jacobian
           Jb = J_rung
           call harmonic_peak_root(model%harm, model%blade, p1%F_E, gamma0, omega0, &
-            & model%omega_lo, model%omega_hi, rtol_h, st, ok, err, Jb)
+            & model%omega_lo, model%omega_hi, tol_s, st, ok, err, Jb)
           if (allocated(err)) return
           if (ok) then
             J_rung = Jb
@@ -384,7 +397,7 @@ contains
           Jb = 0
         end if
         call harmonic_peak_root(model%harm, model%blade, p1%F_E, gamma0, omega0, &
-          & model%omega_lo, model%omega_hi, rtol_h, st, ok, err, Jb)
+          & model%omega_lo, model%omega_hi, tol_s, st, ok, err, Jb)
         if (allocated(err)) return
         if (ok) then
           J_rung = Jb
@@ -399,7 +412,7 @@ contains
         call harmonic_root(model%harm, model%blade, p1%F_E, gamma0, slope, model%omega_lo, &
           & model%omega_hi, rtol_h, st, err, jump, s_below)
       else
-        call harmonic_force_root(model%harm, model%blade, p1%F_E, gamma0, omega0, rtol_h, st, &
+        call harmonic_force_root(model%harm, model%blade, p1%F_E, gamma0, omega0, tol_s, st, &
           & err)
       end if
     end subroutine solve_root
