@@ -58,6 +58,10 @@ module udmap_harmonic_layer
     real(wp), allocatable :: JM(:,:), x_jm(:)
     !> dM/dGamma_1 (the same rows, Gamma_1 real) with JM.
     real(wp), allocatable :: JM1(:)
+    !> d(Gamma_0, Re Gamma_2, Im Gamma_2, ..)/dgamma and /domega at the solution (implicit
+    !> function theorem): the predictor of a neighbouring layer's solve.
+    real(wp), allocatable :: dx_dg(:), dx_dw(:)
+    logical :: dx_valid = .false.
     logical :: jm_valid = .false.
     !> Bare receptances at h omega, h = 1..H (with d/domega).
     type(receptances_type), allocatable :: r(:)
@@ -150,7 +154,11 @@ contains
     if (allocated(s%JM)) deallocate(s%JM)
     if (allocated(s%x_jm)) deallocate(s%x_jm)
     if (allocated(s%JM1)) deallocate(s%JM1)
-    allocate(s%M(H), s%r(H), s%JM(2*H+1, 2*H-1), s%x_jm(2*H-1), s%JM1(2*H+1))
+    if (allocated(s%dx_dg)) deallocate(s%dx_dg)
+    if (allocated(s%dx_dw)) deallocate(s%dx_dw)
+    allocate(s%M(H), s%r(H), s%JM(2*H+1, 2*H-1), s%x_jm(2*H-1), s%JM1(2*H+1), &
+      & s%dx_dg(2*H-1), s%dx_dw(2*H-1))
+    s%dx_valid = .false.
     s%jm_valid = .false.
   end subroutine harmonic_resize
 
@@ -168,7 +176,8 @@ contains
     real(wp), allocatable :: x(:), R(:), xt(:), Rt(:), J(:,:), dx(:), dRw(:)
     integer, allocatable :: ipiv(:)
     real(wp) :: rn, rnt, t, step, step_prev
-    logical :: fresh, accepted
+    logical :: fresh, accepted, predict
+    real(wp) :: dg_old, dw_old
     !> J holds the LU factors of the layer Jacobian for the current s%JM (the receptances are
     !> fixed within a solve): one factorization per damper Jacobian
     logical :: lu_ok
@@ -182,10 +191,16 @@ contains
       call fatal_error(error, "harmonic layer: gamma and omega must be positive", UDMAP_EINPUT)
       return
     end if
-    if (gamma /= s%gamma .and. s%gamma > 0 .and. allocated(s%G)) then
-      ! a neighbouring layer: the other harmonics scale roughly with the first
+    ! a neighbouring layer close by: first-order prediction of its harmonics from this one's
+    ! derivatives; farther: the other harmonics scale roughly with the first
+    predict = s%dx_valid .and. s%gamma > 0 .and. abs(gamma/s%gamma - 1) <= 0.1_wp .and. &
+      & abs(omega/s%omega - 1) <= 0.02_wp
+    dg_old = gamma - s%gamma
+    dw_old = omega - s%omega
+    if (.not.predict .and. gamma /= s%gamma .and. s%gamma > 0 .and. allocated(s%G)) then
       s%G(2:H) = s%G(2:H)*(gamma/s%gamma)
     end if
+    s%dx_valid = .false.
     s%gamma = gamma
     s%omega = omega
     s%G(1) = cmplx(gamma, 0.0_wp, wp)
@@ -200,6 +215,7 @@ contains
     allocate(x(n), R(n), xt(n), Rt(n), J(n, n), dx(n), ipiv(n), dRw(n))
     lu_ok = .false.
     call pack_x(s, x)
+    if (predict) x = x + s%dx_dg*dg_old + s%dx_dw*dw_old
     ! a warm start that leads Newton astray (e.g. across a change of the contact topology) is
     ! dropped for a cold one (all other harmonics 0), which is then the answer
     do attempt = 1, 2
@@ -240,6 +256,7 @@ contains
     dM1 = cmplx(dot_product(s%JM(2, :), dx), dot_product(s%JM(3, :), dx), wp)
     dP = (s%r(1)%dgg*s%M(1) + s%r(1)%gg*dM1)/s%r(1)%gE - s%P*s%r(1)%dgE/s%r(1)%gE
     s%psi = 2*real(conjg(s%P)*dP, wp)
+    s%dx_dw = dx
     call root_jacobian(dP, dM1)
     if (allocated(error)) return
   contains
@@ -261,6 +278,8 @@ contains
       call dgetrs('N', n, 1, J, n, ipiv, dxg, n, info)
       M1g = cmplx(s%JM1(2) + dot_product(s%JM(2, :), dxg), &
         & s%JM1(3) + dot_product(s%JM(3, :), dxg), wp)
+      s%dx_dg = dxg
+      s%dx_valid = .true.
       ! second derivatives of the receptances at omega by a difference of the first ones
       dw = 1.0e-6_wp*omega
       call blade%receptances(omega + dw, rp, error, derivatives=.true.)
