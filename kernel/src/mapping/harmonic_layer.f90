@@ -798,6 +798,12 @@ contains
       if (.not.(abs(det) > 0)) return
       dz(1) = -( J(2,2)*f(1) - J(1,2)*f(2))/det
       dz(2) = -(-J(2,1)*f(1) + J(1,1)*f(2))/det
+      ! converged when the next step would be below rtol: s holds the root's layer
+      if (maxval(abs(dz)) <= rtol) then
+        ok = .true.
+        if (present(J0)) J0 = s%Jroot
+        return
+      end if
       ! steps at most 30 % in gamma and 2 % in omega, inside the band
       h = min(1.0_wp, 0.3_wp/max(abs(dz(1)), tiny(1.0_wp)), 0.02_wp/max(abs(dz(2)), tiny(1.0_wp)))
       dz = h*dz
@@ -807,11 +813,6 @@ contains
       if (allocated(error)) return
       z = zt
       f = ft
-      if (maxval(abs(dz)) <= rtol) then
-        ok = .true.
-        if (present(J0)) J0 = s%Jroot
-        return
-      end if
     end do
   contains
     subroutine eval(zv, fv, err)
