@@ -7,12 +7,15 @@
 !>
 !> M_h the harmonics of the damper moment over the periodic gamma(t), traced exactly through
 !> the contact model with its loading history (udmap_aft, shared with the standard method), and
-!> M_ref the static moment of the loaded damper (the blade's reference state). Newton with a
-!> finite-difference damper Jacobian dM/dGamma (2H - 1 traces), reused while Newton contracts,
-!> and a backtracking line search. The force that puts the blade on the layer then follows
-!> explicitly, P(omega) = (gamma + H_gg(omega) M_1)/H_gE(omega), and the layer's peak is the
-!> minimum of |P| over omega: the root of psi = d|P|^2/domega, whose total derivative carries
-!> dGamma/domega = -J^-1 dR/domega (the implicit function theorem; no extra trace).
+!> M_ref the static moment of the loaded damper (the blade's reference state). Newton with the
+!> damper Jacobian dM/dGamma in closed form from one trace (aft_moment_jacobian; finite
+!> differences, 2H traces, where the events change within the perturbation), reused while
+!> Newton contracts, and a backtracking line search. The force that puts the blade on the
+!> layer then follows explicitly, P(omega) = (gamma + H_gg(omega) M_1)/H_gE(omega), and the
+!> layer's peak is the minimum of |P| over omega: the root of psi = d|P|^2/domega, whose total
+!> derivative carries dGamma/domega = -J^-1 dR/domega (the implicit function theorem; no extra
+!> trace). dGamma/dgamma likewise gives the Jacobian of the backbone root search (s%Jroot) and,
+!> with dGamma/domega, the first-order prediction that starts a neighbouring layer.
 !>
 !> Nothing here depends on neighbouring layers: a warm start only saves iterations (a cold
 !> start, all other harmonics 0, converges to the same solution).
@@ -95,11 +98,10 @@ module udmap_harmonic_layer
     type(harmonic_root_memory_type), allocatable :: rung(:)
   end type harmonic_workspace_type
 
-  !> A backbone root kept to start the next one: its layer, the Jacobian of its root search,
-  !> and the single-harmonic root it started from (gamma1 [rad], omega1 [rad/s]; 0: none).
+  !> A backbone root kept to start the next one: its layer and the single-harmonic root it
+  !> started from (gamma1 [rad], omega1 [rad/s]; 0: none).
   type :: harmonic_root_memory_type
     type(harmonic_state_type) :: root
-    real(wp) :: J(2, 2) = 0
     real(wp) :: gamma1 = 0, omega1 = 0
   end type harmonic_root_memory_type
 
@@ -776,15 +778,13 @@ contains
   !> search in a secant on gamma), found with a fraction of the layer solves. ok = .false.
   !> when it does not converge in 30 iterations (then use harmonic_root).
   subroutine harmonic_peak_root(ws, blade, F_E, gamma_start, omega_start, omega_lo, omega_hi, &
-      & rtol, s, ok, error, J0)
+      & rtol, s, ok, error)
     type(harmonic_workspace_type), intent(inout) :: ws
     type(blade_type), intent(in) :: blade
     real(wp), intent(in) :: F_E, gamma_start, omega_start, omega_lo, omega_hi, rtol
     type(harmonic_state_type), intent(inout) :: s
     logical, intent(out) :: ok
     type(error_type), allocatable, intent(out) :: error
-    !> Out: the root Jacobian at the root.
-    real(wp), intent(inout), optional :: J0(2, 2)
     real(wp) :: z(2), f(2), zt(2), ft(2), J(2, 2), dz(2), det, h
     integer :: it
     ok = .false.
@@ -801,7 +801,6 @@ contains
       ! converged when the next step would be below rtol: s holds the root's layer
       if (maxval(abs(dz)) <= rtol) then
         ok = .true.
-        if (present(J0)) J0 = s%Jroot
         return
       end if
       ! steps at most 30 % in gamma and 2 % in omega, inside the band

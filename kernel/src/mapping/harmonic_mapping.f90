@@ -4,9 +4,11 @@
 !> is exactly the single-harmonic method (the same code path, the same numbers).
 !>
 !> Backbone: F_bb(gamma) = min_omega |P(omega; gamma)|; the roots of F_bb = F_E are located by
-!> secant steps in ln gamma from each single-harmonic root (the multi-harmonic correction is a
-!> few percent, so every root has its single-harmonic counterpart to start from). Every layer
-!> on the way is solved on its own (udmap_harmonic_layer); the previous layer only warm-starts.
+!> Newton steps in (ln gamma, ln omega) from each single-harmonic root (the multi-harmonic
+!> correction is a few percent, so every root has its single-harmonic counterpart to start
+!> from), or from the last root with as many harmonics moved by the change of the
+!> single-harmonic root; secant steps around full peak searches as the fallback. Every layer on
+!> the way is solved on its own (udmap_harmonic_layer); the previous layer only warm-starts.
 !>
 !> Automatic H: start at H = 3, raised to every harmonic h <= 6 whose h omega lies within 12 %
 !> of a bare-blade mode above mode 1; then compare with the next H of the ladder 3, 5, 7, 9,
@@ -235,8 +237,6 @@ contains
     logical :: jump
     real(wp), allocatable :: roots(:)
     real(wp) :: F_lim, omega1, change
-    !> The root search's Jacobian at the last rung of the automatic H (starts the next rung)
-    real(wp) :: J_rung(2, 2)
     !> Tolerance of the root searches: the rungs of the automatic H are only compared with
     !> each other (to harmonic_tol), so they are solved to a thousandth of it, and the chosen
     !> one is then refined to rtol_h
@@ -245,7 +245,6 @@ contains
     logical :: auto
 
     F_lim = limit_force_or_huge(model)
-    J_rung = 0
     nr = size(p1%roots)
     allocate(roots(nr))
     auto = model%analysis%harmonics == 0
@@ -348,7 +347,7 @@ contains
       type(harmonic_state_type), intent(inout) :: st
       type(error_type), allocatable, intent(out) :: err
       type(harmonic_state_type), intent(in), optional :: warm
-      real(wp) :: slope, Fb(2), fr(2), Jb(2, 2)
+      real(wp) :: slope, Fb(2), fr(2)
       logical :: ok
       jump = .false.
       if (present(warm)) then
@@ -359,49 +358,30 @@ contains
       call harmonic_resize(st, Hs)
       st%omega = omega0
       if (at_peak) then
-        Jb = 0
         if (.not.present(warm) .and. nr == 1 .and. model%harm%rung(Hs)%gamma1 > 0) then
           ! from the last root with Hs harmonics (after a change of F_E alone, the previous
-          ! force): its layer and Jacobian, moved by the change of the single-harmonic root
+          ! force): its layer, moved by the change of the single-harmonic root
           associate(mem => model%harm%rung(Hs))
             st = mem%root
-            Jb = mem%J
             call harmonic_peak_root(model%harm, model%blade, p1%F_E, &
               & gamma0*(mem%root%gamma/mem%gamma1), omega0*(mem%root%omega/mem%omega1), &
-              & model%omega_lo, model%omega_hi, tol_s, st, ok, err, Jb)
+              & model%omega_lo, model%omega_hi, tol_s, st, ok, err)
           end associate
           if (allocated(err)) return
           if (ok) then
-            call remember(st, Jb)
+            call remember(st)
             return
           end if
           st = harmonic_state_type()
           call harmonic_resize(st, Hs)
           st%omega = omega0
-          Jb = 0
         end if
-        if (present(warm) .and. any(J_rung /= 0)) then
-          ! the next rung of the automatic H: from the last rung's root and Jacobian
-          Jb = J_rung
-          call harmonic_peak_root(model%harm, model%blade, p1%F_E, gamma0, omega0, &
-            & model%omega_lo, model%omega_hi, tol_s, st, ok, err, Jb)
-          if (allocated(err)) return
-          if (ok) then
-            J_rung = Jb
-            if (nr == 1) call remember(st, Jb)
-            return
-          end if
-          st = warm
-          call harmonic_resize(st, Hs)
-          st%omega = omega0
-          Jb = 0
-        end if
+        ! (the next rung of the automatic H starts from the last rung's root, in warm)
         call harmonic_peak_root(model%harm, model%blade, p1%F_E, gamma0, omega0, &
-          & model%omega_lo, model%omega_hi, tol_s, st, ok, err, Jb)
+          & model%omega_lo, model%omega_hi, tol_s, st, ok, err)
         if (allocated(err)) return
         if (ok) then
-          J_rung = Jb
-          if (nr == 1) call remember(st, Jb)
+          if (nr == 1) call remember(st)
           return
         end if
         ! fallback: a secant on gamma around full peak searches, started with the
@@ -417,12 +397,10 @@ contains
       end if
     end subroutine solve_root
 
-    !> Keeps a root and its Jacobian for the next root with as many harmonics.
-    subroutine remember(st, Jr)
+    !> Keeps a root for the next root with as many harmonics.
+    subroutine remember(st)
       type(harmonic_state_type), intent(in) :: st
-      real(wp), intent(in) :: Jr(2, 2)
       model%harm%rung(st%H)%root = st
-      model%harm%rung(st%H)%J = Jr
       model%harm%rung(st%H)%gamma1 = p1%gamma_P
       model%harm%rung(st%H)%omega1 = omega1
     end subroutine remember
