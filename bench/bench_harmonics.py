@@ -145,7 +145,8 @@ def readme(records: list[dict]) -> None:
         return
     doe_rec = next((r for r in records if r["method"] == "doe"), None)
     body = ["", "Measured by `bench/bench_harmonics.py` (part of `make bench`); blade A, 2 shared "
-            "cores, times are medians of repeated cold runs (new model and the ten peaks).", "",
+            "cores, times are medians of repeated cold runs (new model and the ten peaks), the "
+            "runs of the layered backbone and of the standard method alternating.", "",
             "**gg10, blade A's asymmetric damper** (F_E = 1..10 N; errors: the largest over the "
             "ten forces, relative, against the standard method at H = 33):", "",
             gg10_table(records, "blade_a"), "",

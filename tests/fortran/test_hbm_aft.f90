@@ -1,17 +1,26 @@
 !> Alternating frequency-time with the loading history: the exact event-driven AFT against the
 !> closed-form Jenkins describing function (PHYSICS.md 2.4, values given to 6 digits), the sampled AFT converging to it as
-!> 1/N^2, phase equivariance, multi-harmonic waveforms against a very fine sampled AFT.
+!> 1/N^2, phase equivariance, multi-harmonic waveforms against a very fine sampled AFT, and the
+!> closed-form Jacobian (aft_moment_jacobian) against finite differences of the moments.
 program test_hbm_aft
   use udmap_kinds, only: wp, pi
   use udmap_error, only: error_type
   use udmap_hysteretic, only: jenkins_element_type, new_jenkins_element
-  use udmap_aft, only: aft_workspace_type, aft_moment, waveform_extrema, waveform_value
+  use udmap_aft, only: aft_workspace_type, aft_moment, aft_moment_jacobian, waveform_extrema, &
+    & waveform_value
+  use udmap_hysteretic, only: hysteretic_element_type
+  use udmap_contact_element, only: contact_element_type, new_contact_element
+  use udmap_damper_params, only: blade_a_damper_params
   use testing, only: test_suite, check_close, check_true, check_no_error, finish
   implicit none
   type(test_suite) :: suite
   type(jenkins_element_type) :: jen
   type(error_type), allocatable :: error
   type(aft_workspace_type) :: ws
+  type(contact_element_type) :: el
+  complex(wp) :: Gc(7)
+  real(wp) :: amp_c
+  real(wp), parameter :: amps_c(3) = [2.0e-6_wp, 8.0e-4_wp, 3.0e-3_wp]
   real(wp), parameter :: amp(3) = [1.6_wp, 2.0_wp, 5.0_wp]
   real(wp), parameter :: kre(3) = [1.947954_wp, 1.608998_wp, 0.504632_wp]
   real(wp), parameter :: kim(3) = [0.149208_wp, 0.477465_wp, 0.534761_wp]
@@ -77,5 +86,63 @@ program test_hbm_aft
     call check_close(suite, "multi-harmonic M_"//trim(tag), abs(M3(j) - Mref(j)), 0.0_wp, &
       & 0.0_wp, 1.0e-7_wp)
   end do
+
+  ! closed-form Jacobian = central differences (M_r is piecewise linear: the differences are
+  ! exact but for rounding while no event changes), moments = aft_moment's to the last bit
+  call check_jacobian("jenkins, 5 harmonics", jen, 0.3_wp, G3, .true.)
+  call new_contact_element(el, blade_a_damper_params(), error)
+  call check_no_error(suite, "contact element", error)
+  do j = 1, 3
+    ! blade A's damper: stuck, gross slip, near lift-off, with harmonics 2..7
+    amp_c = amps_c(j)
+    Gc = amp_c*[(1.0_wp, 0.0_wp), (0.03_wp, -0.02_wp), (0.05_wp, 0.04_wp), (0.0_wp, 0.01_wp), &
+      & (-0.02_wp, 0.01_wp), (0.01_wp, 0.005_wp), (0.004_wp, -0.003_wp)]
+    write(tag, '(es8.1)') amp_c
+    call check_jacobian("contact, gamma = "//tag, el, 0.05_wp*amp_c, Gc, j < 3)
+  end do
   call finish(suite)
+contains
+  !> aft_moment_jacobian against central differences of aft_moment; must_ok: the closed form
+  !> must apply (no event changes within the perturbations).
+  subroutine check_jacobian(name, element, G0, G, must_ok)
+    character(len=*), intent(in) :: name
+    class(hysteretic_element_type), intent(inout) :: element
+    real(wp), intent(in) :: G0
+    complex(wp), intent(in) :: G(:)
+    logical, intent(in) :: must_ok
+    real(wp) :: JA(2*size(G)+1, 2*size(G)+1), JF(2*size(G)+1, 2*size(G)+1), MA0, Mp0, Mm0, d
+    real(wp) :: vp(2*size(G)+1), vm(2*size(G)+1)
+    complex(wp) :: MA(size(G)), Mb(size(G)), Mp(size(G)), Mm(size(G)), Gp(size(G)), Gm(size(G))
+    real(wp) :: Mb0, scale, G0p, G0m
+    integer :: c, H, k
+    logical :: ok
+    H = size(G)
+    call aft_moment_jacobian(element, ws, G0, G, 1, 8, 1.0e-12_wp, MA0, MA, JA, ok, error)
+    call check_no_error(suite, name//": jacobian", error)
+    call aft_moment(element, ws, G0, G, 0, 1, 8, 1.0e-12_wp, Mb0, Mb, error)
+    call check_true(suite, name//": same moments as aft_moment", MA0 == Mb0 .and. all(MA == Mb))
+    if (must_ok) call check_true(suite, name//": closed form applies", ok)
+    if (.not.ok) return
+    d = 1.0e-6_wp*abs(G(1))
+    do c = 1, 2*H + 1
+      ! column c: G0 (c = 1), Re G_k (c = 2k), Im G_k (c = 2k + 1)
+      Gp = G; Gm = G; G0p = G0; G0m = G0
+      k = max(1, c/2)
+      if (c == 1) then
+        G0p = G0 + d; G0m = G0 - d
+      else if (mod(c, 2) == 0) then
+        Gp(k) = G(k) + d; Gm(k) = G(k) - d
+      else
+        Gp(k) = G(k) + cmplx(0.0_wp, d, wp); Gm(k) = G(k) - cmplx(0.0_wp, d, wp)
+      end if
+      call aft_moment(element, ws, G0p, Gp, 0, 1, 8, 1.0e-12_wp, Mp0, Mp, error)
+      call aft_moment(element, ws, G0m, Gm, 0, 1, 8, 1.0e-12_wp, Mm0, Mm, error)
+      vp = [Mp0, (real(Mp(k), wp), aimag(Mp(k)), k = 1, H)]
+      vm = [Mm0, (real(Mm(k), wp), aimag(Mm(k)), k = 1, H)]
+      JF(:, c) = (vp - vm)/(2*d)
+    end do
+    scale = maxval(abs(JF))
+    call check_true(suite, name//": Jacobian = central differences", &
+      & maxval(abs(JA - JF)) <= 1.0e-6_wp*scale)
+  end subroutine check_jacobian
 end program test_hbm_aft

@@ -20,13 +20,15 @@ module udmap_aft
   use udmap_hysteretic, only: hysteretic_element_type, event_list_type
   implicit none
   private
-  public :: aft_workspace_type, aft_moment, waveform_value, waveform_slope, waveform_extrema
+  public :: aft_workspace_type, aft_moment, aft_moment_jacobian, waveform_value, waveform_slope, &
+    & waveform_extrema
 
   !> Scratch storage reused between calls (one per caller; not shared between threads).
   type :: aft_workspace_type
     type(event_list_type) :: events
     real(wp), allocatable :: bp_gamma(:), bp_M(:)   !< breakpoints of the current period
     integer, allocatable :: bp_seg(:)               !< segment of each breakpoint
+    real(wp), allocatable :: bp_tau(:)              !< instant of each breakpoint (integration)
     integer :: nbp = 0
     class(hysteretic_element_type), allocatable :: start   !< state at the start of a period
     integer :: calls = 0                            !< number of aft_moment calls (statistics)
@@ -62,10 +64,18 @@ contains
     z = cmplx(cos(tau), sin(tau), wp)
     zh = (1.0_wp, 0.0_wp)
     val = 0.0_wp
-    do h = 1, size(G)
-      zh = zh*z
-      val = val + real(G(h)*zh*cmplx(0.0_wp, real(h, wp), wp)**order, wp)
-    end do
+    ! (i h)^1 = i h, (i h)^2 = -h^2 (no complex power in the inner loop)
+    if (order == 1) then
+      do h = 1, size(G)
+        zh = zh*z
+        val = val - h*aimag(G(h)*zh)
+      end do
+    else
+      do h = 1, size(G)
+        zh = zh*z
+        val = val - real(h, wp)**2*real(G(h)*zh, wp)
+      end do
+    end if
   end function waveform_slope
 
   !> The extrema of gamma(tau) over one period, in order, starting at the global maximum:
@@ -75,8 +85,10 @@ contains
     complex(wp), intent(in) :: G(:)
     real(wp), allocatable, intent(out) :: tau(:)
     integer, intent(out) :: n
-    integer :: H, ns, j, k, imax, h1
-    real(wp), allocatable :: ts(:), ds(:), roots(:)
+    integer :: H, ns, j, k, imax, h1, nh
+    real(wp), allocatable :: ts(:), ds(:), roots(:), c1(:), s1(:), ch(:), sh(:), sa(:), cb(:)
+    real(wp) :: gr, gi, cn
+    complex(wp) :: z, zs
     real(wp) :: a, b, fa, fb, x, fx, d2, best, v, scale, xn
     H = size(G)
     n = 0
@@ -111,8 +123,48 @@ contains
     allocate(ts(0:ns), ds(0:ns), roots(ns))
     do j = 0, ns
       ts(j) = two_pi*j/ns
-      ds(j) = waveform_slope(G, ts(j), 1)
     end do
+    ! gamma'(tau_j) = -(sa_j + cb_j), sa_j = sum_h h Re G_h sin(h tau_j), cb_j = sum_h h Im G_h
+    ! cos(h tau_j); at tau_{ns-j} = 2 pi - tau_j the sines change sign: sa_j - cb_j. So only
+    ! j = 0..ns/2, cos/sin(h tau_j) by the angle-addition recurrence (the grid the inner loop),
+    ! cos/sin(tau_j) exact every 8th point and rotated in between.
+    nh = ns/2
+    allocate(c1(0:nh), s1(0:nh), ch(0:nh), sh(0:nh), sa(0:nh), cb(0:nh))
+    zs = cmplx(cos(two_pi/ns), sin(two_pi/ns), wp)
+    do j = 0, nh
+      if (mod(j, 8) == 0) then
+        z = cmplx(cos(ts(j)), sin(ts(j)), wp)
+      else
+        z = z*zs
+      end if
+      c1(j) = real(z, wp)
+      s1(j) = aimag(z)
+    end do
+    do j = 0, nh
+      ch(j) = c1(j)
+      sh(j) = s1(j)
+      sa(j) = real(G(1), wp)*s1(j)
+      cb(j) = aimag(G(1))*c1(j)
+    end do
+    do k = 2, H
+      gr = k*real(G(k), wp)
+      gi = k*aimag(G(k))
+      do j = 0, nh
+        cn = ch(j)*c1(j) - sh(j)*s1(j)
+        sh(j) = sh(j)*c1(j) + ch(j)*s1(j)
+        ch(j) = cn
+        sa(j) = sa(j) + gr*sh(j)
+        cb(j) = cb(j) + gi*cn
+      end do
+    end do
+    do j = 0, nh
+      ds(j) = -(sa(j) + cb(j))
+    end do
+    do j = 1, nh - 1
+      ds(ns-j) = sa(j) - cb(j)
+    end do
+    ts(ns) = two_pi
+    ds(ns) = ds(0)
     ! zero counts as positive, so a touching zero (inflection) is not an extremum
     do j = 0, ns - 1
       if ((ds(j) >= 0.0_wp) .eqv. (ds(j+1) >= 0.0_wp)) cycle
@@ -235,12 +287,7 @@ contains
       call fatal_error(error, "aft: the waveform of gamma is not finite", UDMAP_EINPUT)
       return
     end if
-    if (.not.allocated(ws%start)) then
-      allocate(ws%start, mold=element)
-    else if (.not.same_type_as(ws%start, element)) then
-      deallocate(ws%start)
-      allocate(ws%start, mold=element)
-    end if
+    call ensure_start(ws, element)
     call waveform_extrema(G, tau, n)
 
     ws%lift_off = .false.
@@ -295,6 +342,37 @@ contains
       gam(k) = G0 + waveform_value(0.0_wp, G, tau(k))
     end do
     gam(n+1) = gam(1)
+    call trace_periods(element, ws, gam, n, min_periods, max_periods, loop_rtol, error, periods)
+    if (allocated(error)) return
+    ws%lift_off = element%lifted()
+    call integrate_period(ws, G0, G, tau, gam, M0, M)
+  end subroutine aft_moment
+
+  !> The element state kept at the start of a period: of the element's type.
+  subroutine ensure_start(ws, element)
+    type(aft_workspace_type), intent(inout) :: ws
+    class(hysteretic_element_type), intent(in) :: element
+    if (.not.allocated(ws%start)) then
+      allocate(ws%start, mold=element)
+    else if (.not.same_type_as(ws%start, element)) then
+      deallocate(ws%start)
+      allocate(ws%start, mold=element)
+    end if
+  end subroutine ensure_start
+
+  !> Periods through the extremum values gam(1..n+1) (gam(n+1) = gam(1), the element already
+  !> at gam(1)) until the state repeats; the breakpoints of the last period in ws.
+  subroutine trace_periods(element, ws, gam, n, min_periods, max_periods, loop_rtol, error, &
+      & periods)
+    class(hysteretic_element_type), intent(inout) :: element
+    type(aft_workspace_type), intent(inout) :: ws
+    real(wp), intent(in) :: gam(:), loop_rtol
+    integer, intent(in) :: n, min_periods, max_periods
+    type(error_type), allocatable, intent(out) :: error
+    integer, intent(out), optional :: periods
+    integer :: p, k, j
+    real(wp) :: Mr, kt
+    logical :: closed
     do p = 1, max(1, max_periods)
       call ws%start%copy_state(element)
       ws%nbp = 0
@@ -312,9 +390,194 @@ contains
       if (present(periods)) periods = p
       if (p >= min_periods .and. closed) exit
     end do
-    ws%lift_off = element%lifted()
-    call integrate_period(ws, G0, G, tau, gam, M0, M)
-  end subroutine aft_moment
+  end subroutine trace_periods
+
+  !> aft_moment's exact integration (samples = 0) and, in closed form, its Jacobian
+  !> JM = d(M0, Re M_1, Im M_1, .., Re M_H, Im M_H)/d(G0, Re G_1, Im G_1, .., Re G_H, Im G_H).
+  !>
+  !> Between events M_r = c0 + slope gamma(tau), and the events (their gamma and M_r) depend
+  !> only on the extremum values g_e of the waveform (the element is rate-independent and
+  !> driven from extremum to extremum). So, with M_r continuous in tau (the moving piece
+  !> boundaries then cancel),
+  !>   dM_h = int slope(tau) dgamma(tau) e^{-i h tau} + sum_e dg_e int (dc0/dg_e
+  !>          + dslope/dg_e gamma(tau)) e^{-i h tau},   dg_e = dgamma(tau_e),
+  !> the first term a convolution with the Fourier coefficients of the piecewise-constant
+  !> slope, the second from one cheap element re-trace per extremum (no integration): exact
+  !> while the sequence of events does not change (M_r is linear in the g_e there). ok is
+  !> .false. when a re-trace changes that sequence (then use finite differences).
+  subroutine aft_moment_jacobian(element, ws, G0, G, min_periods, max_periods, loop_rtol, &
+      & M0, M, JM, ok, error)
+    class(hysteretic_element_type), intent(inout) :: element
+    type(aft_workspace_type), intent(inout) :: ws
+    real(wp), intent(in) :: G0
+    complex(wp), intent(in) :: G(:)
+    integer, intent(in) :: min_periods, max_periods
+    real(wp), intent(in) :: loop_rtol
+    real(wp), intent(out) :: M0
+    complex(wp), intent(out) :: M(:)
+    real(wp), intent(out) :: JM(:,:)
+    logical, intent(out) :: ok
+    type(error_type), allocatable, intent(out) :: error
+    !> Relative size of the extremum perturbations (M_r is linear in them: no truncation
+    !> error, only the sequence of events must stay).
+    real(wp), parameter :: dg_rel = 1.0e-7_wp
+    real(wp), allocatable :: tau(:), gam(:), gp(:), bg(:), bM(:), c0(:), sl(:), Ac(:,:), &
+      & As(:,:)
+    integer, allocatable :: bseg(:)
+    complex(wp), allocatable :: Qc(:,:), Bs(:,:)
+    complex(wp) :: B(-2*size(G):size(G)), Pa(-2*size(G):size(G)), Pb(-2*size(G):size(G))
+    complex(wp) :: dC(0:size(G), 2*size(G)+1), Q(0:size(G)), acc
+    real(wp) :: d, Mr, kt, slp, cc
+    integer :: H, n, nb, i, e, k, h1, mm, c
+    logical :: lift, any_s
+
+    H = size(G)
+    ok = .false.
+    ws%calls = ws%calls + 1
+    M = (0.0_wp, 0.0_wp)
+    M0 = 0.0_wp
+    JM = 0.0_wp
+    if (.not.(abs(G0) <= huge(1.0_wp)) .or. .not.all(abs(G) <= huge(1.0_wp))) then
+      call fatal_error(error, "aft: the waveform of gamma is not finite", UDMAP_EINPUT)
+      return
+    end if
+    call ensure_start(ws, element)
+    call waveform_extrema(G, tau, n)
+    ! a constant waveform has no extrema to differentiate at: finite differences
+    if (n == 0) return
+    allocate(gam(n+1))
+    do k = 1, n + 1
+      gam(k) = G0 + waveform_value(0.0_wp, G, tau(k))
+    end do
+    gam(n+1) = gam(1)
+    call run(gam)
+    if (allocated(error)) return
+    lift = element%lifted()
+    ws%lift_off = lift
+    call integrate_period(ws, G0, G, tau, gam, M0, M, B)
+    nb = ws%nbp
+    bg = ws%bp_gamma(1:nb)
+    bM = ws%bp_M(1:nb)
+    bseg = ws%bp_seg(1:nb)
+    allocate(c0(nb), sl(nb), Ac(nb, n), As(nb, n))
+    call affine(bg, bM, c0, sl)
+    ! the events against each extremum value
+    d = dg_rel*max(maxval(gam) - minval(gam), tiny(1.0_wp))
+    allocate(gp(n+1))
+    do e = 1, n
+      gp = gam
+      gp(e) = gam(e) + d
+      if (e == 1) gp(n+1) = gp(1)
+      call run(gp)
+      if (allocated(error)) return
+      if (ws%nbp /= nb) exit
+      if (any(ws%bp_seg(1:nb) /= bseg)) exit
+      call affine(ws%bp_gamma(1:nb), ws%bp_M(1:nb), Ac(:, e), As(:, e))
+      Ac(:, e) = (Ac(:, e) - c0)/d
+      As(:, e) = (As(:, e) - sl)/d
+      ok = e == n
+    end do
+    ! ws as the base trace left it (breakpoints and flags)
+    ws%nbp = nb
+    ws%bp_gamma(1:nb) = bg
+    ws%bp_M(1:nb) = bM
+    ws%bp_seg(1:nb) = bseg
+    ws%lift_off = lift
+    if (.not.ok) return
+
+    ! slope term: columns G0 (dgamma = 1), Re G_k (cos k tau), Im G_k (-sin k tau)
+    do h1 = 0, H
+      dC(h1, 1) = B(-h1)
+      do k = 1, H
+        dC(h1, 2*k) = 0.5_wp*(B(k - h1) + B(-k - h1))
+        dC(h1, 2*k+1) = cmplx(0.0_wp, 0.5_wp, wp)*(B(k - h1) - B(-k - h1))
+      end do
+    end do
+    ! history term: Qc_e(m) = sum_i dc0_i/dg_e (P(tb) - P(ta))(m), Bs_e likewise with dslope
+    allocate(Qc(-H:0, n), Bs(-2*H:H, n))
+    Qc = (0.0_wp, 0.0_wp)
+    Bs = (0.0_wp, 0.0_wp)
+    any_s = .false.
+    call powers(ws%bp_tau(1), H, Pa)
+    do i = 2, nb
+      call powers(ws%bp_tau(i), H, Pb)
+      do e = 1, n
+        cc = Ac(i, e)
+        if (cc /= 0.0_wp) then
+          Qc(-H:-1, e) = Qc(-H:-1, e) + cc*(Pb(-H:-1) - Pa(-H:-1))
+          Qc(0, e) = Qc(0, e) + cc*(ws%bp_tau(i) - ws%bp_tau(i-1))
+        end if
+        slp = As(i, e)
+        if (slp /= 0.0_wp) then
+          any_s = .true.
+          Bs(:, e) = Bs(:, e) + slp*(Pb - Pa)
+          Bs(0, e) = Bs(0, e) + slp*(ws%bp_tau(i) - ws%bp_tau(i-1))   ! P(0) = 1: the time
+        end if
+      end do
+      Pa = Pb
+    end do
+    do e = 1, n
+      do mm = -H, -1
+        Qc(mm, e) = Qc(mm, e)/cmplx(0.0_wp, real(mm, wp), wp)
+      end do
+      if (any_s) then
+        do mm = -2*H, H
+          if (mm /= 0) Bs(mm, e) = Bs(mm, e)/cmplx(0.0_wp, real(mm, wp), wp)
+        end do
+      end if
+      ! Q_e(h) = int (dc0/dg_e + dslope/dg_e gamma) e^{-i h tau}
+      do h1 = 0, H
+        Q(h1) = Qc(-h1, e)
+        if (any_s) then
+          acc = (0.0_wp, 0.0_wp)
+          do k = 1, H
+            acc = acc + G(k)*Bs(k - h1, e) + conjg(G(k))*Bs(-k - h1, e)
+          end do
+          Q(h1) = Q(h1) + G0*Bs(-h1, e) + 0.5_wp*acc
+        end if
+      end do
+      ! dg_e = dG0 + sum_k (cos(k tau_e) dRe G_k - sin(k tau_e) dIm G_k)
+      dC(:, 1) = dC(:, 1) + Q
+      do k = 1, H
+        dC(:, 2*k) = dC(:, 2*k) + cos(k*tau(e))*Q
+        dC(:, 2*k+1) = dC(:, 2*k+1) - sin(k*tau(e))*Q
+      end do
+    end do
+    do c = 1, 2*H + 1
+      JM(1, c) = real(dC(0, c), wp)/(2.0_wp*pi)
+      do h1 = 1, H
+        JM(2*h1, c) = real(dC(h1, c), wp)/pi
+        JM(2*h1+1, c) = aimag(dC(h1, c))/pi
+      end do
+    end do
+  contains
+    !> Load, ramp to the maximum and the periods through the extremum values g.
+    subroutine run(g)
+      real(wp), intent(in) :: g(:)
+      call element%load(error)
+      if (allocated(error)) return
+      call element%advance(g(1), Mr, kt, error)
+      if (allocated(error)) return
+      call trace_periods(element, ws, g, n, min_periods, max_periods, loop_rtol, error)
+    end subroutine run
+
+    !> M_r = c0 + slope gamma on the piece ending at each breakpoint (the first: unused).
+    pure subroutine affine(g, Mb, c0v, slv)
+      real(wp), intent(in) :: g(:), Mb(:)
+      real(wp), intent(out) :: c0v(:), slv(:)
+      integer :: j
+      c0v(1) = 0.0_wp
+      slv(1) = 0.0_wp
+      do j = 2, size(g)
+        if (g(j) /= g(j-1)) then
+          slv(j) = (Mb(j) - Mb(j-1))/(g(j) - g(j-1))
+        else
+          slv(j) = 0.0_wp
+        end if
+        c0v(j) = Mb(j-1) - slv(j)*g(j-1)
+      end do
+    end subroutine affine
+  end subroutine aft_moment_jacobian
 
   pure subroutine push_bp(ws, g, Mr, seg)
     type(aft_workspace_type), intent(inout) :: ws
@@ -339,21 +602,36 @@ contains
     ws%bp_seg(ws%nbp) = seg
   end subroutine push_bp
 
-  !> Closed-form Fourier integral of the piecewise-linear-in-gamma moment over the period.
-  pure subroutine integrate_period(ws, G0, G, tau, gam, M0, M)
-    type(aft_workspace_type), intent(in) :: ws
+  !> Closed-form Fourier integral of the piecewise-linear-in-gamma moment over the period. On
+  !> the piece [ta, tb], M_r = c0 + slope gamma(tau), so
+  !>   int M_r e^{-i h tau} = (c0 + slope G0) E(-h) + slope/2 sum_k (G_k E(k-h) + conj(G_k) E(-k-h)),
+  !> E(m) = int_ta^tb e^{i m tau}; the sums over the pieces of c0 E and slope E are accumulated
+  !> first, then combined with the G_k once (O(pieces H + H^2) instead of O(pieces H^2)).
+  pure subroutine integrate_period(ws, G0, G, tau, gam, M0, M, Bout)
+    type(aft_workspace_type), intent(inout) :: ws
     real(wp), intent(in) :: G0, tau(:), gam(:)
     complex(wp), intent(in) :: G(:)
     real(wp), intent(out) :: M0
     complex(wp), intent(out) :: M(:)
-    integer :: H, i, k, seg, h1
+    !> sum over the pieces of slope int e^{i m tau}, m = -2H..H (the Jacobian's slope term)
+    complex(wp), intent(out), optional :: Bout(-2*size(G):)
+    integer :: H, i, k, seg, h1, mm
     real(wp) :: ta, tb, ga, gb, Ma, Mb, slope, c0
     complex(wp) :: Pa(-2*size(G):size(G)), Pb(-2*size(G):size(G)), C(0:size(G))
-    complex(wp) :: acc
+    ! A(mm) = sum (c0 + slope G0) (P(tb) - P(ta)), B(m) = sum slope (P(tb) - P(ta)); mm = 0: times
+    complex(wp) :: A(-size(G):0), B(-2*size(G):size(G)), acc
     H = size(G)
-    C = (0.0_wp, 0.0_wp)
+    A = (0.0_wp, 0.0_wp)
+    B = (0.0_wp, 0.0_wp)
     ta = tau(1)
     call powers(ta, H, Pa)
+    if (.not.allocated(ws%bp_tau)) then
+      allocate(ws%bp_tau(size(ws%bp_gamma)))
+    else if (size(ws%bp_tau) < ws%nbp) then
+      deallocate(ws%bp_tau)
+      allocate(ws%bp_tau(size(ws%bp_gamma)))
+    end if
+    ws%bp_tau(1) = ta
     do i = 2, ws%nbp
       seg = ws%bp_seg(i)
       ga = ws%bp_gamma(i-1); gb = ws%bp_gamma(i)
@@ -363,6 +641,7 @@ contains
       else
         tb = solve_time(G0, G, gb, ta, tau(seg+1), gam(seg+1))
       end if
+      ws%bp_tau(i) = tb
       call powers(tb, H, Pb)
       if (gb /= ga) then
         slope = (Mb - Ma)/(gb - ga)
@@ -370,28 +649,33 @@ contains
         slope = 0.0_wp
       end if
       c0 = Ma - slope*ga
-      do h1 = 0, H
-        ! int (c0 + slope*gamma(tau)) e^{-i h tau} dtau over [ta, tb]
-        acc = (c0 + slope*G0)*expint(-h1)
-        do k = 1, H
-          acc = acc + 0.5_wp*slope*(G(k)*expint(k - h1) + conjg(G(k))*expint(-k - h1))
-        end do
-        C(h1) = C(h1) + acc
-      end do
+      A(-H:-1) = A(-H:-1) + (c0 + slope*G0)*(Pb(-H:-1) - Pa(-H:-1))
+      A(0) = A(0) + (c0 + slope*G0)*(tb - ta)
+      if (slope /= 0.0_wp) then
+        B(-2*H:-1) = B(-2*H:-1) + slope*(Pb(-2*H:-1) - Pa(-2*H:-1))
+        B(1:H) = B(1:H) + slope*(Pb(1:H) - Pa(1:H))
+        B(0) = B(0) + slope*(tb - ta)
+      end if
       ta = tb
       Pa = Pb
     end do
+    ! E(m) = (P(tb) - P(ta))/(i m), m /= 0
+    do mm = -H, -1
+      A(mm) = A(mm)/cmplx(0.0_wp, real(mm, wp), wp)
+    end do
+    do mm = -2*H, H
+      if (mm /= 0) B(mm) = B(mm)/cmplx(0.0_wp, real(mm, wp), wp)
+    end do
+    do h1 = 0, H
+      acc = (0.0_wp, 0.0_wp)
+      do k = 1, H
+        acc = acc + G(k)*B(k - h1) + conjg(G(k))*B(-k - h1)
+      end do
+      C(h1) = A(-h1) + 0.5_wp*acc
+    end do
     M0 = real(C(0), wp)/(2.0_wp*pi)
     M = C(1:H)/pi
-  contains
-    pure complex(wp) function expint(m)
-      integer, intent(in) :: m
-      if (m == 0) then
-        expint = cmplx(tb - ta, 0.0_wp, wp)
-      else
-        expint = (Pb(m) - Pa(m))/cmplx(0.0_wp, real(m, wp), wp)
-      end if
-    end function expint
+    if (present(Bout)) Bout(-2*H:H) = B
   end subroutine integrate_period
 
   !> e^{i m t} for m = -2H..H.

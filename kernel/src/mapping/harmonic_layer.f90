@@ -7,12 +7,15 @@
 !>
 !> M_h the harmonics of the damper moment over the periodic gamma(t), traced exactly through
 !> the contact model with its loading history (udmap_aft, shared with the standard method), and
-!> M_ref the static moment of the loaded damper (the blade's reference state). Newton with a
-!> finite-difference damper Jacobian dM/dGamma (2H - 1 traces), reused while Newton contracts,
-!> and a backtracking line search. The force that puts the blade on the layer then follows
-!> explicitly, P(omega) = (gamma + H_gg(omega) M_1)/H_gE(omega), and the layer's peak is the
-!> minimum of |P| over omega: the root of psi = d|P|^2/domega, whose total derivative carries
-!> dGamma/domega = -J^-1 dR/domega (the implicit function theorem; no extra trace).
+!> M_ref the static moment of the loaded damper (the blade's reference state). Newton with the
+!> damper Jacobian dM/dGamma in closed form from one trace (aft_moment_jacobian; finite
+!> differences, 2H traces, where the events change within the perturbation), reused while
+!> Newton contracts, and a backtracking line search. The force that puts the blade on the
+!> layer then follows explicitly, P(omega) = (gamma + H_gg(omega) M_1)/H_gE(omega), and the
+!> layer's peak is the minimum of |P| over omega: the root of psi = d|P|^2/domega, whose total
+!> derivative carries dGamma/domega = -J^-1 dR/domega (the implicit function theorem; no extra
+!> trace). dGamma/dgamma likewise gives the Jacobian of the backbone root search (s%Jroot) and,
+!> with dGamma/domega, the first-order prediction that starts a neighbouring layer.
 !>
 !> Nothing here depends on neighbouring layers: a warm start only saves iterations (a cold
 !> start, all other harmonics 0, converges to the same solution).
@@ -20,12 +23,14 @@ module udmap_harmonic_layer
   use udmap_kinds, only: wp, pi
   use udmap_error, only: error_type, fatal_error, UDMAP_EINPUT, UDMAP_ENUMERIC, UDMAP_EPHYSICS
   use udmap_blade, only: blade_type, receptances_type
-  use udmap_lapack, only: dgesv
+  use udmap_lapack, only: dgetrf, dgetrs
   use udmap_hysteretic, only: hysteretic_element_type
-  use udmap_aft, only: aft_workspace_type, aft_moment, waveform_value, waveform_extrema
+  use udmap_aft, only: aft_workspace_type, aft_moment, aft_moment_jacobian, waveform_value, &
+    & waveform_extrema
   implicit none
   private
-  public :: harmonic_workspace_type, harmonic_state_type, harmonic_outputs_type
+  public :: harmonic_workspace_type, harmonic_state_type, harmonic_outputs_type, &
+    & harmonic_root_memory_type
   public :: harmonic_setup, harmonic_solve, harmonic_peak, harmonic_root, harmonic_force_root, &
     & harmonic_peak_root, &
     & harmonic_outputs, harmonic_resize, largest_excursion
@@ -54,12 +59,22 @@ module udmap_harmonic_layer
     !> Damper Jacobian d(M_0, Re M_1, Im M_1, ..)/d(Gamma_0, Re Gamma_2, Im Gamma_2, ..) and the
     !> unknowns it was taken at.
     real(wp), allocatable :: JM(:,:), x_jm(:)
+    !> dM/dGamma_1 (the same rows, Gamma_1 real) with JM.
+    real(wp), allocatable :: JM1(:)
+    !> d(Gamma_0, Re Gamma_2, Im Gamma_2, ..)/dgamma and /domega at the solution (implicit
+    !> function theorem): the predictor of a neighbouring layer's solve.
+    real(wp), allocatable :: dx_dg(:), dx_dw(:)
+    logical :: dx_valid = .false.
     logical :: jm_valid = .false.
     !> Bare receptances at h omega, h = 1..H (with d/domega).
     type(receptances_type), allocatable :: r(:)
     !> Force on the layer [N] (complex, phase of Gamma_1 = 0) and psi = d|P|^2/domega.
     complex(wp) :: P = 0
     real(wp) :: psi = 0
+    !> d(ln|P|, d ln|P|/d ln omega)/d(ln gamma, ln omega): the Jacobian of the backbone root
+    !> search, from the implicit function theorem (the harmonics' second-order dependence on
+    !> omega neglected: a Newton matrix, not a result).
+    real(wp) :: Jroot(2, 2) = 0
     !> A contact opened during the cycle.
     logical :: lift_off = .false.
   end type harmonic_state_type
@@ -75,13 +90,20 @@ module udmap_harmonic_layer
     !> Damper revision and summary numbers the element was built for.
     integer :: revision = -huge(1)
     real(wp) :: fingerprint(5) = 0
-    !> Traces done (statistics).
-    integer :: traces = 0
-    !> The last backbone root at a fixed H, its force and the Jacobian of its root search:
-    !> the warm start of the next root after a change of F_E alone (last%H = 0: none).
-    type(harmonic_state_type) :: last
-    real(wp) :: last_F = 0, last_J(2, 2) = 0
+    !> Traces and layer solves done (statistics).
+    integer :: traces = 0, solves = 0
+    !> The last backbone root found with h harmonics (rung(h)): the warm start of the next
+    !> root with as many harmonics (after a change of F_E alone, the next force of a list, the
+    !> same rung of the automatic H).
+    type(harmonic_root_memory_type), allocatable :: rung(:)
   end type harmonic_workspace_type
+
+  !> A backbone root kept to start the next one: its layer and the single-harmonic root it
+  !> started from (gamma1 [rad], omega1 [rad/s]; 0: none).
+  type :: harmonic_root_memory_type
+    type(harmonic_state_type) :: root
+    real(wp) :: gamma1 = 0, omega1 = 0
+  end type harmonic_root_memory_type
 
 
   !> Outputs of a solved layer at force |P|.
@@ -133,7 +155,12 @@ contains
     if (allocated(s%r)) deallocate(s%r)
     if (allocated(s%JM)) deallocate(s%JM)
     if (allocated(s%x_jm)) deallocate(s%x_jm)
-    allocate(s%M(H), s%r(H), s%JM(2*H+1, 2*H-1), s%x_jm(2*H-1))
+    if (allocated(s%JM1)) deallocate(s%JM1)
+    if (allocated(s%dx_dg)) deallocate(s%dx_dg)
+    if (allocated(s%dx_dw)) deallocate(s%dx_dw)
+    allocate(s%M(H), s%r(H), s%JM(2*H+1, 2*H-1), s%x_jm(2*H-1), s%JM1(2*H+1), &
+      & s%dx_dg(2*H-1), s%dx_dw(2*H-1))
+    s%dx_valid = .false.
     s%jm_valid = .false.
   end subroutine harmonic_resize
 
@@ -151,20 +178,31 @@ contains
     real(wp), allocatable :: x(:), R(:), xt(:), Rt(:), J(:,:), dx(:), dRw(:)
     integer, allocatable :: ipiv(:)
     real(wp) :: rn, rnt, t, step, step_prev
-    logical :: fresh, accepted
+    logical :: fresh, accepted, predict
+    real(wp) :: dg_old, dw_old
+    !> J holds the LU factors of the layer Jacobian for the current s%JM (the receptances are
+    !> fixed within a solve): one factorization per damper Jacobian
+    logical :: lu_ok
     complex(wp) :: dM1, dP
     character(len=64) :: buf
 
     H = s%H
     n = 2*H - 1
+    ws%solves = ws%solves + 1
     if (.not.(gamma > 0 .and. gamma < huge(1.0_wp)) .or. .not.(omega > 0)) then
       call fatal_error(error, "harmonic layer: gamma and omega must be positive", UDMAP_EINPUT)
       return
     end if
-    if (gamma /= s%gamma .and. s%gamma > 0 .and. allocated(s%G)) then
-      ! a neighbouring layer: the other harmonics scale roughly with the first
+    ! a neighbouring layer close by: first-order prediction of its harmonics from this one's
+    ! derivatives; farther: the other harmonics scale roughly with the first
+    predict = s%dx_valid .and. s%gamma > 0 .and. abs(gamma/s%gamma - 1) <= 0.1_wp .and. &
+      & abs(omega/s%omega - 1) <= 0.02_wp
+    dg_old = gamma - s%gamma
+    dw_old = omega - s%omega
+    if (.not.predict .and. gamma /= s%gamma .and. s%gamma > 0 .and. allocated(s%G)) then
       s%G(2:H) = s%G(2:H)*(gamma/s%gamma)
     end if
+    s%dx_valid = .false.
     s%gamma = gamma
     s%omega = omega
     s%G(1) = cmplx(gamma, 0.0_wp, wp)
@@ -177,7 +215,9 @@ contains
       end if
     end do
     allocate(x(n), R(n), xt(n), Rt(n), J(n, n), dx(n), ipiv(n), dRw(n))
+    lu_ok = .false.
     call pack_x(s, x)
+    if (predict) x = x + s%dx_dg*dg_old + s%dx_dw*dw_old
     ! a warm start that leads Newton astray (e.g. across a change of the contact topology) is
     ! dropped for a cold one (all other harmonics 0), which is then the answer
     do attempt = 1, 2
@@ -204,24 +244,66 @@ contains
     end if
     s%P = (gamma + s%r(1)%gg*s%M(1))/s%r(1)%gE
     ! dGamma/domega = -J^-1 dR/domega, dR_h/domega = h H_gg'(h omega) M_h
-    call build_J(J)
+    if (.not.factorize()) then
+      call fail("the layer's Jacobian is singular")
+      return
+    end if
     dRw = 0
     do h1 = 2, H
       dRw(2*h1-2) = real(h1*s%r(h1)%dgg*s%M(h1), wp)
       dRw(2*h1-1) = aimag(h1*s%r(h1)%dgg*s%M(h1))
     end do
     dx = -dRw
-    if (n > 0) then
-      call dgesv(n, 1, J, n, ipiv, dx, n, info)
-      if (info /= 0) then
-        call fail("the layer's Jacobian is singular")
-        return
-      end if
-    end if
+    call dgetrs('N', n, 1, J, n, ipiv, dx, n, info)
     dM1 = cmplx(dot_product(s%JM(2, :), dx), dot_product(s%JM(3, :), dx), wp)
     dP = (s%r(1)%dgg*s%M(1) + s%r(1)%gg*dM1)/s%r(1)%gE - s%P*s%r(1)%dgE/s%r(1)%gE
     s%psi = 2*real(conjg(s%P)*dP, wp)
+    s%dx_dw = dx
+    call root_jacobian(dP, dM1)
+    if (allocated(error)) return
   contains
+    !> s%Jroot from dP/domega (Pw) and dM_1/domega (M1w) of the solved layer.
+    subroutine root_jacobian(Pw, M1w)
+      complex(wp), intent(in) :: Pw, M1w
+      type(receptances_type) :: rp
+      complex(wp) :: M1g, Pg, Pww, Pwg, z, gg2, gE2
+      real(wp) :: dxg(n), P2, a, dw
+      integer :: k
+      ! dGamma/dgamma = -J^-1 dR/dgamma (the factors of J are in J)
+      dxg(1) = real(ws%gg0, wp)*s%JM1(1)
+      do k = 2, H
+        z = s%r(k)%gg*cmplx(s%JM1(2*k), s%JM1(2*k+1), wp)
+        dxg(2*k-2) = real(z, wp)
+        dxg(2*k-1) = aimag(z)
+      end do
+      dxg = -dxg
+      call dgetrs('N', n, 1, J, n, ipiv, dxg, n, info)
+      M1g = cmplx(s%JM1(2) + dot_product(s%JM(2, :), dxg), &
+        & s%JM1(3) + dot_product(s%JM(3, :), dxg), wp)
+      s%dx_dg = dxg
+      s%dx_valid = .true.
+      ! second derivatives of the receptances at omega by a difference of the first ones
+      dw = 1.0e-6_wp*omega
+      call blade%receptances(omega + dw, rp, error, derivatives=.true.)
+      if (allocated(error)) return
+      gg2 = (rp%dgg - s%r(1)%dgg)/dw
+      gE2 = (rp%dgE - s%r(1)%dgE)/dw
+      associate(P => s%P, gg => s%r(1)%gg, dgg => s%r(1)%dgg, gE => s%r(1)%gE, &
+          & dgE => s%r(1)%dgE, M1 => s%M(1))
+        Pg = (1 + gg*M1g)/gE
+        Pww = (gg2*M1 + 2*dgg*M1w)/gE - 2*Pw*dgE/gE - P*gE2/gE
+        Pwg = dgg*M1g/gE - Pg*dgE/gE
+        P2 = abs(P)**2
+        a = real(conjg(P)*Pw, wp)
+        s%Jroot(1, 1) = gamma*real(conjg(P)*Pg, wp)/P2
+        s%Jroot(1, 2) = omega*a/P2
+        s%Jroot(2, 1) = gamma*omega*(real(conjg(Pg)*Pw + conjg(P)*Pwg, wp)/P2 &
+          & - 2*a*real(conjg(P)*Pg, wp)/P2**2)
+        s%Jroot(2, 2) = s%Jroot(1, 2) + omega**2*((abs(Pw)**2 + real(conjg(P)*Pww, wp))/P2 &
+          & - 2*a**2/P2**2)
+      end associate
+    end subroutine root_jacobian
+
     !> Newton from x; what: empty on convergence, else why it stopped (error: a failed trace).
     subroutine newton(x, what)
       real(wp), intent(inout) :: x(:)
@@ -238,13 +320,12 @@ contains
           if (allocated(error)) return
           fresh = .true.
         end if
-        call build_J(J)
-        dx = -R
-        call dgesv(n, 1, J, n, ipiv, dx, n, info)
-        if (info /= 0) then
+        if (.not.factorize()) then
           what = "the layer's Jacobian is singular"
           return
         end if
+        dx = -R
+        call dgetrs('N', n, 1, J, n, ipiv, dx, n, info)
         ! backtracking on |R|; a stale Jacobian that fails to descend is renewed first
         t = 1
         accepted = .false.
@@ -341,19 +422,43 @@ contains
       if (allocated(err)) err%message = "harmonic layer: "//err%message
     end subroutine moments
 
-    !> Forward differences of the moments about xv, whose moments s%M0, s%M hold (and hold
-    !> again on return).
+    !> dM/dGamma about xv, whose moments s%M0, s%M hold (and hold again on return): in closed
+    !> form from one trace (aft_moment_jacobian), or by forward differences (2H - 1 traces)
+    !> where the sequence of contact events changes within the perturbation.
     subroutine jacobian(xv, err)
       real(wp), intent(in) :: xv(:)
       type(error_type), allocatable, intent(out) :: err
-      real(wp) :: m_base(2*H+1), m_pert(2*H+1), xp(size(xv)), d, M0_base
-      complex(wp) :: Mc_base(H)
-      logical :: lift_base
+      real(wp) :: m_base(2*H+1), m_pert(2*H+1), xp(size(xv)), d, M0_base, JA(2*H+1, 2*H+1)
+      real(wp) :: M0_a
+      complex(wp) :: Mc_base(H), Mc_a(H)
+      logical :: lift_base, ok
       integer :: k
+      lift_base = ws%aft%lift_off
+      s%G(1) = cmplx(gamma, 0.0_wp, wp)
+      do k = 2, H
+        s%G(k) = cmplx(xv(2*k-2), xv(2*k-1), wp)
+      end do
+      call aft_moment_jacobian(ws%element, ws%aft, xv(1), s%G, aft_min_periods, &
+        & aft_max_periods, aft_loop_rtol, M0_a, Mc_a, JA, ok, err)
+      ws%traces = ws%traces + 1
+      if (allocated(err)) then
+        err%message = "harmonic layer: "//err%message
+        return
+      end if
+      ws%aft%lift_off = lift_base
+      if (ok) then
+        ! columns Gamma_0, Re/Im Gamma_2.. (Gamma_1 is fixed)
+        s%JM(:, 1) = JA(:, 1)
+        s%JM(:, 2:n) = JA(:, 4:2*H+1)
+        s%JM1 = JA(:, 2)
+        s%x_jm = xv
+        s%jm_valid = .true.
+        lu_ok = .false.
+        return
+      end if
       call pack_m(m_base)
       M0_base = s%M0
       Mc_base = s%M
-      lift_base = ws%aft%lift_off
       do k = 1, n
         xp = xv
         d = fd_step*max(gamma, abs(xv(k)))
@@ -363,6 +468,21 @@ contains
         call pack_m(m_pert)
         s%JM(:, k) = (m_pert - m_base)/d
       end do
+      ! and against Gamma_1
+      d = fd_step*gamma
+      s%G(1) = cmplx(gamma + d, 0.0_wp, wp)
+      do k = 2, H
+        s%G(k) = cmplx(xv(2*k-2), xv(2*k-1), wp)
+      end do
+      call aft_moment(ws%element, ws%aft, xv(1), s%G, 0, aft_min_periods, aft_max_periods, &
+        & aft_loop_rtol, s%M0, s%M, err)
+      ws%traces = ws%traces + 1
+      if (allocated(err)) then
+        err%message = "harmonic layer: "//err%message
+        return
+      end if
+      call pack_m(m_pert)
+      s%JM1 = (m_pert - m_base)/d
       s%M0 = M0_base
       s%M = Mc_base
       s%G(1) = cmplx(gamma, 0.0_wp, wp)
@@ -372,7 +492,18 @@ contains
       ws%aft%lift_off = lift_base
       s%x_jm = xv
       s%jm_valid = .true.
+      lu_ok = .false.
     end subroutine jacobian
+
+    !> The LU factors of J for the current s%JM in J (false: singular).
+    logical function factorize()
+      factorize = .true.
+      if (lu_ok) return
+      call build_J(J)
+      call dgetrf(n, n, J, n, ipiv, info)
+      factorize = info == 0
+      lu_ok = factorize
+    end function factorize
 
     subroutine pack_m(m)
       real(wp), intent(out) :: m(:)
@@ -642,48 +773,36 @@ contains
 
   !> The backbone root and its peak at once: Newton on (ln gamma, ln omega) for
   !> ln(|P|/F_E) = 0 and d ln|P|/d ln omega = 0 (= omega psi/(2 |P|^2)), from gamma_start,
-  !> omega_start; Jacobian by finite differences at the start, then Broyden updates. Each
-  !> iteration is one layer solve; the answer is the same root as harmonic_root (which nests a
-  !> peak search in a secant on gamma), found with a third of the layer solves. ok = .false.
+  !> omega_start, with the root Jacobian each layer solve returns (s%Jroot). Each iteration
+  !> is one layer solve; the answer is the same root as harmonic_root (which nests a peak
+  !> search in a secant on gamma), found with a fraction of the layer solves. ok = .false.
   !> when it does not converge in 30 iterations (then use harmonic_root).
   subroutine harmonic_peak_root(ws, blade, F_E, gamma_start, omega_start, omega_lo, omega_hi, &
-      & rtol, s, ok, error, J0)
+      & rtol, s, ok, error)
     type(harmonic_workspace_type), intent(inout) :: ws
     type(blade_type), intent(in) :: blade
     real(wp), intent(in) :: F_E, gamma_start, omega_start, omega_lo, omega_hi, rtol
     type(harmonic_state_type), intent(inout) :: s
     logical, intent(out) :: ok
     type(error_type), allocatable, intent(out) :: error
-    !> In: a Jacobian to start from instead of finite differences (a neighbouring root's; all
-    !> zero: none); out: the Jacobian at the root.
-    real(wp), intent(inout), optional :: J0(2, 2)
-    real(wp) :: z(2), f(2), zt(2), ft(2), J(2, 2), dz(2), det, df(2), h, fn, ftn
-    integer :: it, k
-    real(wp), parameter :: dstep = 1.0e-4_wp
+    real(wp) :: z(2), f(2), zt(2), ft(2), J(2, 2), dz(2), det, h
+    integer :: it
     ok = .false.
     z = [log(gamma_start), log(omega_start)]
     call eval(z, f, error)
     if (allocated(error)) return
-    J = 0
-    if (present(J0)) J = J0
-    if (all(J == 0)) then
-      ! finite-difference Jacobian at the start
-      do k = 1, 2
-        zt = z
-        zt(k) = z(k) + dstep
-        call eval(zt, ft, error)
-        if (allocated(error)) return
-        J(:, k) = (ft - f)/dstep
-      end do
-      call eval(z, f, error)
-      if (allocated(error)) return
-    end if
-    fn = norm2(f)
     do it = 1, 30
+      ! Newton with the root Jacobian of the layer just solved
+      J = s%Jroot
       det = J(1,1)*J(2,2) - J(1,2)*J(2,1)
       if (.not.(abs(det) > 0)) return
       dz(1) = -( J(2,2)*f(1) - J(1,2)*f(2))/det
       dz(2) = -(-J(2,1)*f(1) + J(1,1)*f(2))/det
+      ! converged when the next step would be below rtol: s holds the root's layer
+      if (maxval(abs(dz)) <= rtol) then
+        ok = .true.
+        return
+      end if
       ! steps at most 30 % in gamma and 2 % in omega, inside the band
       h = min(1.0_wp, 0.3_wp/max(abs(dz(1)), tiny(1.0_wp)), 0.02_wp/max(abs(dz(2)), tiny(1.0_wp)))
       dz = h*dz
@@ -691,19 +810,8 @@ contains
       if (exp(zt(2)) <= omega_lo .or. exp(zt(2)) >= omega_hi) return
       call eval(zt, ft, error)
       if (allocated(error)) return
-      ftn = norm2(ft)
-      ! Broyden's update of the Jacobian along the step
-      df = ft - f - matmul(J, dz)
-      J(:, 1) = J(:, 1) + df*dz(1)/dot_product(dz, dz)
-      J(:, 2) = J(:, 2) + df*dz(2)/dot_product(dz, dz)
       z = zt
       f = ft
-      fn = ftn
-      if (maxval(abs(dz)) <= rtol) then
-        ok = .true.
-        if (present(J0)) J0 = J
-        return
-      end if
     end do
   contains
     subroutine eval(zv, fv, err)

@@ -4,9 +4,11 @@
 !> is exactly the single-harmonic method (the same code path, the same numbers).
 !>
 !> Backbone: F_bb(gamma) = min_omega |P(omega; gamma)|; the roots of F_bb = F_E are located by
-!> secant steps in ln gamma from each single-harmonic root (the multi-harmonic correction is a
-!> few percent, so every root has its single-harmonic counterpart to start from). Every layer
-!> on the way is solved on its own (udmap_harmonic_layer); the previous layer only warm-starts.
+!> Newton steps in (ln gamma, ln omega) from each single-harmonic root (the multi-harmonic
+!> correction is a few percent, so every root has its single-harmonic counterpart to start
+!> from), or from the last root with as many harmonics moved by the change of the
+!> single-harmonic root; secant steps around full peak searches as the fallback. Every layer on
+!> the way is solved on its own (udmap_harmonic_layer); the previous layer only warm-starts.
 !>
 !> Automatic H: start at H = 3, raised to every harmonic h <= 6 whose h omega lies within 12 %
 !> of a bare-blade mode above mode 1; then compare with the next H of the ladder 3, 5, 7, 9,
@@ -217,8 +219,8 @@ contains
     model%harm%revision = model%damper%revision
     model%harm%fingerprint = fp
     ! a new damper: no warm start from the old one's roots
-    model%harm%last = harmonic_state_type()
-    model%harm%last_F = 0
+    if (allocated(model%harm%rung)) deallocate(model%harm%rung)
+    allocate(model%harm%rung(HARMONICS_MAX))
   end subroutine ensure_element
 
   !> The multi-harmonic counterpart of the single-harmonic point p1: every root refined, the
@@ -235,6 +237,10 @@ contains
     logical :: jump
     real(wp), allocatable :: roots(:)
     real(wp) :: F_lim, omega1, change
+    !> Tolerance of the root searches: the rungs of the automatic H are only compared with
+    !> each other (to harmonic_tol), so they are solved to a thousandth of it, and the chosen
+    !> one is then refined to rtol_h
+    real(wp) :: tol_s
     integer :: H, j, nr, n_new
     logical :: auto
 
@@ -248,6 +254,8 @@ contains
     else
       H = model%analysis%harmonics
     end if
+    tol_s = rtol_h
+    if (auto) tol_s = max(rtol_h, 1.0e-3_wp*model%analysis%harmonic_tol)
     ! the largest root first: it gives the outputs (and, with auto, H)
     call solve_root(p1%gamma_P, omega1, H, s, error)
     if (allocated(error)) return
@@ -267,6 +275,13 @@ contains
           & rel(out%sigma_max, out_prev%sigma_max))
         if (change < model%analysis%harmonic_tol) exit
       end do
+      tol_s = rtol_h
+      if (.not.jump) then
+        s_prev = s
+        call solve_root(s_prev%gamma, s_prev%omega, H, s, error, s_prev)
+        if (allocated(error)) return
+        call harmonic_outputs(model%harm, s, model%blade%has_stress, out)
+      end if
     end if
     roots(nr) = s%gamma
     point%F_E = p1%F_E
@@ -332,7 +347,7 @@ contains
       type(harmonic_state_type), intent(inout) :: st
       type(error_type), allocatable, intent(out) :: err
       type(harmonic_state_type), intent(in), optional :: warm
-      real(wp) :: slope, Fb(2), fr(2), Jb(2, 2)
+      real(wp) :: slope, Fb(2), fr(2)
       logical :: ok
       jump = .false.
       if (present(warm)) then
@@ -343,29 +358,30 @@ contains
       call harmonic_resize(st, Hs)
       st%omega = omega0
       if (at_peak) then
-        Jb = 0
-        if (.not.present(warm) .and. .not.auto .and. nr == 1 .and. &
-          & model%harm%last%H == Hs .and. model%harm%last_F > 0) then
-          ! after a change of F_E alone: from the last root at this H and its Jacobian
-          st = model%harm%last
-          Jb = model%harm%last_J
-          call harmonic_peak_root(model%harm, model%blade, p1%F_E, st%gamma, st%omega, &
-            & model%omega_lo, model%omega_hi, rtol_h, st, ok, err, Jb)
+        if (.not.present(warm) .and. nr == 1 .and. model%harm%rung(Hs)%gamma1 > 0) then
+          ! from the last root with Hs harmonics (after a change of F_E alone, the previous
+          ! force): its layer, moved by the change of the single-harmonic root
+          associate(mem => model%harm%rung(Hs))
+            st = mem%root
+            call harmonic_peak_root(model%harm, model%blade, p1%F_E, &
+              & gamma0*(mem%root%gamma/mem%gamma1), omega0*(mem%root%omega/mem%omega1), &
+              & model%omega_lo, model%omega_hi, tol_s, st, ok, err)
+          end associate
           if (allocated(err)) return
           if (ok) then
-            call remember(st, Jb)
+            call remember(st)
             return
           end if
           st = harmonic_state_type()
           call harmonic_resize(st, Hs)
           st%omega = omega0
-          Jb = 0
         end if
+        ! (the next rung of the automatic H starts from the last rung's root, in warm)
         call harmonic_peak_root(model%harm, model%blade, p1%F_E, gamma0, omega0, &
-          & model%omega_lo, model%omega_hi, rtol_h, st, ok, err, Jb)
+          & model%omega_lo, model%omega_hi, tol_s, st, ok, err)
         if (allocated(err)) return
         if (ok) then
-          if (.not.auto .and. nr == 1) call remember(st, Jb)
+          if (nr == 1) call remember(st)
           return
         end if
         ! fallback: a secant on gamma around full peak searches, started with the
@@ -376,18 +392,17 @@ contains
         call harmonic_root(model%harm, model%blade, p1%F_E, gamma0, slope, model%omega_lo, &
           & model%omega_hi, rtol_h, st, err, jump, s_below)
       else
-        call harmonic_force_root(model%harm, model%blade, p1%F_E, gamma0, omega0, rtol_h, st, &
+        call harmonic_force_root(model%harm, model%blade, p1%F_E, gamma0, omega0, tol_s, st, &
           & err)
       end if
     end subroutine solve_root
 
-    !> Keeps a root and its Jacobian for the next force (fixed H only).
-    subroutine remember(st, Jr)
+    !> Keeps a root for the next root with as many harmonics.
+    subroutine remember(st)
       type(harmonic_state_type), intent(in) :: st
-      real(wp), intent(in) :: Jr(2, 2)
-      model%harm%last = st
-      model%harm%last_F = p1%F_E
-      model%harm%last_J = Jr
+      model%harm%rung(st%H)%root = st
+      model%harm%rung(st%H)%gamma1 = p1%gamma_P
+      model%harm%rung(st%H)%omega1 = omega1
     end subroutine remember
   end subroutine multi_point
 
