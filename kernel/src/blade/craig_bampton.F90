@@ -31,6 +31,14 @@ module udmap_craig_bampton
       real(wp), intent(in) :: alpha, beta, a(lda, *), b(ldb, *)
       real(wp), intent(inout) :: c(ldc, *)
     end subroutine dgemm
+    !> BLAS matrix-vector product.
+    subroutine dgemv(trans, m, n, alpha, a, lda, x, incx, beta, y, incy)
+      import :: wp
+      character(len=1), intent(in) :: trans
+      integer, intent(in) :: m, n, lda, incx, incy
+      real(wp), intent(in) :: alpha, beta, a(lda, *), x(*)
+      real(wp), intent(inout) :: y(*)
+    end subroutine dgemv
   end interface
 
   !> The reduced model and its checks.
@@ -320,7 +328,7 @@ contains
       type(error_type), allocatable, intent(out) :: error
       real(wp), allocatable :: blk(:, :), keep(:, :)
       real(wp) :: before, after
-      integer :: p, j, i, nk, pass
+      integer :: p, j, nk, pass
       allocate(x(ni, 0), blk(ni, n_boundary), y(ni))
       do j = 1, n_boundary
         call sym_matvec(mii, psi(:, j), y)
@@ -329,22 +337,18 @@ contains
       do p = 1, n_residual
         call factor_solve(fac, blk, error)
         if (allocated(error)) return
-        ! M_II-orthonormalise against the modes and the earlier vectors (twice, Gram-Schmidt)
+        ! M_II-orthonormalise against the modes and the earlier vectors: classical Gram-Schmidt
+        ! twice ("twice is enough"), one product with M_II per pass
         allocate(keep(ni, 0))
-        do j = 1, n_boundary
+        do j = 1, size(blk, 2)
           call sym_matvec(mii, blk(:, j), y)
           before = sqrt(max(dot_product(blk(:, j), y), 0.0_wp))
           if (before == 0) cycle
           do pass = 1, 2
-            do i = 1, nev
-              blk(:, j) = blk(:, j) - phi(:, i)*dot_product(phi(:, i), matvec(blk(:, j)))
-            end do
-            do i = 1, size(x, 2)
-              blk(:, j) = blk(:, j) - x(:, i)*dot_product(x(:, i), matvec(blk(:, j)))
-            end do
-            do i = 1, size(keep, 2)
-              blk(:, j) = blk(:, j) - keep(:, i)*dot_product(keep(:, i), matvec(blk(:, j)))
-            end do
+            if (pass == 2) call sym_matvec(mii, blk(:, j), y)
+            call project_out(phi(:, 1:nev), y, blk(:, j))
+            call project_out(x, y, blk(:, j))
+            call project_out(keep, y, blk(:, j))
           end do
           call sym_matvec(mii, blk(:, j), y)
           after = sqrt(max(dot_product(blk(:, j), y), 0.0_wp))
@@ -368,11 +372,19 @@ contains
       end if
     end subroutine residual_vectors
 
-    function matvec(u) result(mu)
-      real(wp), intent(in) :: u(:)
-      real(wp) :: mu(size(u))
-      call sym_matvec(mii, u, mu)
-    end function matvec
+    !> b = b - Q (Q^T y) with y = M_II b: removes b's M_II-components along the
+    !> M_II-orthonormal columns of Q.
+    subroutine project_out(q, y, b)
+      real(wp), intent(in) :: q(:, :), y(:)
+      real(wp), intent(inout) :: b(:)
+      real(wp), allocatable :: c(:)
+      integer :: k
+      k = size(q, 2)
+      if (k == 0) return
+      allocate(c(k))
+      call dgemv('T', ni, k, 1.0_wp, q, ni, y, 1, 0.0_wp, c, 1)
+      call dgemv('N', ni, k, -1.0_wp, q, ni, c, 1, 1.0_wp, b, 1)
+    end subroutine project_out
 
     subroutine reduced_frequencies(error)
       type(error_type), allocatable, intent(out) :: error

@@ -175,14 +175,21 @@ contains
   end subroutine factor_free
 
 #ifdef UDMAP_WITH_MUMPS
-  !> No printing (errors travel as values); automatic ordering; more pivoting workspace.
+  !> No printing (errors travel as values); PORD ordering of the plain graph; more pivoting
+  !> workspace. On the generated hexahedral blades (10^4 and 10^5 DOFs) PORD on the plain
+  !> graph (ICNTL(12) = 1) needs 2.4 to 3.6 times fewer flops than MUMPS's automatic choice
+  !> (AMF on the compressed graph of its 2x2-pivot ordering): 2.6e10 against 9.4e10 at 10^5
+  !> DOFs, with 37 instead of 70 million factor entries. The factorised matrices (K - sigma M
+  !> near the bottom of the spectrum) have few negative pivots, so the compressed ordering's
+  !> 2x2 pivots buy nothing.
   subroutine quiet(f)
     type(sparse_factor_type), intent(inout) :: f
     f%id%icntl(1) = -1
     f%id%icntl(2) = -1
     f%id%icntl(3) = -1
     f%id%icntl(4) = 0
-    f%id%icntl(7) = 7
+    f%id%icntl(7) = 4
+    f%id%icntl(12) = 1
     f%id%icntl(14) = 40
   end subroutine quiet
 
