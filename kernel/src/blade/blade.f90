@@ -37,6 +37,7 @@ module udmap_blade
   use udmap_kinds, only: wp, pi
   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
   use udmap_error, only: error_type, fatal_error, UDMAP_EINPUT, UDMAP_EPHYSICS
+  use udmap_strings, only: itoa, ftoa
   use udmap_beam, only: beam_params_type, assemble_beam, beam_kd
   use udmap_mmio, only: mtx_type, read_mtx, write_mtx, mtx_to_dense, mtx_bandwidth
   use udmap_dd, only: dot_dd
@@ -130,8 +131,6 @@ module udmap_blade
     !> Entries phi_g and phi_E of the bare first mode (mass-normalised).
     procedure :: first_mode
   end type blade_type
-
-  character(len=*), parameter :: fmt_i = '(i0)'
 
 contains
 
@@ -1096,20 +1095,4 @@ contains
     complex(wp), intent(in) :: z
     finite = ieee_is_finite(z%re) .and. ieee_is_finite(z%im)
   end function finite
-
-  pure function itoa(i) result(s)
-    integer, intent(in) :: i
-    character(len=:), allocatable :: s
-    character(len=24) :: buf
-    write(buf, fmt_i) i
-    s = trim(buf)
-  end function itoa
-
-  pure function ftoa(x) result(s)
-    real(wp), intent(in) :: x
-    character(len=:), allocatable :: s
-    character(len=32) :: buf
-    write(buf, '(g0.10)') x
-    s = trim(adjustl(buf))
-  end function ftoa
 end module udmap_blade

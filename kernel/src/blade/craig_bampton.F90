@@ -11,6 +11,7 @@
 module udmap_craig_bampton
   use udmap_kinds, only: wp, pi
   use udmap_error, only: error_type, fatal_error, UDMAP_EINPUT, UDMAP_ENUMERIC, UDMAP_EPHYSICS
+  use udmap_strings, only: itoa
   use udmap_sparse_coo, only: coo_type, sym_matvec, sym_matmul
   use udmap_sparse_factor, only: sparse_factor_type, factor_analyse, factor_numeric, &
     & factor_solve, factor_free
@@ -462,12 +463,4 @@ contains
     call system_clock(t1, rate)
     seconds = real(t1 - t0, wp)/real(rate, wp)
   end function seconds
-
-  pure function itoa(i) result(s)
-    integer, intent(in) :: i
-    character(len=:), allocatable :: s
-    character(len=16) :: buf
-    write(buf, '(i0)') i
-    s = trim(buf)
-  end function itoa
 end module udmap_craig_bampton

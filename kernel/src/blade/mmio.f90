@@ -6,6 +6,7 @@ module udmap_mmio
   use udmap_kinds, only: wp
   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
   use udmap_error, only: error_type, fatal_error, UDMAP_EINPUT
+  use udmap_strings, only: itoa
   implicit none
   private
   public :: mtx_type, read_mtx, write_mtx, mtx_to_dense, mtx_bandwidth
@@ -19,8 +20,6 @@ module udmap_mmio
     integer, allocatable :: row(:), col(:)
     real(wp), allocatable :: val(:)
   end type mtx_type
-
-  character(len=*), parameter :: fmt_i = '(i0)'
 
 contains
 
@@ -372,12 +371,4 @@ contains
     ok = ios == 0
     if (ok) ok = ieee_is_finite(v)
   end subroutine parse_real
-
-  pure function itoa(i) result(s)
-    integer, intent(in) :: i
-    character(len=:), allocatable :: s
-    character(len=24) :: buf
-    write(buf, fmt_i) i
-    s = trim(buf)
-  end function itoa
 end module udmap_mmio

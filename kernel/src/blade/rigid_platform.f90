@@ -10,6 +10,7 @@
 module udmap_rigid_platform
   use udmap_kinds, only: wp
   use udmap_error, only: error_type, fatal_error, UDMAP_EINPUT, UDMAP_EPHYSICS
+  use udmap_strings, only: itoa
   use udmap_sparse_coo, only: coo_type
   implicit none
   private
@@ -394,12 +395,4 @@ contains
       end do
     end subroutine sift
   end function sorted_order
-
-  pure function itoa(i) result(s)
-    integer, intent(in) :: i
-    character(len=:), allocatable :: s
-    character(len=16) :: buf
-    write(buf, '(i0)') i
-    s = trim(buf)
-  end function itoa
 end module udmap_rigid_platform
