@@ -16,6 +16,7 @@
 !>   advanced from sample to sample and a discrete Fourier transform (error O(1/N^2)).
 module udmap_aft
   use udmap_kinds, only: wp, pi
+  use udmap_sorting, only: sort_ascending
   use udmap_error, only: error_type, fatal_error, UDMAP_EINPUT
   use udmap_hysteretic, only: hysteretic_element_type, event_list_type
   implicit none
@@ -206,7 +207,7 @@ contains
       roots(1) = ts(maxloc(waveform_grid(G, ts(0:ns-1)), 1) - 1)
       roots(2) = ts(minloc(waveform_grid(G, ts(0:ns-1)), 1) - 1)
     end if
-    call sort(roots(1:n))
+    call sort_ascending(roots(1:n))
     ! start at the global maximum
     imax = 1
     best = -huge(1.0_wp)
@@ -239,21 +240,6 @@ contains
     end function waveform_grid
   end subroutine waveform_extrema
 
-  pure subroutine sort(x)
-    real(wp), intent(inout) :: x(:)
-    integer :: i, j
-    real(wp) :: t
-    do i = 2, size(x)
-      t = x(i)
-      j = i - 1
-      do while (j >= 1)
-        if (x(j) <= t) exit
-        x(j+1) = x(j)
-        j = j - 1
-      end do
-      x(j+1) = t
-    end do
-  end subroutine sort
 
   !> The Fourier coefficients of the steady damper moment for gamma(tau) with coefficients
   !> G0, G(1:H): M0 (static) and M(1:H). samples = 0: exact event-driven integration;

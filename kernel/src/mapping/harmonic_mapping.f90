@@ -18,6 +18,7 @@
 !> larger H is reported.
 module udmap_harmonic_mapping
   use udmap_kinds, only: wp, pi
+  use udmap_sorting, only: sort_ascending
   use udmap_error, only: error_type, fatal_error, UDMAP_EINPUT
   use udmap_damper, only: DAMPER_ASYMMETRIC, DAMPER_JENKINS
   use udmap_hysteretic, only: jenkins_element_type, new_jenkins_element
@@ -322,7 +323,7 @@ contains
       roots(j) = s%gamma
     end do
     ! roots ascending, without duplicates (two starts may reach the same root)
-    call sort(roots)
+    call sort_ascending(roots)
     n_new = 0
     do j = 1, nr
       if (n_new > 0) then
@@ -405,20 +406,4 @@ contains
       model%harm%rung(st%H)%omega1 = omega1
     end subroutine remember
   end subroutine multi_point
-
-  pure subroutine sort(x)
-    real(wp), intent(inout) :: x(:)
-    integer :: i, j
-    real(wp) :: t
-    do i = 2, size(x)
-      t = x(i)
-      j = i - 1
-      do while (j >= 1)
-        if (x(j) <= t) exit
-        x(j+1) = x(j)
-        j = j - 1
-      end do
-      x(j+1) = t
-    end do
-  end subroutine sort
 end module udmap_harmonic_mapping
