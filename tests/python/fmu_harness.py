@@ -317,6 +317,32 @@ def step_table(segments, duration: float):
     return np.array(rows, dtype=dtype), t
 
 
+def write_matrices_table_case(d: Path) -> Path:
+    """Blade A as a matrices blade (its Matrix Market export with the stress rows) with blade A's
+    damper tabulated as a measured table, written to d: the case FMU tests' case."""
+    import numpy as np
+
+    from udmap.case import build_blade, build_damper, load_case
+    case = load_case(CASE)
+    build_blade(case).export(d)
+    damper = build_damper(case)
+    gammas = np.geomspace(1e-6, 5e-3, 60)
+    k = damper.stiffness(gammas)
+    with open(d / "k.csv", "w") as f:
+        f.write("gamma,k_re,k_im\n")
+        for row in zip(gammas, k.real, k.imag):
+            f.write(",".join(repr(float(x)) for x in row) + "\n")
+    data = {"blade": {"kind": "matrices", "M": "M.mtx", "K": "K.mtx", "stress_K": "stress_K.mtx",
+                      "stress_M": "stress_M.mtx", "gamma_dof": 16, "exc_dof": 39,
+                      "zeta": 0.002},
+            "damper": {"kind": "table", "file": "k.csv",
+                       "delta_M": damper.M_max - damper.M_min},
+            "analysis": {"f_min": 150.0, "f_max": 230.0}}
+    path = d / "matrices_table.json"
+    path.write_text(json.dumps(data))
+    return path
+
+
 def case_with(tmp_path: Path, name: str = "case", **damper) -> Path:
     """blade_a.json with some damper fields replaced, written to tmp_path."""
     data = json.loads(CASE.read_text())

@@ -18,7 +18,7 @@ import pytest
 from fmpy import read_model_description, simulate_fmu
 from fmpy.validation import validate_fmu
 
-from fmu_harness import CASE, FMUS, ROOT, cli, token
+from fmu_harness import CASE, FMUS, ROOT, cli, token, write_matrices_table_case
 
 REAL = ["gamma_P", "sigma_a", "f_res", "u_E", "k_re", "k_im"]
 
@@ -31,27 +31,7 @@ def udmap(*args):
 
 @pytest.fixture(scope="module")
 def matrices_table_case(tmp_path_factory):
-    from udmap.case import build_blade, build_damper, load_case
-    d = tmp_path_factory.mktemp("case")
-    case = load_case(CASE)
-    build_blade(case).export(d)
-    damper = build_damper(case)
-    gammas = np.geomspace(1e-6, 5e-3, 60)
-    k = damper.stiffness(gammas)
-    k_re, k_im = k.real, k.imag
-    with open(d / "k.csv", "w") as f:
-        f.write("gamma,k_re,k_im\n")
-        for row in zip(gammas, k_re, k_im):
-            f.write(",".join(repr(float(x)) for x in row) + "\n")
-    data = {"blade": {"kind": "matrices", "M": "M.mtx", "K": "K.mtx", "stress_K": "stress_K.mtx",
-                      "stress_M": "stress_M.mtx", "gamma_dof": 16, "exc_dof": 39,
-                      "zeta": 0.002},
-            "damper": {"kind": "table", "file": "k.csv",
-                       "delta_M": damper.M_max - damper.M_min},
-            "analysis": {"f_min": 150.0, "f_max": 230.0}}
-    path = d / "matrices_table.json"
-    path.write_text(json.dumps(data))
-    return path
+    return write_matrices_table_case(tmp_path_factory.mktemp("case"))
 
 
 @pytest.fixture(scope="module")

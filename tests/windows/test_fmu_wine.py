@@ -255,30 +255,11 @@ def test_wine_gives_the_linux_outputs(version, interface, tmp_path):
 
 @pytest.fixture(scope="module")
 def case_file(tmp_path_factory):
-    """Blade A as a matrices blade (its Matrix Market export with the stress rows) with blade
-    A's damper tabulated as a measured table: the case of tests/python/test_fmu_case.py."""
-    sys.path.insert(0, str(ROOT / "wrappers" / "python"))
-    import numpy as np
-    from udmap.case import build_blade, build_damper, load_case
-    d = tmp_path_factory.mktemp("case")
-    case = load_case(ROOT / "cases" / "blade_a.json")
-    build_blade(case).export(d)
-    damper = build_damper(case)
-    gammas = np.geomspace(1e-6, 5e-3, 60)
-    k = damper.stiffness(gammas)
-    with open(d / "k.csv", "w") as f:
-        f.write("gamma,k_re,k_im\n")
-        for row in zip(gammas, k.real, k.imag):
-            f.write(",".join(repr(float(x)) for x in row) + "\n")
-    data = {"blade": {"kind": "matrices", "M": "M.mtx", "K": "K.mtx", "stress_K": "stress_K.mtx",
-                      "stress_M": "stress_M.mtx", "gamma_dof": 16, "exc_dof": 39,
-                      "zeta": 0.002},
-            "damper": {"kind": "table", "file": "k.csv",
-                       "delta_M": damper.M_max - damper.M_min},
-            "analysis": {"f_min": 150.0, "f_max": 230.0}}
-    path = d / "matrices_table.json"
-    path.write_text(json.dumps(data))
-    return path
+    """The case of tests/python/test_fmu_case.py: blade A as a matrices blade with its damper
+    tabulated as a measured table."""
+    sys.path[:0] = [str(ROOT / "wrappers" / "python"), str(ROOT / "tests" / "python")]
+    from fmu_harness import write_matrices_table_case
+    return write_matrices_table_case(tmp_path_factory.mktemp("case"))
 
 
 @pytest.mark.parametrize("version", [2, 3])
