@@ -3,13 +3,16 @@
  * udmap.so like an importer, and times communication steps the way a master runs them:
  * set the changed input, fmi2DoStep / fmi3DoStep, get every output.
  *
- *   udmap-fmu-bench SO TOKEN VERSION MODE CYCLES
- *     VERSION 2 or 3; MODE F_E (F_E = 1..10 N in turn, blade A's GG peaks) or damper
- *     (mu alternates between 0.31 and 0.30, F_E = 5 N).
+ *   udmap-fmu-bench SO TOKEN VERSION MODE CYCLES [HARMONICS]
+ *     VERSION 2 or 3; MODE F_E (F_E = 1..10 N in turn, blade A's GG peaks), F_E_dense (F_E
+ *     in [1, 10] N by the golden-ratio sequence: every step a new force, never repeated) or
+ *     damper (mu alternates between 0.31 and 0.30, F_E = 5 N); HARMONICS the parameter
+ *     harmonics (default 1; 0 = auto).
  * Prints one JSON object: the median, min and max time of a step [s] and the outputs of the
  * first cycle (for the accuracy columns).
  */
 #include <dlfcn.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -107,13 +110,17 @@ static int cmp(const void *a, const void *b) {
 }
 
 int main(int argc, char **argv) {
-  if (argc != 6) {
-    fprintf(stderr, "usage: %s SO TOKEN VERSION F_E|damper CYCLES\n", argv[0]);
+  if (argc != 6 && argc != 7) {
+    fprintf(stderr, "usage: %s SO TOKEN VERSION F_E|F_E_dense|damper CYCLES [HARMONICS]\n",
+            argv[0]);
     return 2;
   }
   const char *token = argv[2];
   int version = atoi(argv[3]);
   int damper = strcmp(argv[4], "damper") == 0;
+  int dense = strcmp(argv[4], "F_E_dense") == 0;
+  int harmonics = argc == 7 ? atoi(argv[6]) : 1;
+  const unsigned vr_h = vr_harmonics;
   int cycles = atoi(argv[5]);
   Fmu f = {.version = version, .h = dlopen(argv[1], RTLD_NOW | RTLD_LOCAL)};
   if (!f.h) {
@@ -129,24 +136,29 @@ int main(int argc, char **argv) {
     LOAD(f.h, fmi2SetupExperiment);
     LOAD(f.h, fmi2EnterInitializationMode);
     LOAD(f.h, fmi2ExitInitializationMode);
+    LOAD(f.h, fmi2SetInteger);
     fmi2CallbackFunctions cb = {logger2, NULL, NULL, NULL, NULL};
     f.inst = p_fmi2Instantiate("bench", fmi2CoSimulation, token, "", &cb, fmi2False, fmi2False);
+    const fmi2Integer hv = harmonics;
     if (!f.inst || p_fmi2SetupExperiment(f.inst, fmi2False, 0, 0, fmi2False, 0) ||
-        p_fmi2EnterInitializationMode(f.inst) || p_fmi2ExitInitializationMode(f.inst))
+        p_fmi2EnterInitializationMode(f.inst) || p_fmi2SetInteger(f.inst, &vr_h, 1, &hv) ||
+        p_fmi2ExitInitializationMode(f.inst))
       return 1;
   } else {
     LOAD(f.h, fmi3InstantiateCoSimulation);
     LOAD(f.h, fmi3EnterInitializationMode);
     LOAD(f.h, fmi3ExitInitializationMode);
+    LOAD(f.h, fmi3SetInt32);
     f.inst = p_fmi3InstantiateCoSimulation("bench", token, "", false, false, false, false, NULL,
                                            0, NULL, logger3, NULL);
+    const fmi3Int32 hv = harmonics;
     if (!f.inst || p_fmi3EnterInitializationMode(f.inst, false, 0, 0, false, 0) ||
-        p_fmi3ExitInitializationMode(f.inst))
+        p_fmi3SetInt32(f.inst, &vr_h, 1, &hv, 1) || p_fmi3ExitInitializationMode(f.inst))
       return 1;
   }
   const int per_cycle = damper ? 2 : 10;
   int n = cycles * per_cycle;
-  double *times = malloc(sizeof(double) * (size_t)n), out[NOUT], t = 0;
+  double *times = malloc(sizeof(double) * (size_t)n), out[NOUT], t = 0, total = 0;
   double table[10][NOUT];
   /* warm-up: builds the blade, damper and model once */
   if (step(&f, vr_F_E, 5.0, t, out)) return 1;
@@ -156,9 +168,11 @@ int main(int argc, char **argv) {
     ValueReference vr = damper ? vr_mu : vr_F_E;
     /* the warm-up left mu = 0.30: the first timed step already changes it */
     double value = damper ? (k ? 0.30 : 0.31) : (double)(k + 1);
+    if (dense) value = 1.0 + 9.0 * fmod(0.6180339887498949 * (i + 1), 1.0);
     double t0 = now();
     int st = step(&f, vr, value, t, out);
     times[i] = now() - t0;
+    total += times[i];
     t += 1e-3;
     if (st) {
       fprintf(stderr, "step %d: status %d\n", i, st);
@@ -167,9 +181,10 @@ int main(int argc, char **argv) {
     if (i < per_cycle) memcpy(table[k], out, sizeof out);
   }
   qsort(times, (size_t)n, sizeof(double), cmp);
-  printf("{\"version\": %d, \"mode\": \"%s\", \"steps\": %d, \"seconds_median\": %.9e, "
-         "\"seconds_min\": %.9e, \"seconds_max\": %.9e", version, argv[4], n, times[n / 2],
-         times[0], times[n - 1]);
+  printf("{\"version\": %d, \"mode\": \"%s\", \"harmonics\": %d, \"steps\": %d, "
+         "\"seconds_median\": %.9e, \"seconds_min\": %.9e, \"seconds_max\": %.9e, "
+         "\"seconds_mean\": %.9e", version, argv[4], harmonics, n, times[n / 2], times[0],
+         times[n - 1], total / n);
   printf(", \"points\": [");
   for (int k = 0; k < per_cycle; k++)
     printf("%s{\"F_E\": %g, \"mu\": %.2f, \"gamma_P\": %.17g, \"sigma_a\": %.17g, "

@@ -188,6 +188,7 @@ static Status finite_difference(ModelInstance *m, const double y0[UDMAP_NVARS],
       return Error;
     }
     if (m->config) model_set_case(m->scratch, m->config, false);
+    m->scratch->exact_points = true;
   }
   ModelInstance *w = m->scratch;
   double ratio = 0.0;
@@ -205,6 +206,17 @@ static Status finite_difference(ModelInstance *m, const double y0[UDMAP_NVARS],
   double w0 = 0.0;
   if (!move(m, w, r, -t)) c = c_forward, wt = w_forward, w0 = -1.5;
   else if (!move(m, w, r, t)) c = c_backward, wt = w_backward, w0 = 1.5;
+  /* a one-sided difference takes y0 from the scratch too: its points are all exact, while
+   * this instance's may come from the force table */
+  double y0w[UDMAP_NVARS];
+  if (w0 != 0.0) {
+    char why[600] = "a known leaves its range";
+    if (!move(m, w, r, 0.0) || real_outputs(w, y0w, why, sizeof why) != OK) {
+      snprintf(msg, n, "finite difference at the point itself: %s", why);
+      return Error;
+    }
+    y0 = y0w;
+  }
   for (unsigned vr = 0; vr < UDMAP_NVARS; vr++) d[vr] = w0 * y0[vr];
   for (int i = 0; i < 2; i++) {
     double y[UDMAP_NVARS];

@@ -350,6 +350,13 @@ static Status build_model(ModelInstance *m) {
   if (!m->config) a.eigen_method = 2;
   int stat = udmap_new_model(m->err, m->blade, m->damper, &a, &m->model);
   if (stat != UDMAP_OK) return kernel_failure(m, STAGE_MODEL, stat, "udmap_new_model");
+  /* after a change of F_E alone, points at harmonics != 1 come from the verified force table
+   * (exact points, interpolated to harmonic_tol/1000 where a panel of them holds F_E) */
+  if (!m->exact_points) {
+    stat = udmap_model_set_force_table(m->err, m->model, 1);
+    if (stat != UDMAP_OK)
+      return kernel_failure(m, STAGE_MODEL, stat, "udmap_model_set_force_table");
+  }
   model_log_category(m, LOG_EVENTS, OK, "model built over [%g, %g] Hz", a.f_min, a.f_max);
   return OK;
 }

@@ -79,6 +79,10 @@ struct ModelInstance {
   bool owns_config;
   char token[40];
 
+  /* every point solved exactly, no force table (the finite-difference scratch instance,
+   * whose differences of 1e-4 would magnify the table's 1e-6 interpolation error) */
+  bool exact_points;
+
   /* values of all variables by value reference (time at vr_time); outputs are computed */
   double value[UDMAP_NVARS];
 

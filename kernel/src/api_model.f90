@@ -331,6 +331,22 @@ contains
     stat = set_error(errh, error)
   end function udmap_model_set_harmonics
 
+  !> int udmap_model_set_force_table(error, model, on): with on /= 0, backbone points at
+  !> harmonics /= 1 come from the force table (udmap_force_table; what the FMU uses after a
+  !> change of F_E alone): interpolated to harmonic_tol/1000 where a verified panel of exact
+  !> points holds F_E, solved exactly elsewhere. Off (0) by default.
+  function udmap_model_set_force_table(errh, modelh, on) result(stat) &
+      & bind(C, name="udmap_model_set_force_table")
+    type(c_ptr), value :: errh, modelh
+    integer(c_int), value :: on
+    integer(c_int) :: stat
+    type(error_type), allocatable :: error
+    type(c_model_type), pointer :: m
+    call model_from_handle(errh, modelh, m, error)
+    if (.not.allocated(error)) m%model%force_table = on /= 0
+    stat = set_error(errh, error)
+  end function udmap_model_set_force_table
+
   !> int udmap_model_point_harmonics(error, model, i, nmax, gamma_h, sigma_h, int *nh): the
   !> harmonic content of point i (0-based) of the last udmap_model_backbone or
   !> udmap_model_response call: |Gamma_h| [rad] and |sigma_h| [Pa] for h = 0..nh - 1 (at most

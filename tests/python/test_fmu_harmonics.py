@@ -105,3 +105,28 @@ def test_jump(version):
     assert inst.set(F_E=10.0) == OK
     assert inst.get("jump") == (OK, [False])
     inst.free()
+
+
+@pytest.mark.parametrize("version", [2, 3])
+def test_F_E_steps_use_the_force_table(version):
+    # after a change of F_E alone the FMU interpolates its verified force table (PHYSICS.md 4.1):
+    # every step equals the package's exact multi-harmonic point to harmonic_tol/1000 = 1e-6
+    inst = Instance(version, "table")
+    assert inst.setup() == OK
+    assert inst.set(harmonics=3) == OK
+    case = load_case(CASE)
+    case.analysis["harmonics"] = 3
+    case.analysis["eigen_method"] = "modal"
+    exact = build_model(case)
+    forces = [1 + 9 * ((0.6180339887498949 * i) % 1.0) for i in range(1, 31)]
+    worst = 0.0
+    for F_E in forces * 2:
+        assert inst.set(F_E=F_E) == OK
+        st, got = inst.get(*REAL)
+        assert st == OK, inst.messages()
+        p = exact.backbone([F_E])[0]
+        for name, x in zip(REAL, got):
+            assert close(x, p[name], 1e-6), (F_E, name, x, p[name])
+            worst = max(worst, abs(x - p[name]) / abs(p[name]))
+    assert worst > 1e-12, "no step came from the table"
+    inst.free()

@@ -213,6 +213,12 @@ int udmap_model_limit_force_backbone(udmap_error error, udmap_model model, doubl
 int udmap_model_set_harmonics(udmap_error error, udmap_model model, int harmonics,
                               double harmonic_tol);
 
+/* With on != 0, backbone points at harmonics != 1 come from the force table (what the FMU
+ * uses after a change of F_E alone, PHYSICS.md 4.1): interpolated in ln F_E to
+ * harmonic_tol/1000 where a verified panel of exact points holds F_E, solved exactly
+ * elsewhere (the first force in a panel, and where the points jump). Off by default. */
+int udmap_model_set_force_table(udmap_error error, udmap_model model, int on);
+
 /* Harmonic content of point i (0-based) of the last udmap_model_backbone or
  * udmap_model_response call: gamma_h[h] = |Gamma_h| [rad], sigma_h[h] = |sigma_h| [Pa] for
  * h = 0..*nh - 1 (at most nmax entries written; *nh = harmonics + 1, or 2 at H = 1). */

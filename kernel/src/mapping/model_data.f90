@@ -10,6 +10,7 @@ module udmap_model_data
   use udmap_eigen_start, only: secular_type, new_secular
   use udmap_band_receptances, only: new_band_receptances
   use udmap_harmonic_layer, only: harmonic_workspace_type, HARMONICS_MAX
+  use udmap_force_table, only: force_table_type
   implicit none
   private
   public :: analysis_type, point_type, curve_type, model_type, backbone_table_type, &
@@ -179,6 +180,10 @@ module udmap_model_data
     type(receptances_type), allocatable :: sweep_r(:)
     !> Contact element and scratch of the multi-harmonic layers (PHYSICS.md 4.1).
     type(harmonic_workspace_type) :: harm
+    !> Backbone points at H /= 1 after a change of F_E alone: interpolated in a verified table
+    !> of exact points where one holds F_E (udmap_force_table), when force_table is set.
+    logical :: force_table = .false.
+    type(force_table_type) :: ftable
   end type model_type
 
 contains

@@ -64,6 +64,7 @@ _curve_size = declare("udmap_model_curve_size", [_vp, _vp, ctypes.c_int, c_int_p
 _curve_get = declare("udmap_model_curve_get", [_vp, _vp, ctypes.c_int, ctypes.c_int, c_double_p,
                                                c_double_p, c_double_p, c_int_p, c_int_p])
 _set_harmonics = declare("udmap_model_set_harmonics", [_vp, _vp, ctypes.c_int, ctypes.c_double])
+_set_force_table = declare("udmap_model_set_force_table", [_vp, _vp, ctypes.c_int])
 _point_harmonics = declare("udmap_model_point_harmonics", [_vp, _vp, ctypes.c_int, ctypes.c_int,
                                                            c_double_p, c_double_p, c_int_p])
 _blade_get_size = declare("udmap_blade_get_size", [_vp, _vp, c_int_p, c_int_p])
@@ -147,6 +148,12 @@ class Model:
         """Harmonics for the next calls (1, H up to 64, or "auto"), keeping every cache."""
         self._err.check(_set_harmonics(self._err.ptr, self._ptr, harmonics_code(harmonics),
                                        float(harmonic_tol)))
+
+    def set_force_table(self, on: bool = True) -> None:
+        """Backbone points at harmonics != 1 from the force table (as the FMU after a change of
+        F_E alone): interpolated to harmonic_tol/1000 where a verified panel of exact points
+        holds F_E, solved exactly elsewhere."""
+        self._err.check(_set_force_table(self._err.ptr, self._ptr, int(bool(on))))
 
     def limit_force(self) -> float:
         """F_lim = 2 Delta_M / (pi |phi_E/phi_g|) [N] (PHYSICS.md 5)."""
