@@ -8,6 +8,12 @@ doStep, get every output (the FMU computes on demand, so the work shows up in th
   damper tracing, no receptances, only the response point. Goal: median under 10 us.
 - fmu_step_damper: mu alternates between 0.30 and 0.31 at F_E = 5 N: the damper is traced
   again and the model rebuilt. Goal: median under 1 ms.
+- fmu_step_F_E at harmonics = 3, 9 and auto (settings gg10_H3, gg10_H9, gg10_auto: the cycle
+  of 1..10 N; dense_H3, dense_H9, dense_auto: F_E in [1, 10] N by the golden-ratio sequence,
+  a new force every step): after a change of F_E alone the FMU answers from its force table
+  (PHYSICS.md 4.1), which it builds on the way. Goal: median under 10 us; the mean includes
+  the building (exact layer solves), the accuracy columns compare the last cycle with the
+  command line's exact points at the same H.
 
 The accuracy columns compare the FMU's outputs with the command line (`udmap backbone`) for the
 same case: both solve the same equations, so they measure what the FMU adds (nothing but
@@ -36,7 +42,7 @@ DRIVER = BUILD / "fmu" / "udmap-fmu-bench"
 CASE = ROOT / "cases" / "blade_a.json"
 
 
-def run_driver(version: int, mode: str, cycles: int, tmp: Path) -> dict:
+def run_driver(version: int, mode: str, cycles: int, tmp: Path, harmonics: int = 1) -> dict:
     fmu, platform, attr = FMUS[version]
     target = tmp / f"fmi{version}"
     with zipfile.ZipFile(fmu) as zf:
@@ -44,14 +50,15 @@ def run_driver(version: int, mode: str, cycles: int, tmp: Path) -> dict:
         xml = zf.read("modelDescription.xml").decode()
     token = re.search(r'\b%s="([^"]+)"' % attr, xml).group(1)
     so = target / "binaries" / platform / "udmap.so"
-    r = subprocess.run([str(DRIVER), str(so), token, str(version), mode, str(cycles)],
+    r = subprocess.run([str(DRIVER), str(so), token, str(version), mode, str(cycles),
+                        str(harmonics)],
                        capture_output=True, text=True, timeout=1800)
     if r.returncode != 0:
         raise SystemExit(f"bench_fmu: {DRIVER.name} FMI {version} {mode} failed: {r.stderr}")
     return json.loads(r.stdout)
 
 
-def backbone(tmp: Path, mu: float, forces) -> dict:
+def backbone(tmp: Path, mu: float, forces, harmonics: int = 1) -> dict:
     """The command line's backbone for blade A with friction coefficient mu, by force."""
     data = json.loads(CASE.read_text())
     data["damper"]["mu"] = mu
@@ -59,19 +66,20 @@ def backbone(tmp: Path, mu: float, forces) -> dict:
     case.write_text(json.dumps(data))
     env = dict(os.environ, PYTHONPATH=str(ROOT / "wrappers" / "python"))
     r = subprocess.run([sys.executable, "-m", "udmap", "backbone", str(case), "--forces",
-                        ",".join(repr(float(F)) for F in forces), "--json"], cwd=ROOT, env=env,
+                        ",".join(repr(float(F)) for F in forces), "--json", "--harmonics",
+                        "auto" if harmonics == 0 else str(harmonics)], cwd=ROOT, env=env,
                        capture_output=True, text=True, check=True)
     return {p["F_E"]: p for p in json.loads(r.stdout)["points"]}
 
 
-def errors(points, tmp: Path) -> dict:
+def errors(points, tmp: Path, harmonics: int = 1) -> dict:
     """Largest relative differences of the FMU's outputs from the command line's."""
     worst = {"gamma_P": 0.0, "sigma_a": 0.0, "f_res": 0.0}
     by_mu: dict = {}
     for p in points:
         by_mu.setdefault(p["mu"], []).append(p)
     for mu, pts in by_mu.items():
-        ref = backbone(tmp, mu, [p["F_E"] for p in pts])
+        ref = backbone(tmp, mu, [p["F_E"] for p in pts], harmonics)
         for p in pts:
             q = ref[float(p["F_E"])]
             for key in worst:
@@ -95,24 +103,31 @@ def main(argv=None) -> int:
     records = []
     with tempfile.TemporaryDirectory() as tmp:
         tmp = Path(tmp)
-        for method, mode, cycles, goal in (("fmu_step_F_E", "F_E", args.cycles, 10e-6),
-                                           ("fmu_step_damper", "damper",
-                                            max(5, args.cycles // 4), 1e-3)):
-            runs = {v: run_driver(v, mode, cycles, tmp) for v in (2, 3)}
+        runs_list = [("fmu_step_F_E", "F_E", args.cycles, 10e-6, 1, "gg10"),
+                     ("fmu_step_damper", "damper", max(5, args.cycles // 4), 1e-3, 1, "gg10-mu")]
+        for H in (3, 9, 0):
+            name = "auto" if H == 0 else f"H{H}"
+            runs_list += [("fmu_step_F_E", "F_E", args.cycles, 10e-6, H, f"gg10_{name}"),
+                          ("fmu_step_F_E", "F_E_dense", args.cycles, 10e-6, H, f"dense_{name}")]
+        for method, mode, cycles, goal, H, settings in runs_list:
+            runs = {v: run_driver(v, mode, cycles, tmp, H) for v in (2, 3)}
             r2, r3 = runs[2], runs[3]
             timing = {k: r2[k] for k in ("seconds_median", "seconds_min", "seconds_max")}
             timing["repeats"] = r2["steps"]
-            rec = record("blade_a", method, "gg10" if mode == "F_E" else "gg10-mu",
-                         timing, **errors(r2["points"], tmp),
+            rec = record("blade_a", method, settings,
+                         timing, **errors(r2["points"], tmp, H),
+                         seconds_mean=r2["seconds_mean"],
                          fmi3_seconds_median=r3["seconds_median"],
                          fmi3_seconds_min=r3["seconds_min"],
                          fmi3_seconds_max=r3["seconds_max"],
                          fmi2_fmi3_identical=r2["points"] == r3["points"],
+                         harmonics="auto" if H == 0 else H,
                          goal_seconds=goal,
                          step="set input + doStep + get all 11 outputs")
             records.append(rec)
-            print(f"bench_fmu: {method}: median {r2['seconds_median'] * 1e6:.2f} us (FMI 2), "
-                  f"{r3['seconds_median'] * 1e6:.2f} us (FMI 3), goal {goal * 1e6:g} us; "
+            print(f"bench_fmu: {method} {settings}: median {r2['seconds_median'] * 1e6:.2f} us "
+                  f"(FMI 2), {r3['seconds_median'] * 1e6:.2f} us (FMI 3), mean "
+                  f"{r2['seconds_mean'] * 1e6:.1f} us, goal {goal * 1e6:g} us; "
                   f"max rel. error gamma_P {rec['error_gamma_P']:.1e}", flush=True)
     Path(args.json).parent.mkdir(parents=True, exist_ok=True)
     Path(args.json).write_text(json.dumps(records, indent=1, allow_nan=False) + "\n")

@@ -236,7 +236,8 @@ contains
     real(wp) :: gamma_lin
     integer :: gpd, j_lo
     if (model%table%revision == model%damper%revision .and. model%table%j_hi >= model%table%j_lo &
-      & .and. all(model%table%fingerprint == damper_fingerprint(model%damper))) return
+      & .and. all(model%table%fingerprint == damper_fingerprint(model%damper)) .and. &
+      & model%table%eigen_method == model%analysis%eigen_method) return
     gpd = model%analysis%grid_per_decade
     model%table%gamma_ref = model%damper%gamma_b
     if (model%damper%gamma_s > 0 .and. model%damper%gamma_s <= model%damper%gamma_b) then
@@ -253,6 +254,7 @@ contains
     model%table%n_side = 0
     model%table%revision = model%damper%revision
     model%table%fingerprint = damper_fingerprint(model%damper)
+    model%table%eigen_method = model%analysis%eigen_method
     if (j_limit(model) <= j_lo) then
       call fatal_error(error, "backbone: the damper's stiffness is defined only up to its stuck "// &
         & "amplitude (a measured table without slip rows and delta_M)", UDMAP_EINPUT)

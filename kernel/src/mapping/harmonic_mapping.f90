@@ -13,7 +13,8 @@
 !> Automatic H: start at H = 3, raised to every harmonic h <= 6 whose h omega lies within 12 %
 !> of a bare-blade mode above mode 1; then compare with the next H of the ladder 3, 5, 7, 9,
 !> 13, 17, 25, 33, 49, 64, itself raised to the near-mode harmonics up to twice the current
-!> H (so no comparison stops short of a harmonic that a bare mode amplifies), until gamma_P,
+!> H and to the next near-mode harmonic above it, whatever its order (so no comparison stops
+!> short of a harmonic that a bare mode amplifies), until gamma_P,
 !> sigma_a, gamma_max, sigma_max and f_res change by less than harmonic_tol (relative); the
 !> larger H is reported.
 module udmap_harmonic_mapping
@@ -25,7 +26,7 @@ module udmap_harmonic_mapping
   use udmap_hysteretic, only: jenkins_element_type, new_jenkins_element
   use udmap_contact_element, only: contact_element_type, new_contact_element
   use udmap_model_data, only: model_type, point_type, curve_type, limit_force_or_huge, &
-    & regime_of, damper_fingerprint
+    & regime_of, damper_fingerprint, EIGEN_AUTO, EIGEN_MODAL
   use udmap_backbone, only: backbone_single => backbone, backbone_curve
   use udmap_response, only: response_single => response
   use udmap_curves, only: curves_single => response_curves
@@ -79,28 +80,48 @@ contains
     type(point_type), allocatable, intent(out) :: points(:)
     type(error_type), allocatable, intent(out) :: error
     type(point_type), allocatable :: p1(:)
-    integer :: i
-    call backbone_single(model, F_E, p1, error)
-    if (model%analysis%harmonics == 1 .or. allocated(error)) then
-      call move_alloc(p1, points)
-      return
-    end if
-    call ensure_element(model, error)
-    if (allocated(error)) return
-    allocate(points(size(F_E)))
-    do i = 1, size(F_E)
-      if (p1(i)%unbounded) then
-        points(i) = p1(i)
-        cycle
+    integer :: i, em
+    em = starts_modal(model)
+    call run()
+    model%analysis%eigen_method = em
+  contains
+    subroutine run()
+      call backbone_single(model, F_E, p1, error)
+      if (model%analysis%harmonics == 1 .or. allocated(error)) then
+        call move_alloc(p1, points)
+        return
       end if
-      if (model%force_table .and. table_share*model%analysis%harmonic_tol >= table_tol_min) then
-        call table_point(model, p1(i), points(i), error)
-      else
-        call multi_point(model, p1(i), .true., points(i), error)
-      end if
+      call ensure_element(model, error)
       if (allocated(error)) return
-    end do
+      allocate(points(size(F_E)))
+      do i = 1, size(F_E)
+        if (p1(i)%unbounded) then
+          points(i) = p1(i)
+          cycle
+        end if
+        if (model%force_table .and. table_share*model%analysis%harmonic_tol >= table_tol_min) &
+          & then
+          call table_point(model, p1(i), points(i), error)
+        else
+          call multi_point(model, p1(i), .true., points(i), error)
+        end if
+        if (allocated(error)) return
+      end do
+    end subroutine run
   end subroutine backbone
+
+  !> The single-harmonic pass that starts the layers (H /= 1) needs only starts: with the
+  !> default eigenvalue start and no direct eigen-solve done yet, it takes the secular
+  !> equation alone (EIGEN_MODAL), skipping the model's one dense eigen-solve, most of a cold
+  !> gg10 (the layers converge to the same roots from either start). The backbone table is
+  !> tagged with its start, so a later single-harmonic call builds its own table again and
+  !> keeps its numbers bit for bit. Returns the eigen_method to restore afterwards.
+  integer function starts_modal(model) result(em)
+    type(model_type), intent(inout) :: model
+    em = model%analysis%eigen_method
+    if (model%analysis%harmonics /= 1 .and. em == EIGEN_AUTO .and. .not.model%have_direct) &
+      & model%analysis%eigen_method = EIGEN_MODAL
+  end function starts_modal
 
   !> The backbone point at p1%F_E from the force table (udmap_force_table): interpolated
   !> where a verified panel holds F_E, else solved exactly. Building a panel solves its points
@@ -263,19 +284,25 @@ contains
     type(point_type), allocatable, intent(out) :: points(:)
     type(error_type), allocatable, intent(out) :: error
     type(point_type), allocatable :: p1(:)
-    integer :: i
-    call response_single(model, f_exc, F_E, p1, error)
-    if (model%analysis%harmonics == 1 .or. allocated(error)) then
-      call move_alloc(p1, points)
-      return
-    end if
-    call ensure_element(model, error)
-    if (allocated(error)) return
-    allocate(points(size(F_E)))
-    do i = 1, size(F_E)
-      call multi_point(model, p1(i), .false., points(i), error)
+    integer :: i, em
+    em = starts_modal(model)
+    call run()
+    model%analysis%eigen_method = em
+  contains
+    subroutine run()
+      call response_single(model, f_exc, F_E, p1, error)
+      if (model%analysis%harmonics == 1 .or. allocated(error)) then
+        call move_alloc(p1, points)
+        return
+      end if
+      call ensure_element(model, error)
       if (allocated(error)) return
-    end do
+      allocate(points(size(F_E)))
+      do i = 1, size(F_E)
+        call multi_point(model, p1(i), .false., points(i), error)
+        if (allocated(error)) return
+      end do
+    end subroutine run
   end subroutine response
 
   !> The response curves (PHYSICS.md 3) for the forces F_E [N]. With H > 1 (or auto: the H
@@ -355,6 +382,26 @@ contains
     end do
   end function harmonics_near_modes
 
+  !> The smallest harmonic above H whose h omega lies near a bare mode above mode 1 (0: none
+  !> up to HARMONICS_MAX): the next rung of the automatic H reaches it, as truncating just
+  !> below an amplified harmonic can look converged (blade A at 3.97 N: H = 6 and 7 agree to
+  !> 7e-4 in gamma_P, and both are 0.8 % from H = 46 through the 14th harmonic and above).
+  integer function next_near_mode(model, omega, H) result(h_next)
+    type(model_type), intent(in) :: model
+    real(wp), intent(in) :: omega
+    integer, intent(in) :: H
+    integer :: r, k
+    h_next = 0
+    do k = H + 1, HARMONICS_MAX
+      do r = 2, size(model%blade%omega)
+        if (abs(k*omega/model%blade%omega(r) - 1) <= near_mode) then
+          h_next = k
+          return
+        end if
+      end do
+    end do
+  end function next_near_mode
+
   !> The contact element of the model's damper, rebuilt when the damper changed.
   subroutine ensure_element(model, error)
     type(model_type), intent(inout) :: model
@@ -431,7 +478,7 @@ contains
         s_prev = s
         out_prev = out
         H = max(ladder(findloc(ladder > H, .true., 1)), &
-          & harmonics_near_modes(model, s%omega, 2*H))
+          & harmonics_near_modes(model, s%omega, 2*H), next_near_mode(model, s%omega, H))
         call solve_root(s_prev%gamma, s_prev%omega, H, s, error, s_prev)
         if (allocated(error)) return
         call harmonic_outputs(model%harm, s, model%blade%has_stress, out)

@@ -141,6 +141,8 @@ module udmap_model_data
     !> if they change (a damper rebuilt in place restarts its revision count).
     integer :: revision = -huge(1)
     real(wp) :: fingerprint(5) = 0
+    !> The eigenvalue start it was built with (analysis%eigen_method then): another rebuilds it.
+    integer :: eigen_method = -1
     !> Grid anchor (the damper's gamma_b) [rad].
     real(wp) :: gamma_ref = 0
     !> Nodes present; below node(j_lo)%gamma the damper is stuck (k constant), F_bb linear.
