@@ -111,11 +111,11 @@ def gg10_table(records: list[dict], case: str) -> str:
         if s is not None:
             serr = f"{s['error_gamma_P']:.1e}, {s['error_sigma_a']:.1e}, {s['error_f_res']:.1e}"
             rows.append(f"| {name} | {_ms(b['seconds_median'])} | {err} | "
-                        f"{b['ratio_to_H1']:.0f} | {_ms(s['seconds_median'])} | {serr} | "
+                        f"{b['ratio_to_H1']:.2g} | {_ms(s['seconds_median'])} | {serr} | "
                         f"{b['speedup_vs_standard']:.1f} |")
         else:
             rows.append(f"| {name} | {_ms(b['seconds_median'])} | {err} | "
-                        f"{b['ratio_to_H1']:.0f} | | | |")
+                        f"{b['ratio_to_H1']:.2g} | | | |")
     ref = by.get(("standard_condensed", "gg10_H33"))
     if ref is not None:
         rows.append(f"\nReference: the standard method at H = 33 took {_ms(ref['seconds_median'])}.")
