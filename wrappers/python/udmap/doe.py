@@ -622,6 +622,7 @@ class _PointBuffer:
         self._one = _Point()
         self._one_F = ctypes.c_double()
         self._one_refs = (ctypes.byref(self._one_F), ctypes.byref(self._one))
+        self._jumps = (ctypes.c_int * size)()
 
     def backbone(self, model, forces):
         """The points of ``model`` for ``forces`` (a view valid until the next call)."""
@@ -637,11 +638,11 @@ class _PointBuffer:
 
     def jumps(self, model, n: int) -> list[bool]:
         """Per point of the last :meth:`backbone` call: gamma_P at a jump of k."""
-        from .model import _backbone_jumps, c_int_p
-        flags = np.zeros(max(n, 1), dtype=np.intc)
-        model._err.check(_backbone_jumps(model._err.ptr, model._ptr, n,
-                                         flags.ctypes.data_as(c_int_p)))
-        return [bool(f) for f in flags[:n]]
+        from .model import _backbone_jumps
+        status = _backbone_jumps(model._err.ptr, model._ptr, n, self._jumps)
+        if status:
+            model._err.check(status)
+        return [f != 0 for f in self._jumps[:n]]
 
     def sigma_a(self, model, forces):
         """The resonant stress amplitudes for ``forces`` (inf where unbounded)."""
