@@ -504,6 +504,7 @@ contains
     point%u_E = abs(out%U1)
     point%gamma_max = out%gamma_max
     point%sigma_max = out%sigma_max
+    point%jump = jump
     if (jump) then
       ! F_bb jumps over F_E at gamma_c (PHYSICS.md 2.5): gamma_P = gamma_c, the other outputs
       ! the convex combination of the layers on both sides that peaks at F_E (in ln F)
