@@ -12,7 +12,7 @@ module udmap_api_model
   use udmap_damper, only: damper_type
   use udmap_model, only: model_type, analysis_type, point_type, curve_type, new_model, &
     & set_damper, limit_force, backbone_curve, backbone, response, response_curves, &
-    & limit_force_backbone, set_harmonics
+    & limit_force_backbone, set_harmonics, admissible_force
   implicit none
   private
   public :: c_analysis_type, c_point_type, c_model_type
@@ -154,6 +154,29 @@ contains
     integer(c_int) :: stat
     stat = model_limit(errh, modelh, F, backbone_level=.true.)
   end function udmap_model_limit_force_backbone
+
+  !> int udmap_model_admissible_force(error, model, F_lim, sigma_all, rtol, double *F_adm):
+  !> the largest F_E <= F_lim/2 whose resonant stress (sigma_a; sigma_max with more than one
+  !> harmonic) is at most sigma_all [Pa], refined to rtol (udmap_admissible); F_lim [N] as the
+  !> caller takes it (the smaller of F_lim and F_lim_backbone for the DOE).
+  function udmap_model_admissible_force(errh, modelh, F_lim, sigma_all, rtol, F_adm) &
+      & result(stat) bind(C, name="udmap_model_admissible_force")
+    type(c_ptr), value :: errh, modelh
+    real(c_double), value :: F_lim, sigma_all, rtol
+    real(c_double), intent(out) :: F_adm
+    integer(c_int) :: stat
+    type(error_type), allocatable :: error
+    type(c_model_type), pointer :: m
+    real(wp) :: value
+    F_adm = 0
+    call model_from_handle(errh, modelh, m, error)
+    if (.not.allocated(error)) then
+      call admissible_force(m%model, real(F_lim, wp), real(sigma_all, wp), real(rtol, wp), &
+        & value, error)
+      if (.not.allocated(error)) F_adm = value
+    end if
+    stat = set_error(errh, error)
+  end function udmap_model_admissible_force
 
   !> F_lim or, backbone_level, F_lim_backbone (computed after F_lim); the status.
   function model_limit(errh, modelh, F, backbone_level) result(stat)

@@ -34,7 +34,7 @@ module udmap
     & new_jenkins_damper, new_table_damper
   use udmap_model, only: analysis_type, point_type, curve_type, model_type, new_model, &
     & limit_force, backbone_curve, backbone, response, response_curves, set_harmonics, &
-    & REGIME_STUCK, REGIME_PARTIAL_SLIP, REGIME_FULL_SLIP, REGIME_LIMIT, &
+    & admissible_force, REGIME_STUCK, REGIME_PARTIAL_SLIP, REGIME_FULL_SLIP, REGIME_LIMIT, &
     & BRANCH_LOWER, BRANCH_UPPER, BRANCH_TURNING
   use udmap_api_legacy, only: udmap_version_numbers, udmap_table_arrays, &
     & udmap_backbone_arrays, udmap_response_arrays, udmap_curve_arrays
@@ -51,7 +51,7 @@ module udmap
     & new_table_damper, stiffness_table
   ! mapping (PHYSICS.md 3-5)
   public :: analysis_type, point_type, curve_type, model_type, new_model, limit_force, &
-    & backbone_curve, backbone, response, response_curves, set_harmonics
+    & backbone_curve, backbone, response, response_curves, set_harmonics, admissible_force
   public :: REGIME_STUCK, REGIME_PARTIAL_SLIP, REGIME_FULL_SLIP, REGIME_LIMIT
   public :: BRANCH_LOWER, BRANCH_UPPER, BRANCH_TURNING
   ! plain arrays (kernel/src/api_legacy.f90)

@@ -207,6 +207,12 @@ int udmap_model_limit_force(udmap_error error, udmap_model model, double *F_lim)
  * two. */
 int udmap_model_limit_force_backbone(udmap_error error, udmap_model model, double *F_lim_backbone);
 
+/* F_adm of a design [N]: the largest F_E <= F_lim/2 whose resonant stress (sigma_a; sigma_max
+ * with harmonics != 1) is at most sigma_all [Pa], refined to rtol; F_lim [N] as the caller
+ * takes it (the DOE passes the smaller of F_lim and F_lim_backbone). Stress rows needed. */
+int udmap_model_admissible_force(udmap_error error, udmap_model model, double F_lim,
+                                 double sigma_all, double rtol, double *F_adm);
+
 /* Harmonics for the next backbone, response and curves calls (as udmap_analysis.harmonics and
  * harmonic_tol), keeping every cache of the model (the bare blade, the single-harmonic backbone
  * table, the contact element of the layers). */

@@ -10,6 +10,7 @@
 !>   call backbone(model, F_E, points, error)
 !>   call response(model, f_exc, F_E, points, error)
 !>   call response_curves(model, F_E, layers, curves, error)
+!>   call admissible_force(model, F_lim, sigma_all, rtol, F_adm, error)  ! a design's F_adm
 !>
 !> analysis%harmonics = 1 (default) is the paper's single-harmonic method; H > 1 or 0 (auto)
 !> takes the multi-harmonic layers of PHYSICS.md 4.1 (udmap_harmonic_mapping) in backbone,
@@ -21,10 +22,11 @@ module udmap_model
   use udmap_backbone, only: backbone_curve
   use udmap_harmonic_mapping, only: backbone, response, response_curves, harmonics_near_modes, &
     & set_harmonics
+  use udmap_admissible, only: admissible_force
   implicit none
   private
   public :: analysis_type, point_type, curve_type, model_type
-  public :: limit_force_backbone
+  public :: limit_force_backbone, admissible_force
   public :: new_model, set_damper, limit_force, backbone_curve, backbone, response, &
     & response_curves, harmonics_near_modes, set_harmonics
   public :: EIGEN_AUTO, EIGEN_DIRECT, EIGEN_MODAL

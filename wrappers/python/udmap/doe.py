@@ -322,94 +322,22 @@ def design_values(params: Sequence[Parameter], unit) -> DesignValues:
 
 # ------------------------------------------------------------------------------- one design
 
-#: The forces at which F_adm first samples the resonant stress: ADM_GRID forces spaced
-#: geometrically from 10^-ADM_DECADES F_lim/2 to F_lim/2 (one kernel call for all of them).
+#: The forces at which the kernel's F_adm first samples the resonant stress: ADM_GRID forces
+#: spaced geometrically from 10^-ADM_DECADES F_lim/2 to F_lim/2, and below the smallest
+#: sample the force (relative to it) where small forces are checked (ADM_TINY); the kernel's
+#: n_grid, grid_decades and tiny_ratio (kernel/src/mapping/admissible.f90, which documents how
+#: F_adm is found).
 ADM_GRID = 16
 ADM_DECADES = 3.0
-#: Below the smallest sample, the force (relative to it) at which F_adm checks that small
-#: forces are admissible at all.
 ADM_TINY = 1e-6
-# Stands in for an unbounded stress (zeta = 0 at or above the backbone's asymptote) inside the
-# root finder, which needs finite values.
-_HUGE_STRESS = 1e300
 
 
 def admissible_grid(F_half: float, n: int = ADM_GRID, decades: float = ADM_DECADES):
     """The forces ``F_half 10^(-decades (n-1-i)/(n-1))``, ``i = 0..n-1`` (the last one is
     ``F_half`` exactly)."""
-    key = (n, decades)
-    unit = _UNIT_GRIDS.get(key)
-    if unit is None:
-        unit = _UNIT_GRIDS[key] = 10.0 ** (decades * (np.arange(n, dtype=float) - (n - 1))
-                                            / (n - 1))
-    grid = F_half * unit
+    grid = F_half * 10.0 ** (decades * (np.arange(n, dtype=float) - (n - 1)) / (n - 1))
     grid[-1] = F_half
     return grid
-
-
-_UNIT_GRIDS: dict = {}
-
-
-def admissible_force(sigma_at, F_lim: float, sigma_all: float, rtol: float = 1e-12,
-                     n: int = ADM_GRID, decades: float = ADM_DECADES, sigma_one=None) -> float:
-    """``F_adm``: the largest ``F_E <= F_lim/2`` with ``sigma_a(F_E) <= sigma_all``, solved
-    continuously (INTERFACES.md "Design of experiments output"); the caller passes the smaller
-    of F_lim and F_lim_backbone (PHYSICS.md 5).
-
-    ``sigma_at(forces)`` returns the resonant stress amplitudes of the backbone for an array of
-    forces (``inf`` where the response is unbounded); ``sigma_one(F)``, if given, the same for
-    one force (a cheaper call for the refinement). Semantics:
-
-    - ``F_lim/2`` when ``sigma_a(F_lim/2) <= sigma_all``: the friction limit governs.
-    - Otherwise the highest crossing ``sigma_a = sigma_all`` below ``F_lim/2``: ``sigma_a`` is
-      sampled at :func:`admissible_grid` forces, the highest admissible sample and the next one
-      bracket the crossing, and Brent's method refines it to ``rtol``. If ``sigma_a(F_E)`` is
-      not monotone (it can dip when the damper starts to slip or lifts off), this is the upper
-      end of the admissible set and some smaller forces may fail; ``hcf_ok@F`` says which.
-      A dip narrower than the grid spacing (a factor 10^(decades/(n-1))) can go unseen.
-    - Below the smallest sample: with structural damping the stuck range's ``sigma_a`` is
-      proportional to ``F_E`` and tends to 0 with it, so small forces are admissible. When even
-      the smallest sample fails, ``sigma_a`` is evaluated ``ADM_TINY`` times lower: admissible
-      there, that force and the smallest sample bracket the crossing (for a proportional
-      ``sigma_a`` the first secant step of Brent's method is the root); still above
-      ``sigma_all``, nothing is admissible and ``F_adm = 0``. That happens without structural
-      damping (``zeta = 0``), where a stuck damper bounds nothing: the response to any small
-      force sits at the slip amplitude, with a stress that does not vanish with ``F_E``.
-      ``F_adm`` is 0 also when ``F_lim <= 0``.
-    """
-    from scipy.optimize import brentq
-    F_half = 0.5 * F_lim
-    if not math.isfinite(F_half):
-        raise PhysicsError(f"F_lim = {F_lim}: no admissible force can be defined")
-    if not F_half > 0:
-        return 0.0
-    if sigma_one is None:
-        def sigma_one(F):
-            return float(sigma_at(np.array([F]))[0])
-    grid = admissible_grid(F_half, n, decades)
-    sig = np.asarray(sigma_at(grid), dtype=float)
-    if sig[-1] <= sigma_all:
-        return F_half
-    ok = np.flatnonzero(sig <= sigma_all)
-    if ok.size:
-        k = int(ok[-1])
-        lo, hi, f_lo, f_hi = grid[k], grid[k + 1], sig[k] - sigma_all, sig[k + 1] - sigma_all
-    else:
-        lo = ADM_TINY * grid[0]
-        f_lo = min(sigma_one(lo), _HUGE_STRESS) - sigma_all
-        if f_lo > 0:
-            return 0.0
-        hi, f_hi = grid[0], sig[0] - sigma_all
-    f_hi = min(f_hi, _HUGE_STRESS)
-    known = {lo: f_lo, hi: f_hi}
-
-    def excess(F):
-        value = known.get(F)
-        if value is None:
-            value = min(sigma_one(F), _HUGE_STRESS) - sigma_all
-        return value
-
-    return float(brentq(excess, lo, hi, xtol=1e-300, rtol=max(rtol, 1e-15)))
 
 
 def _status_of(exc: BaseException) -> str:
@@ -465,7 +393,7 @@ class DesignContext:
                 self.case.damper["kind"] == "asymmetric":
             self._asym = _AsymmetricBuilder(self.case.damper, self.paths)
         self._cache: dict = {}
-        self._points = _PointBuffer(max(len(self.forces), ADM_GRID))
+        self._points = _PointBuffer(max(len(self.forces), 1))
 
     # -- shared objects, built on first use; a failure is remembered and raised per design
     def _shared(self, key, build):
@@ -552,10 +480,7 @@ class DesignContext:
                 row["jump"] = self._points.jumps(model, len(p))
             stage = "F_adm: "
             if model.has_stress:
-                pts = self._points
-                row["F_adm"] = admissible_force(
-                    lambda F: pts.sigma_a(model, F), F_lim, a["sigma_all"], rtol=a["rtol"],
-                    sigma_one=lambda F: pts.sigma_one(model, F))
+                row["F_adm"] = model.admissible_force(F_lim, a["sigma_all"], rtol=a["rtol"])
                 if row["F_adm"] == 0:
                     notes.append(f"F_adm = 0: sigma_a exceeds sigma_all down to F_E = "
                                  f"{ADM_TINY * admissible_grid(0.5 * F_lim)[0]:.3g} N")
@@ -619,9 +544,6 @@ class _PointBuffer:
         self._view = np.ctypeslib.as_array(self._buf)
         self._forces = np.zeros(size)
         self._forces_ptr = self._forces.ctypes.data_as(c_double_p)
-        self._one = _Point()
-        self._one_F = ctypes.c_double()
-        self._one_refs = (ctypes.byref(self._one_F), ctypes.byref(self._one))
         self._jumps = (ctypes.c_int * size)()
 
     def backbone(self, model, forces):
@@ -643,25 +565,6 @@ class _PointBuffer:
         if status:
             model._err.check(status)
         return [f != 0 for f in self._jumps[:n]]
-
-    def sigma_a(self, model, forces):
-        """The resonant stress amplitudes for ``forces`` (inf where unbounded)."""
-        p = self.backbone(model, forces)
-        # with multi-harmonic layers the HCF criterion takes the largest excursion sigma_max
-        stress = np.where(p["harmonics"] > 1, p["sigma_max"], p["sigma_a"])
-        return np.where(p["unbounded"] != 0, np.inf, stress)
-
-    def sigma_one(self, model, F: float) -> float:
-        """The resonant stress amplitude for one force (inf where unbounded): the same kernel
-        call as :meth:`sigma_a` with the least Python around it (the root finder's loop)."""
-        from .model import _backbone
-        self._one_F.value = F
-        status = _backbone(model._err.ptr, model._ptr, 1, *self._one_refs)
-        if status:
-            model._err.check(status)
-        if self._one.unbounded:
-            return math.inf
-        return self._one.sigma_max if self._one.harmonics > 1 else self._one.sigma_a
 
 
 _CONTEXTS: dict = {}

@@ -64,6 +64,9 @@ _curve_size = declare("udmap_model_curve_size", [_vp, _vp, ctypes.c_int, c_int_p
 _curve_get = declare("udmap_model_curve_get", [_vp, _vp, ctypes.c_int, ctypes.c_int, c_double_p,
                                                c_double_p, c_double_p, c_int_p, c_int_p])
 _set_harmonics = declare("udmap_model_set_harmonics", [_vp, _vp, ctypes.c_int, ctypes.c_double])
+_admissible = declare("udmap_model_admissible_force", [_vp, _vp, ctypes.c_double,
+                                                      ctypes.c_double, ctypes.c_double,
+                                                      c_double_p])
 _set_force_table = declare("udmap_model_set_force_table", [_vp, _vp, ctypes.c_int])
 _point_harmonics = declare("udmap_model_point_harmonics", [_vp, _vp, ctypes.c_int, ctypes.c_int,
                                                            c_double_p, c_double_p, c_int_p])
@@ -154,6 +157,16 @@ class Model:
         F_E alone): interpolated to harmonic_tol/1000 where a verified panel of exact points
         holds F_E, solved exactly elsewhere."""
         self._err.check(_set_force_table(self._err.ptr, self._ptr, int(bool(on))))
+
+    def admissible_force(self, F_lim: float, sigma_all: float, rtol: float = 1e-12) -> float:
+        """F_adm [N]: the largest F_E <= F_lim/2 whose resonant stress (sigma_a, sigma_max with
+        more than one harmonic) is at most sigma_all [Pa], refined to rtol; pass the smaller of
+        F_lim and F_lim_backbone (PHYSICS.md 5). Solved in the kernel
+        (kernel/src/mapping/admissible.f90)."""
+        out = ctypes.c_double()
+        self._err.check(_admissible(self._err.ptr, self._ptr, float(F_lim), float(sigma_all),
+                                    float(rtol), ctypes.byref(out)))
+        return out.value
 
     def limit_force(self) -> float:
         """F_lim = 2 Delta_M / (pi |phi_E/phi_g|) [N] (PHYSICS.md 5)."""
