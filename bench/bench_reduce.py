@@ -3,7 +3,7 @@
 (udmap.fe.generator) of about 10^4, 10^5 and 10^6 DOFs, reduced with blade A's band
 (f_max = 230 Hz, modes up to 3 f_max, the default residual blocks).
 
-10^6 DOFs takes about 9 minutes and 16 GB: it runs when the machine has at least
+10^6 DOFs takes 6 to 9 minutes and 16 GB: it runs when the machine has at least
 MEM_1E6_GB of available memory (else the bench says why it is left out);
 UDMAP_BENCH_1E6=0 leaves it out, UDMAP_BENCH_1E6=1 runs it regardless.
 
