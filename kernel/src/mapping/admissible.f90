@@ -6,7 +6,8 @@
 !> - F_lim/2 when the stress there is admissible: the friction limit governs.
 !> - Otherwise the highest crossing below F_lim/2: the stress is sampled at n_grid forces spaced
 !>   geometrically over grid_decades below F_lim/2 (one backbone call), the highest admissible
-!>   sample and the next one bracket the crossing, and Brent's method refines it to rtol. Where
+!>   sample and the next one bracket the crossing, and Brent's method (in ln F, ln sigma) refines
+!>   it to rtol. Where
 !>   the stress is not monotone in F_E (it can dip when the damper starts to slip or lifts off)
 !>   this is the upper end of the admissible set; a dip narrower than the grid spacing can go
 !>   unseen.
@@ -105,9 +106,9 @@ contains
     case (STAGE_BRENT)
       call brent_next(search%brent, x, more)
       if (more) then
-        forces = [x]
+        forces = [exp(x)]
       else
-        search%F_adm = search%brent%b
+        search%F_adm = exp(search%brent%b)
         search%stage = STAGE_DONE
       end if
     case default
@@ -136,7 +137,7 @@ contains
         end if
         k = findloc(sig <= s_all, .true., 1, back=.true.)
         if (k > 0) then
-          call start_brent(grid(k), sig(k) - s_all, grid(k + 1), sig(k + 1) - s_all)
+          call start_brent(grid(k), sig(k), grid(k + 1), sig(k + 1))
         else
           search%stage = STAGE_TINY
         end if
@@ -147,20 +148,26 @@ contains
           search%stage = STAGE_DONE
         else
           grid = admissible_grid(search%F_half)
-          call start_brent(tiny_ratio*grid(1), min(sigma(1), huge_stress) - s_all, grid(1), &
-            & search%sig1 - s_all)
+          call start_brent(tiny_ratio*grid(1), min(sigma(1), huge_stress), grid(1), search%sig1)
         end if
       case (STAGE_BRENT)
-        call brent_update(search%brent, min(sigma(1), huge_stress) - s_all)
+        call brent_update(search%brent, excess(sigma(1)))
       end select
     end associate
   contains
-    subroutine start_brent(lo, f_lo, hi, f_hi)
-      real(wp), intent(in) :: lo, f_lo, hi, f_hi
-      ! absolute tolerance: rtol at the bracket's lower end, so at most rtol relative
-      call brent_start(search%brent, lo, f_lo, hi, f_hi, 2*search%rtol*lo)
+    !> Brent's method on ln sigma - ln sigma_all against ln F (close to linear: the stress
+    !> grows about as a power of the force, exactly so in the stuck range), so that the
+    !> tolerance on ln F is rtol relative on F.
+    subroutine start_brent(lo, s_lo, hi, s_hi)
+      real(wp), intent(in) :: lo, s_lo, hi, s_hi
+      call brent_start(search%brent, log(lo), excess(s_lo), log(hi), excess(s_hi), 2*search%rtol)
       search%stage = STAGE_BRENT
     end subroutine start_brent
+
+    pure real(wp) function excess(stress)
+      real(wp), intent(in) :: stress
+      excess = log(max(min(stress, huge_stress), tiny(1.0_wp))) - log(search%sigma_all)
+    end function excess
   end subroutine admissible_update
 
   !> F_adm [N] of the model for the limit F_lim [N] and the allowable stress sigma_all [Pa],
