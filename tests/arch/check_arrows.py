@@ -36,7 +36,7 @@ FACE_MARK = "re-exports only"
 
 # Private attributes of objects that belong to the standard library or numpy, not to udmap.
 FOREIGN_PRIVATE = {"_asdict", "_replace", "_fields", "_make", "_field_defaults", "_exit",
-                   "_getframe", "_current_frames", "_name_", "_value_", "_missing_"}
+                   "_getframe", "_current_frames", "_name", "_handle", "_obj"}  # ctypes
 
 
 @dataclass
@@ -192,13 +192,19 @@ def _stem(rel: str) -> str:
 
 
 def _kernel_unit(rel: str, rules: Rules) -> str | None:
-    """The table row of a kernel file: its own (by path) or its folder's."""
+    """The table row of a kernel file: its own (by path), else its folder's, else that of the
+    nearest folder above it with a row (contact/aft/moment.f90 belongs to contact)."""
     if rel in rules.allowed:
         return rel
     if rel.endswith(".in") and rel[:-3] in rules.allowed:
         return rel[:-3]
-    folder = rel.rsplit("/", 1)[0] if "/" in rel else ""
-    return folder if folder in rules.allowed else None
+    parts = rel.split("/")[:-1]
+    while parts:
+        folder = "/".join(parts)
+        if folder in rules.allowed:
+            return folder
+        parts.pop()
+    return None
 
 
 def check_kernel(root: Path, rules: Rules) -> list[Violation]:
@@ -230,7 +236,8 @@ def check_kernel(root: Path, rules: Rules) -> list[Violation]:
         unit = _kernel_unit(rel, rules)
         if unit is None:
             folder = rel.rsplit("/", 1)[0] if "/" in rel else "(kernel/src itself)"
-            out.append(Violation(shown, 1, f"folder {folder} has no row in {PAGE}"))
+            out.append(Violation(shown, 1, f"folder {folder} has no row in {PAGE} (nor has "
+                                           "any folder above it)"))
         elif unit in rules.faces and has_contains:
             out.append(Violation(shown, has_contains,
                                  f"{unit} is a face (re-exports only) but holds procedures"))

@@ -20,12 +20,14 @@ KERNEL = {
     "core/kinds.f90": "module udmap_core_kinds\n  implicit none\nend module udmap_core_kinds\n",
     "core/error.f90": "module udmap_core_error\n  use udmap_core_kinds, only: wp\n"
                       "end module udmap_core_error\n",
-    "blade/io/mmio.f90": "module udmap_blade_io_mmio\n  use udmap_core_error\n"
-                         "end module udmap_blade_io_mmio\n",
-    "blade/type.f90": "module udmap_blade_type\n  use udmap_blade_io_mmio\n  use, intrinsic :: "
+    "blade/type.f90": "module udmap_blade_type\n  use udmap_core_error\n  use, intrinsic :: "
                       "iso_c_binding\nend module udmap_blade_type\n",
+    "blade/io/mmio.f90": "module udmap_blade_io_mmio\n  use udmap_blade_type\n"
+                         "end module udmap_blade_io_mmio\n",
+    "damper/tracer/core.f90": "module udmap_damper_tracer_core\n  use udmap_core_kinds\n"
+                              "end module udmap_damper_tracer_core\n",
     "damper/type.f90": "module udmap_damper_type\n  use udmap_core_kinds\n"
-                       "end module udmap_damper_type\n",
+                       "  use udmap_damper_tracer_core\nend module udmap_damper_type\n",
     "contact/element.f90": "module udmap_contact_element\n  use udmap_core_kinds\n"
                            "end module udmap_contact_element\n",
     "contact/element/jenkins.f90": "module udmap_contact_element_jenkins\n"
@@ -148,6 +150,20 @@ def test_a_wrong_use_fails_naming_file_line_and_arrow(tree):
     out = subprocess.run([sys.executable, str(HERE / "check_arrows.py"), "--root", str(tree)],
                          capture_output=True, text=True)
     assert out.returncode == 1 and "kernel/src/damper/type.f90:3: damper -> blade" in out.stdout
+
+
+def test_a_folder_without_a_row_follows_the_folder_above(tree):
+    edit(tree / "kernel/src/damper/tracer/core.f90", "  use udmap_core_kinds\n",
+         "  use udmap_core_kinds\n  use udmap_blade_type\n")
+    assert messages(tree) == ["kernel/src/damper/tracer/core.f90:3: damper -> blade (use "
+                              "udmap_blade_type): not allowed by docs/ARCHITECTURE.md"]
+
+
+def test_blade_under_its_readers(tree):
+    edit(tree / "kernel/src/blade/type.f90", "  use udmap_core_error\n",
+         "  use udmap_core_error\n  use udmap_blade_io_mmio\n")
+    assert messages(tree) == ["kernel/src/blade/type.f90:3: blade -> blade/io (use "
+                              "udmap_blade_io_mmio): not allowed by docs/ARCHITECTURE.md"]
 
 
 def test_a_data_module_above_its_algorithms_fails(tree):
