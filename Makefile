@@ -74,7 +74,7 @@ demo: build
 	$(PYTHON) -m udmap demo
 
 # make bench UDMAP_BENCH_DTI=1 also runs the time integration of bench/bench_model_error.py
-# (a few minutes more; its numbers are kept in docs/bench/model_error_dti.json for the README)
+# (a few minutes more; its numbers are kept in docs/bench/model_error_dti.json for docs/benchmarks.md)
 bench: build
 	$(PYTHON) bench/run.py
 

@@ -5,8 +5,8 @@ through the case loader, 1,000 of them through `backbone`, `response` and `table
 process and 20 through `python3 -m udmap`.
 
 Writes out/bench/fuzz_cases.json (the counts per exit status, the problems found) and the
-block between <!-- fuzz:begin --> and <!-- fuzz:end --> of the README; records for bench.json
-with the time of the run. Exits with status 1 if any run crashed, printed a non-finite number
+block between <!-- fuzz:begin --> and <!-- fuzz:end --> of docs/case-files.md; records for
+bench.json with the time of the run. Exits with status 1 if any run crashed, printed a non-finite number
 or gave an exit status 2 without naming a field.
 
     python3 bench/bench_fuzz.py --json OUT [--mutations N] [--sample S] [--seed SEED]
@@ -44,7 +44,7 @@ def readme_block(results: list[dict]) -> str:
 
 
 def write_readme(block: str) -> None:
-    path = ROOT / "README.md"
+    path = ROOT / "docs" / "case-files.md"
     text = path.read_text()
     if BEGIN in text and END in text:
         a, b = text.index(BEGIN), text.index(END) + len(END)

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Multi-harmonic layers (PHYSICS.md 4.1, README "Multi-harmonic layers"): gg10 (blade A,
+"""Multi-harmonic layers (PHYSICS.md 4.1, docs/multi-harmonic.md): gg10 (blade A,
 F_E = 1..10 N) cold with the layered backbone at H = 1, 3, 5, 9, 17 and auto against the
 standard method (condensed, harmonics 0..H, warm-started from peak to peak) timed in the same
 run, errors against the standard method at H = 33 (bench/harmonics_timing.f90); the same on a
@@ -10,9 +10,9 @@ Records: method backbone / standard_condensed, settings gg10_H<H> and gg10_auto 
 and blade_a_jenkins; extras "harmonics", "ratio_to_H1", "speedup_vs_standard"); method
 backbone, setting dti_auto_F<F> (errors against the time integration; extras the values);
 method doe, setting auto (extra "designs_per_second").
-Also rewrites the tables of the README section "Multi-harmonic layers" (between the markers
+Also rewrites the tables of docs/multi-harmonic.md (between the markers
 harmonics:begin and harmonics:end) from the measured records.
-Usage: bench_harmonics.py [--json FILE] [--from FILE (records of an earlier run: README only)]
+Usage: bench_harmonics.py [--json FILE] [--from FILE (records of an earlier run: the guide only)]
 """
 from __future__ import annotations
 
@@ -138,7 +138,7 @@ def dti_table(records: list[dict]) -> str:
 
 
 def readme(records: list[dict]) -> None:
-    path = ROOT / "README.md"
+    path = ROOT / "docs" / "multi-harmonic.md"
     text = path.read_text()
     begin, end = "<!-- harmonics:begin -->", "<!-- harmonics:end -->"
     if begin not in text or end not in text:

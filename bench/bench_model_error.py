@@ -16,7 +16,7 @@ negligible). Records: standard_condensed / standard_full "H1_vs_backbone" (error
 backbone), standard_condensed "H3", "H5", "H1" (errors against H = 33, the most accurate
 solution of the same equations), and with the time integration dti "peaks" (errors against
 H = 33 in gross slip). The full table goes to out/bench/model_error.json; a run with the time
-integration also writes docs/bench/model_error_dti.json, which the README section keeps quoting
+integration also writes docs/bench/model_error_dti.json, which docs/benchmarks.md keeps quoting
 until the next such run.
 Usage: bench_model_error.py [--json FILE] [--with-dti]
 """

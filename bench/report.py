@@ -1,11 +1,11 @@
 #!/usr/bin/env python3
-"""Plots and the README section "Speed and accuracy" from the benchmark output (run by
+"""Plots and the guide docs/benchmarks.md ("Speed and accuracy") from the benchmark output (run by
 bench/run.py after the components; also runnable alone).
 
 Reads out/bench/bench.json (and out/bench/model_error.json, docs/bench/model_error_dti.json when
 present), writes out/bench/time_vs_error.png and out/bench/scaling.png, copies them to
-docs/bench/ (tracked, so that the README shows them) and rewrites the README between the markers
-<!-- bench:begin --> and <!-- bench:end --> (the section is appended if missing).
+docs/bench/ (tracked, so that docs/benchmarks.md shows them) and rewrites docs/benchmarks.md
+between the markers <!-- bench:begin --> and <!-- bench:end --> (appended if missing).
 """
 from __future__ import annotations
 
@@ -21,7 +21,7 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parents[1]
 OUT = ROOT / "out" / "bench"
 DOCS = ROOT / "docs" / "bench"
-README = ROOT / "README.md"
+README = ROOT / "docs" / "benchmarks.md"  # the guide whose bench block is rewritten
 BEGIN, END = "<!-- bench:begin -->", "<!-- bench:end -->"
 THRESHOLD = 1e-4
 METHODS = ("backbone", "mapping", "standard_condensed", "standard_full")
@@ -360,8 +360,8 @@ def model_error_text(me: dict | None, dti: dict | None) -> list[str]:
 
 
 NOTES_GG10 = [
-    "How the standard method is made fast (kernel/src/hbm; knobs of `udmap_hbm_settings`): the "
-    "AFT is event-driven (the contact model traced exactly from event to event, no samples: "
+    "How the standard method is made fast (kernel/src/baseline; knobs of `udmap_hbm_settings`): "
+    "the AFT is event-driven (the contact model traced exactly from event to event, no samples: "
     "the classical sampled AFT, `aft_samples`, is both slower and less accurate, see the "
     "sweep), the damper Jacobian is kept while Newton contracts, and `warm_start` 1 lets each "
     "force climb from the previous force's peak instead of sweeping the band (2: the first "
@@ -439,7 +439,7 @@ def section(records: list[dict], me: dict | None, dti: dict | None, plots: dict)
     if acc:
         lines += ["Acceptance (gg10 of blade A, both at or below 1e-4):"] + acc + [""]
     if plots.get("time_vs_error"):
-        lines += ["![run time against error](docs/bench/time_vs_error.png)", ""]
+        lines += ["![run time against error](bench/time_vs_error.png)", ""]
     eq = {r["method"]: r for r in records if r["setting"] == "gg10_equal_accuracy"}
     table = next((r for r in records if r["method"] == "table" and
                   r["setting"] == "full_table"), None)
@@ -457,7 +457,7 @@ def section(records: list[dict], me: dict | None, dti: dict | None, plots: dict)
                   "parameters on (errors against a tight backbone of the same blade; "
                   "×1: measured once).", ""] + sc + [""]
     if plots.get("scaling"):
-        lines += ["![cost against model size](docs/bench/scaling.png)", ""]
+        lines += ["![cost against model size](bench/scaling.png)", ""]
     if sc:
         lines += NOTES_SCALING + [""]
     me_lines = model_error_text(me, dti)
@@ -493,7 +493,7 @@ def main() -> int:
             shutil.copyfile(OUT / f"{name}.png", DOCS / f"{name}.png")
     write_readme(section(records, load(OUT / "model_error.json"),
                          load(DOCS / "model_error_dti.json"), plots))
-    print(f"report: plots in {OUT}, README section 'Speed and accuracy' rewritten")
+    print(f"report: plots in {OUT}, docs/benchmarks.md rewritten")
     return 0
 
 

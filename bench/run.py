@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """`make bench`: runs every bench/bench_*.py, collects out/bench/bench.json, plots, and
-rewrites the README section "Speed and accuracy" from the measured records.
+rewrites docs/benchmarks.md ("Speed and accuracy") from the measured records.
 
 Each bench_*.py is called as `python3 bench/bench_X.py --json FILE` and writes a JSON array of
 records with the fields of INTERFACES.md "Benchmark output" (plus optional extras).

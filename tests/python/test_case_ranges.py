@@ -1,5 +1,5 @@
 """The case-file schema (udmap.case.SCHEMA): physical ranges with messages naming the field
-and the range, the same ranges in the README and in `doe --vary`, and the multi-harmonic
+and the range, the same ranges in docs/case-files.md and in `doe --vary`, and the multi-harmonic
 settings accepted (the FMU's ranges: test_fmu_ranges.py)."""
 import copy
 import json
@@ -150,10 +150,10 @@ def test_numbers_in_messages():
         "0", "8", "1.000e20", "NaN", "-inf"]
 
 
-def test_readme_table_is_the_schema():
-    readme = (ROOT / "README.md").read_text()
-    begin = readme.index("<!-- case-schema:begin")
-    block = readme[readme.index("\n", begin) + 1:readme.index("<!-- case-schema:end -->")]
+def test_case_files_guide_table_is_the_schema():
+    guide = (ROOT / "docs" / "case-files.md").read_text()
+    begin = guide.index("<!-- case-schema:begin")
+    block = guide[guide.index("\n", begin) + 1:guide.index("<!-- case-schema:end -->")]
     assert block == schema_markdown()
 
 
