@@ -153,7 +153,7 @@ def names_a_field(message: str, doc) -> bool:
 
 def load_outcome(doc, base_dir: Path):
     """(status, message) of the case loader: 0 valid, 2 InputError; anything else raises."""
-    from udmap._lib import InputError
+    from udmap import InputError
     from udmap.case import loads_case
     try:
         loads_case(dumps(doc), base_dir)

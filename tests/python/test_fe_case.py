@@ -138,7 +138,7 @@ def test_stress_recovery_row_equals_the_gauge(work, capsys):
     1.3: sigma = E ((u_b - u_a) . e) / |x_b - x_a|, checked entry by entry), gives the gauge's
     stress."""
     from udmap.fe import read_fe
-    from udmap.fe.case import gauge_row
+    from udmap.case.fe import gauge_row
     d, deck, case, calls = work
     fe = read_fe(case["blade"], d)
     a, b = deck.gauge

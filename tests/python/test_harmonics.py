@@ -13,7 +13,7 @@ import pytest
 
 from udmap import InputError
 from udmap import hbm
-from udmap.case import build_blade, build_damper, build_model, load_case
+from udmap.case import build_blade, build_contact, build_damper, build_model, load_case
 
 ROOT = Path(__file__).resolve().parents[2]
 CASE = ROOT / "cases" / "blade_a.json"
@@ -47,7 +47,7 @@ def test_h3_equals_standard_method(blade_a):
         points = model.backbone([2.0, 10.0])
     finally:
         model.set_harmonics(1)
-    ref = hbm.hbm(blade, case.damper, a["f_min"], a["f_max"], [2.0, 10.0], harmonics=3,
+    ref = hbm.hbm(blade, build_contact(case), a["f_min"], a["f_max"], [2.0, 10.0], harmonics=3,
                   harmonic0=1, warm_start=2, full_band=0)
     for p, r in zip(points, ref):
         assert p["harmonics"] == 3 and p["hcf_stress"] == "sigma_max"
