@@ -219,6 +219,13 @@ def _fake_rows(spec, values, start):
     return rows
 
 
+def _spec_and_values():
+    """The run of _spec, the values of its 40 Sobol designs over mu and neck_elements, and
+    those parameters."""
+    ps = doe.parse_vary(CASE, ["mu=0.1:0.6,neck_elements=2:9"])
+    return _spec(), doe.design_values(ps, doe.unit_sample("sobol", 40, 2, 0)), ps
+
+
 def _write(out, spec, values, chunk, resume=False, order=None, force=False):
     o = doe_io.Output(out, spec, values)
     first = o.open(resume=resume, overwrite=force)
@@ -246,9 +253,7 @@ def test_chunks_written_in_design_order_whatever_the_completion_order(tmp_path):
 
 
 def test_resume_after_a_cut_at_any_byte_gives_the_same_file(tmp_path):
-    spec = _spec()
-    ps = doe.parse_vary(CASE, ["mu=0.1:0.6,neck_elements=2:9"])
-    values = doe.design_values(ps, doe.unit_sample("sobol", 40, 2, 0))
+    spec, values, _ = _spec_and_values()
     full = tmp_path / "full.csv"
     _write(full, spec, values, 5)
     data = full.read_bytes()
@@ -276,9 +281,7 @@ def test_chunks_finished_out_of_order_survive_an_interruption_in_the_journal(tmp
     # then the run dies: a resumed run recovers them, computes only 0..2, 4, 7 and writes the
     # file an uninterrupted run writes
     from udmap.doe.executors import chunk_ranges
-    spec = _spec()
-    ps = doe.parse_vary(CASE, ["mu=0.1:0.6,neck_elements=2:9"])
-    values = doe.design_values(ps, doe.unit_sample("sobol", 40, 2, 0))
+    spec, values, _ = _spec_and_values()
     _write(tmp_path / "full.csv", spec, values, 5)
     out = tmp_path / "cut.csv"
     o = doe_io.Output(out, spec, values)
@@ -317,9 +320,7 @@ def test_chunk_ranges_skip_held_designs():
 
 
 def test_resume_refuses_another_run_and_overwrite_needs_force(tmp_path):
-    spec = _spec()
-    ps = doe.parse_vary(CASE, ["mu=0.1:0.6,neck_elements=2:9"])
-    values = doe.design_values(ps, doe.unit_sample("sobol", 40, 2, 0))
+    spec, values, ps = _spec_and_values()
     out = tmp_path / "r.csv"
     _write(out, spec, values, 8)
     with pytest.raises(InputError, match="exists: pass --resume"):
@@ -338,9 +339,7 @@ def test_resume_refuses_another_run_and_overwrite_needs_force(tmp_path):
 
 
 def test_parquet_copy_matches_the_csv_when_pyarrow_is_installed(tmp_path):
-    spec = _spec()
-    ps = doe.parse_vary(CASE, ["mu=0.1:0.6,neck_elements=2:9"])
-    values = doe.design_values(ps, doe.unit_sample("sobol", 40, 2, 0))
+    spec, values, _ = _spec_and_values()
     _, out = _write(tmp_path / "q.csv", spec, values, 8)
     written = out.finish()
     try:

@@ -4,23 +4,21 @@ from __future__ import annotations
 
 import pytest
 
-from fmu_harness import FMUS
-
 from udmap import InputError, locate
 
 
 @pytest.mark.parametrize("version", [2, 3])
-def test_build_directory_first(version, monkeypatch):
-    monkeypatch.setenv("UDMAP_BUILD_DIR", str(FMUS[version].parent))
-    assert locate.fmu_path(version) == FMUS[version]
+def test_build_directory_first(version, monkeypatch, fmus):
+    monkeypatch.setenv("UDMAP_BUILD_DIR", str(fmus[version].parent))
+    assert locate.fmu_path(version) == fmus[version]
 
 
 @pytest.mark.parametrize("version", [2, 3])
-def test_package_data_directory(version, monkeypatch, tmp_path):
+def test_package_data_directory(version, monkeypatch, tmp_path, fmus):
     package = tmp_path / "site-packages" / "udmap"
     (package / "fmu").mkdir(parents=True)
     target = package / "fmu" / locate.FMU_NAMES[version]
-    target.write_bytes(FMUS[version].read_bytes())
+    target.write_bytes(fmus[version].read_bytes())
     empty = tmp_path / "empty"
     empty.mkdir()
     monkeypatch.setenv("UDMAP_BUILD_DIR", str(empty))

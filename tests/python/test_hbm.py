@@ -17,9 +17,6 @@ from udmap import Blade, InputError, PhysicsError
 from udmap import hbm
 from udmap.case import contact_from_section
 
-BLADE_A = dict(E=170e9, rho=8200.0, zeta=0.002, neck_L=0.020, neck_h=0.008, neck_b=0.020,
-               platform_L=0.010, platform_m=0.021, platform_J=1.4e-6, airfoil_L=0.120,
-               airfoil_h=0.004, airfoil_b=0.030, neck_elements=8, airfoil_elements=24)
 JENKINS_OSC = {"kind": "jenkins", "kt": 0.25, "M_slip": 0.2}
 JENKINS_A = {"kind": "jenkins", "kt": 3000.0, "M_slip": 1.35}
 W = 1 / (2 * math.pi)  # rad/s -> Hz
@@ -86,39 +83,34 @@ def test_oscillator_time_integration(oscillator):
     assert d["ss_error"] < 1e-7
 
 
-@pytest.fixture(scope="module")
-def blade_a():
-    return Blade.beam(**BLADE_A)
-
-
-def test_blade_a_variants_and_curve(blade_a):
-    c = hbm.hbm(blade_a, jenkins_a(), 150, 230, [1.0, 5.0])
-    f = hbm.hbm(blade_a, jenkins_a(), 150, 230, [1.0, 5.0], variant="full")
+def test_blade_a_variants_and_curve(blade_a_beam):
+    c = hbm.hbm(blade_a_beam, jenkins_a(), 150, 230, [1.0, 5.0])
+    f = hbm.hbm(blade_a_beam, jenkins_a(), 150, 230, [1.0, 5.0], variant="full")
     for pc, pf in zip(c, f):
         for key in ("gamma_P", "f_res", "sigma_a", "u_E"):
             assert pf[key] == pytest.approx(pc[key], rel=1e-8)
         assert math.isfinite(pc["sigma_a"]) and pc["sigma_a"] > 0
-    curve = hbm.hbm_curve(blade_a, jenkins_a(), 150, 230, 5.0)
+    curve = hbm.hbm_curve(blade_a_beam, jenkins_a(), 150, 230, 5.0)
     assert curve["f"][0] == pytest.approx(150) and curve["f"][-1] == pytest.approx(230)
     assert np.all(curve["gamma_1"] <= c[1]["gamma_P"] * (1 + 1e-12))
     i = int(np.argmax(curve["gamma_1"]))
     assert curve["gamma_1"][i] == pytest.approx(c[1]["gamma_P"], rel=1e-2)
-    h3 = hbm.hbm(blade_a, jenkins_a(), 150, 230, [5.0], harmonics=3, sigma_all=80e6)[0]
+    h3 = hbm.hbm(blade_a_beam, jenkins_a(), 150, 230, [5.0], harmonics=3, sigma_all=80e6)[0]
     assert len(h3["gamma_h"]) == 3 and h3["gamma_h"][0] == h3["gamma_P"]
     assert h3["gamma_h"][1] < 1e-12 * h3["gamma_P"] < h3["gamma_h"][2]
 
 
-def test_errors(blade_a):
+def test_errors(blade_a_beam):
     with pytest.raises(InputError, match="table"):
-        hbm.hbm(blade_a, contact_from_section({"kind": "table", "file": "k.csv"}), 150, 230, [1.0])
+        hbm.hbm(blade_a_beam, contact_from_section({"kind": "table", "file": "k.csv"}), 150, 230, [1.0])
     with pytest.raises(PhysicsError, match="no resonance"):
-        hbm.hbm(blade_a, jenkins_a(), 200, 230, [1.0])
+        hbm.hbm(blade_a_beam, jenkins_a(), 200, 230, [1.0])
     with pytest.raises(InputError, match="F_E"):
-        hbm.hbm(blade_a, jenkins_a(), 150, 230, [-1.0])
+        hbm.hbm(blade_a_beam, jenkins_a(), 150, 230, [-1.0])
     with pytest.raises(InputError, match="harmonics"):
-        hbm.hbm(blade_a, jenkins_a(), 150, 230, [1.0], harmonics=65)
+        hbm.hbm(blade_a_beam, jenkins_a(), 150, 230, [1.0], harmonics=65)
     with pytest.raises(InputError, match="freq"):
-        hbm.dti(blade_a, jenkins_a(), [1.0])
+        hbm.dti(blade_a_beam, jenkins_a(), [1.0])
 
 
 def test_blade_a_asymmetric_against_backbone():

@@ -13,9 +13,6 @@ from udmap import Blade, UdmapError
 from udmap import hbm
 from udmap.case import contact_from_section, damper_from_section, load_case
 
-BLADE_A = dict(E=170e9, rho=8200.0, zeta=0.002, neck_L=0.020, neck_h=0.008, neck_b=0.020,
-               platform_L=0.010, platform_m=0.021, platform_J=1.4e-6, airfoil_L=0.120,
-               airfoil_h=0.004, airfoil_b=0.030, neck_elements=8, airfoil_elements=24)
 DAMPER = load_case().damper
 
 
@@ -35,15 +32,10 @@ def finite_or_error(fn):
     return out
 
 
-@pytest.fixture(scope="module")
-def blade_a():
-    return Blade.beam(**BLADE_A)
-
-
 @pytest.mark.parametrize("mu", [1e-4, 0.3, 2.0])
 @pytest.mark.parametrize("CF", [1e-3, 900.0, 1e5])
 @pytest.mark.parametrize("kscale", [1e-3, 1e3])
-def test_damper_parameters(blade_a, mu, CF, kscale):
+def test_damper_parameters(blade_a_beam, mu, CF, kscale):
     d = dict(DAMPER, mu=mu, CF=CF)
     for k in ("kn_flat", "kt_flat", "kn_curved", "kt_curved"):
         d[k] = DAMPER[k] * kscale
@@ -59,12 +51,12 @@ def test_damper_parameters(blade_a, mu, CF, kscale):
             continue
         assert np.all(np.isfinite(M)) and math.isfinite(M0) and gmax > 0
     # a force of the order of the slip moments over the lever arms
-    finite_or_error(lambda: hbm.hbm(blade_a, c, 150, 230, [0.01 * mu * CF]))
+    finite_or_error(lambda: hbm.hbm(blade_a_beam, c, 150, 230, [0.01 * mu * CF]))
 
 
 @pytest.mark.parametrize("zeta", [0.0, 1e-5])
-def test_limit_force(zeta):
-    blade = Blade.beam(**dict(BLADE_A, zeta=zeta))
+def test_limit_force(zeta, blade_a_params):
+    blade = Blade.beam(**dict(blade_a_params, zeta=zeta))
     F_lim = 21.677454956969921  # blade A's damper (backbone)
     for frac in (0.99, 1.0, 1.01):
         pts = finite_or_error(lambda: hbm.hbm(blade, contact_from_section(DAMPER), 150, 230,
@@ -76,9 +68,9 @@ def test_limit_force(zeta):
                                         freq=190.0, steps_per_period=64, max_periods=200))
 
 
-def test_band_without_resonance(blade_a):
+def test_band_without_resonance(blade_a_beam):
     with pytest.raises(UdmapError, match="no resonance"):
-        hbm.hbm(blade_a, contact_from_section(DAMPER), 400, 600, [1.0],
+        hbm.hbm(blade_a_beam, contact_from_section(DAMPER), 400, 600, [1.0],
                 damper=damper_from_section(DAMPER))
 
 

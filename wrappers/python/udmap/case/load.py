@@ -17,7 +17,6 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from ..errors import InputError
-from . import fe as fe_case
 from .schema import (OPTIONAL, REQUIRED, SCHEMA, SECTIONS, TABLE_GAMMA, TABLE_K, TOP_LEVEL, Field,
                      NonFinite, check_field, in_range, range_text, show_value)
 
@@ -131,6 +130,9 @@ def validate(data: dict, base_dir: Path | str = ".") -> Case:
             sections[section] = _check_section(section, raw, SCHEMA[(section, None)], extra=())
         elif section == "blade" and raw.get("kind") == "fe":
             # an FE blade has its own checks (udmap.case.fe): files, node sets, directions
+            # imported here: an fe blade needs scipy (and its reduction), a beam or matrices
+            # case does not, and every command line call loads a case
+            from . import fe as fe_case
             sections[section] = fe_case.validate_fe(raw, base_dir)
             sections[section]["kind"] = "fe"
         else:
@@ -152,6 +154,7 @@ def validate(data: dict, base_dir: Path | str = ".") -> Case:
     fe = None
     if blade["kind"] == "fe":
         # Every command works on the reduced matrices blade (reduced once, cached by content).
+        from . import fe as fe_case  # see above: scipy only for an fe blade
         blade, fe = fe_case.resolve(blade, analysis)
     return Case(blade=blade, damper=damper, analysis=analysis, name=top["name"],
                 base_dir=base_dir, fe=fe)

@@ -10,6 +10,7 @@ from __future__ import annotations
 import math
 import os
 import signal
+import threading
 import time
 from concurrent.futures import FIRST_COMPLETED, wait
 
@@ -48,8 +49,6 @@ def default_workers() -> int:
 def _init_worker(parent: int) -> None:
     """Worker process set-up: Ctrl-C is handled by the parent, which stops the pool (workers
     must not die noisily), and a worker whose parent was killed exits instead of lingering."""
-    import os
-    import threading
     signal.signal(signal.SIGINT, signal.SIG_IGN)
 
     def watch():
