@@ -65,7 +65,7 @@ test-pip: deps
 	for f in summary.json backbone.csv gg_design_diagram.png gamma_P_vs_F_E.png \
 	         f_res_vs_F_E.png response_curves.png stiffness.png; do test -s "d/$$f"; done; \
 	test "$$(v/bin/python -m udmap --version)" = "$$(v/bin/python -c 'import udmap; print(udmap.version())')"; \
-	v/bin/python -c "import udmap._lib as l, pathlib; p = pathlib.Path(l.__file__).parent; \
+	v/bin/python -c "import udmap._capi as l, pathlib; p = pathlib.Path(l.__file__).parent; \
 	  assert pathlib.Path(l.lib._name) == p / 'libudmap.so', l.lib._name; \
 	  assert l.fmu_path(2) == p / 'fmu/udmap.fmu' and l.fmu_path(3) == p / 'fmu/udmap-fmi3.fmu'"; \
 	echo "test-pip: udmap demo from a fresh venv wrote $$(ls d | wc -l) files; packaged library and FMUs used"

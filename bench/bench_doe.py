@@ -41,8 +41,7 @@ sys.path.insert(0, str(ROOT / "bench"))
 
 from timing import record  # noqa: E402
 from udmap import doe  # noqa: E402
-from udmap import damper as _damper_mod  # noqa: E402
-from udmap import model as _model_mod  # noqa: E402
+from udmap import _capi  # noqa: E402
 from udmap.case import build_model, load_case  # noqa: E402
 
 SPACES = {"gg10": ["mu=0.15:0.35", "CF=600:1200"],
@@ -51,10 +50,10 @@ FORCES = ",".join(str(f) for f in range(1, 11))
 GOAL = 2000.0
 # The C entry points a design calls (ctypes function objects, looked up by the doe module at
 # call time), timed for the kernel/Python split.
-_KERNEL_CALLS = [(_damper_mod, "_new_asym"), (_damper_mod, "_get_info"),
-                 (_damper_mod, "_delete"), (_damper_mod, "_set_CF"), (_model_mod, "_backbone"),
-                 (_model_mod, "_limit_force"), (_model_mod, "_set_damper"),
-                 (_model_mod, "_new_model"), (_model_mod, "_delete_model")]
+_KERNEL_CALLS = [(_capi, "new_damper_asymmetric"), (_capi, "damper_get_info"),
+                 (_capi, "delete_damper"), (_capi, "damper_set_CF"), (_capi, "model_backbone"),
+                 (_capi, "model_limit_force"), (_capi, "model_set_damper"),
+                 (_capi, "new_model"), (_capi, "delete_model")]
 
 
 def _cpu_seconds() -> float:

@@ -37,7 +37,7 @@ sys.path.insert(0, str(ROOT / "bench"))
 
 from timing import record  # noqa: E402
 from udmap import hbm  # noqa: E402
-from udmap.case import build_blade, build_damper, load_case  # noqa: E402
+from udmap.case import build_blade, build_contact, build_damper, load_case  # noqa: E402
 from udmap.model import Model  # noqa: E402
 
 OUT = ROOT / "out" / "bench"
@@ -98,8 +98,9 @@ def main() -> int:
 
     # H = 1 against the backbone (kernel defaults: the band swept for every force)
     for variant, method in (("condensed", "standard_condensed"), ("full", "standard_full")):
-        pts, t = timed(lambda: hbm.hbm(blade, case.damper, a["f_min"], a["f_max"], F_BACKBONE,
-                                       variant=variant, sigma_all=a["sigma_all"]), 3)
+        pts, t = timed(lambda: hbm.hbm(blade, build_contact(case), a["f_min"], a["f_max"],
+                                       F_BACKBONE, variant=variant, sigma_all=a["sigma_all"],
+                                       damper=build_damper(case)), 3)
         diffs = {}
         for p in pts:
             b = bb[p["F_E"]]
@@ -121,8 +122,9 @@ def main() -> int:
     # H = 1, 3, 5, 33 (condensed, warm starts: the same peaks as the band sweep)
     peaks, times = {}, {}
     for H in HARMONICS:
-        pts, t = timed(lambda: hbm.hbm(blade, case.damper, a["f_min"], a["f_max"], F_HARMONICS,
-                                       harmonics=H, sigma_all=a["sigma_all"], warm_start=2),
+        pts, t = timed(lambda: hbm.hbm(blade, build_contact(case), a["f_min"], a["f_max"],
+                                       F_HARMONICS, harmonics=H, sigma_all=a["sigma_all"],
+                                       warm_start=2, damper=build_damper(case)),
                        1 if H > 9 else 3)
         peaks[H] = {p["F_E"]: p for p in pts}
         times[H] = t
@@ -155,8 +157,8 @@ def main() -> int:
         dti = {}
         for F in F_HARMONICS:
             print(f"  time integration at F_E = {F:g} N ...", flush=True)
-            (p,), t = timed(lambda: hbm.dti(blade, case.damper, [F], peak=True, f_min=a["f_min"],
-                                            f_max=a["f_max"]))
+            (p,), t = timed(lambda: hbm.dti(blade, build_contact(case), [F], peak=True,
+                                            f_min=a["f_min"], f_max=a["f_max"]))
             r33, r1, r5 = ref[F], peaks[1][F], peaks[5][F]
             # the harmonic balance has no static harmonic here: compare the peak of gamma(t)
             # about its mean (the time integration has a static offset gamma_0)

@@ -16,7 +16,7 @@ from pathlib import Path
 
 from udmap.case import load_case
 from udmap.doe import run_doe
-from udmap.doe_plot import pareto_front
+from udmap.doe.plot import pareto_front
 
 ROOT = Path(__file__).resolve().parents[1]
 

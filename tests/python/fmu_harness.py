@@ -352,6 +352,18 @@ def case_with(tmp_path: Path, name: str = "case", **damper) -> Path:
     return path
 
 
+def reference(tmp_path: Path, CF, mu, f_exc, forces, name: str | None = None):
+    """The command line's answer for blade A with CF and mu (backbone when f_exc is 0, else the
+    response at f_exc): (its JSON, its points by F_E)."""
+    case = case_with(tmp_path, name or f"cf{CF}_mu{mu}", CF=CF, mu=mu)
+    arg = ",".join(repr(F) for F in forces)
+    if f_exc == 0.0:
+        data = cli("backbone", case, "--forces", arg)
+    else:
+        data = cli("response", case, "--forces", arg, "--freq", repr(f_exc))
+    return data, {p["F_E"]: p for p in data["points"]}
+
+
 # A C importer that runs N cycles of: instantiate, compute, save the state, change mu, CF, a
 # blade parameter and F_E, have a value rejected, restore the state, reset, free. It prints the
 # growth of its resident memory from cycle 20 to the end ("rss_growth_kib N").

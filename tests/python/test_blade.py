@@ -11,16 +11,13 @@ import scipy.io
 import udmap
 from udmap import Blade, InputError
 
-BLADE_A = dict(E=170e9, rho=8200.0, zeta=0.002, neck_L=0.020, neck_h=0.008, neck_b=0.020,
-               platform_L=0.010, platform_m=0.021, platform_J=1.4e-6, airfoil_L=0.120,
-               airfoil_h=0.004, airfoil_b=0.030, neck_elements=8, airfoil_elements=24)
 GAMMA, EXC = 16, 39  # 1-based DOFs of blade A
 BAND = np.array([150.0, 170.0, 185.0, 187.0, 187.119057676, 187.3, 190.0, 200.0, 215.0, 230.0])
 
 
 @pytest.fixture(scope="module")
-def blade():
-    return Blade.beam(**BLADE_A)
+def blade(blade_a_beam):
+    return blade_a_beam
 
 
 @pytest.fixture(scope="module")
@@ -192,11 +189,11 @@ def decimal_band_solve(K, M, beta, f_hz, exc, gamma, digits=40):
     return complex(float(x[gamma][0]), float(x[gamma][1]))
 
 
-def test_large_beam_against_decimal_band_solve(tmp_path):
+def test_large_beam_against_decimal_band_solve(tmp_path, blade_a_params):
     """2048 airfoil elements (4112 DOFs): a double-precision solve of this stiffness is off by
     ~0.7 %; the kernel (refined solves, series of the dropped modes) must match a 40-digit solve
     of its exported matrices."""
-    params = dict(BLADE_A, airfoil_elements=2048)
+    params = dict(blade_a_params, airfoil_elements=2048)
     big = Blade.beam(**params)
     assert big.ndof == 4112
     f1 = big.natural_frequencies(1)[0]
@@ -219,7 +216,8 @@ def test_large_beam_against_decimal_band_solve(tmp_path):
         assert abs(plain - ref) > 1e3 * abs(got - ref)
 
 
-def test_bad_beam_parameters():
+def test_bad_beam_parameters(blade_a_params):
+    BLADE_A = blade_a_params
     with pytest.raises(InputError, match=r"blade\.neck\.L must be a positive finite number"):
         Blade.beam(**dict(BLADE_A, neck_L=-0.02))
     with pytest.raises(InputError, match=r"blade\.E"):

@@ -7,7 +7,7 @@ from pathlib import Path
 
 import pytest
 
-from udmap._lib import InputError
+from udmap import InputError
 from udmap.case import DEFAULT_CASE, load_case, validate
 
 ROOT = Path(__file__).resolve().parents[2]

@@ -12,7 +12,7 @@ from pathlib import Path
 import pytest
 
 from udmap import doe
-from udmap._lib import InputError
+from udmap import InputError
 from udmap.case import (ANALYSIS_DEFAULTS, SCHEMA, Case, fmt_number, load_case,
                         schema_markdown, validate)
 

@@ -276,7 +276,7 @@ def test_example_prints_the_pareto_front_of_its_file(tmp_path):
     r = subprocess.run([sys.executable, str(ROOT / "examples" / "doe_mu_cf.py"), str(tmp_path)],
                        cwd=ROOT, env=env, capture_output=True, text=True, timeout=100)
     assert r.returncode == 0, r.stderr
-    from udmap.doe_plot import pareto_front
+    from udmap.doe.plot import pareto_front
     rows = [row for row in _rows(tmp_path / "doe_mu_cf.csv") if row["status"] == "ok"]
     assert len(rows) == 512
     front = pareto_front([float(row["CF"]) for row in rows], [float(row["F_adm"]) for row in rows])

@@ -8,9 +8,10 @@ import numpy as np
 import pytest
 from scipy.stats import qmc
 
-from udmap._lib import InputError
+from udmap import InputError
 from udmap.case import load_case, validate
-from udmap import doe, doe_io
+from udmap import doe
+from udmap.doe import io as doe_io
 
 ROOT = Path(__file__).resolve().parents[2]
 CASE = load_case(ROOT / "cases" / "blade_a.json")
@@ -218,6 +219,13 @@ def _fake_rows(spec, values, start):
     return rows
 
 
+def _spec_and_values():
+    """The run of _spec, the values of its 40 Sobol designs over mu and neck_elements, and
+    those parameters."""
+    ps = doe.parse_vary(CASE, ["mu=0.1:0.6,neck_elements=2:9"])
+    return _spec(), doe.design_values(ps, doe.unit_sample("sobol", 40, 2, 0)), ps
+
+
 def _write(out, spec, values, chunk, resume=False, order=None, force=False):
     o = doe_io.Output(out, spec, values)
     first = o.open(resume=resume, overwrite=force)
@@ -245,9 +253,7 @@ def test_chunks_written_in_design_order_whatever_the_completion_order(tmp_path):
 
 
 def test_resume_after_a_cut_at_any_byte_gives_the_same_file(tmp_path):
-    spec = _spec()
-    ps = doe.parse_vary(CASE, ["mu=0.1:0.6,neck_elements=2:9"])
-    values = doe.design_values(ps, doe.unit_sample("sobol", 40, 2, 0))
+    spec, values, _ = _spec_and_values()
     full = tmp_path / "full.csv"
     _write(full, spec, values, 5)
     data = full.read_bytes()
@@ -274,10 +280,8 @@ def test_chunks_finished_out_of_order_survive_an_interruption_in_the_journal(tmp
     # chunks 0..7 of 5 designs; 3, 5, 6 finish early (held in memory and in the journal),
     # then the run dies: a resumed run recovers them, computes only 0..2, 4, 7 and writes the
     # file an uninterrupted run writes
-    from udmap.doe_exec import chunk_ranges
-    spec = _spec()
-    ps = doe.parse_vary(CASE, ["mu=0.1:0.6,neck_elements=2:9"])
-    values = doe.design_values(ps, doe.unit_sample("sobol", 40, 2, 0))
+    from udmap.doe.executors import chunk_ranges
+    spec, values, _ = _spec_and_values()
     _write(tmp_path / "full.csv", spec, values, 5)
     out = tmp_path / "cut.csv"
     o = doe_io.Output(out, spec, values)
@@ -309,16 +313,14 @@ def test_chunks_finished_out_of_order_survive_an_interruption_in_the_journal(tmp
 
 
 def test_chunk_ranges_skip_held_designs():
-    from udmap.doe_exec import chunk_ranges
+    from udmap.doe.executors import chunk_ranges
     assert chunk_ranges(0, 10, [], 4) == [(0, 4), (4, 8), (8, 10)]
     assert chunk_ranges(3, 20, [(5, 2), (12, 8)], 4) == [(3, 5), (7, 11), (11, 12)]
     assert chunk_ranges(10, 10, [], 4) == []
 
 
 def test_resume_refuses_another_run_and_overwrite_needs_force(tmp_path):
-    spec = _spec()
-    ps = doe.parse_vary(CASE, ["mu=0.1:0.6,neck_elements=2:9"])
-    values = doe.design_values(ps, doe.unit_sample("sobol", 40, 2, 0))
+    spec, values, ps = _spec_and_values()
     out = tmp_path / "r.csv"
     _write(out, spec, values, 8)
     with pytest.raises(InputError, match="exists: pass --resume"):
@@ -337,9 +339,7 @@ def test_resume_refuses_another_run_and_overwrite_needs_force(tmp_path):
 
 
 def test_parquet_copy_matches_the_csv_when_pyarrow_is_installed(tmp_path):
-    spec = _spec()
-    ps = doe.parse_vary(CASE, ["mu=0.1:0.6,neck_elements=2:9"])
-    values = doe.design_values(ps, doe.unit_sample("sobol", 40, 2, 0))
+    spec, values, _ = _spec_and_values()
     _, out = _write(tmp_path / "q.csv", spec, values, 8)
     written = out.finish()
     try:
@@ -356,7 +356,7 @@ def test_parquet_copy_matches_the_csv_when_pyarrow_is_installed(tmp_path):
 
 
 def test_pareto_front():
-    from udmap.doe_plot import pareto_front
+    from udmap.doe.plot import pareto_front
     cf = [500, 600, 550, 700, 800, 650, 900]
     fa = [3.0, 2.0, 4.0, 4.0, 6.0, 5.0, 5.5]
     assert pareto_front(cf, fa) == [0, 2, 5, 4]

@@ -15,6 +15,16 @@ from fe_case_fixtures import FORCES, export, run, work  # noqa: F401  (fixtures)
 from fe_deck import make_deck, write_inp
 
 
+def backbones(cases, capsys) -> list[dict]:
+    """The JSON of `backbone` on each case file (asserting exit status 0)."""
+    out = []
+    for c in cases:
+        status, text, err = run(["backbone", c, "--forces", FORCES, "--json"], capsys)
+        assert status == 0, err
+        out.append(json.loads(text))
+    return out
+
+
 def test_reduce_writes_a_matrices_case(work, capsys):
     d, deck, case, calls = work
     status, out, err = run(["reduce", d / "case.json", "--out", d / "red" / "r.json"], capsys)
@@ -118,11 +128,7 @@ def test_units_mm_t_s(work, capsys):
     mcase["blade"]["platform"]["ref_point"] = [x * 1e3 for x in deck.ref_point]
     mcase["blade"]["stress"]["E"] = 2.0e5
     (sub / "case.json").write_text(json.dumps(mcase))
-    out = []
-    for c in (d / "case.json", sub / "case.json"):
-        status, text, err = run(["backbone", c, "--forces", FORCES, "--json"], capsys)
-        assert status == 0, err
-        out.append(json.loads(text))
+    out = backbones([d / "case.json", sub / "case.json"], capsys)
     assert calls == [1, 1]
     a, b = out
     # Two reductions: the fixed-interface modes of this symmetric blade come in degenerate pairs,
@@ -138,7 +144,7 @@ def test_stress_recovery_row_equals_the_gauge(work, capsys):
     1.3: sigma = E ((u_b - u_a) . e) / |x_b - x_a|, checked entry by entry), gives the gauge's
     stress."""
     from udmap.fe import read_fe
-    from udmap.fe.case import gauge_row
+    from udmap.case.fe import gauge_row
     d, deck, case, calls = work
     fe = read_fe(case["blade"], d)
     a, b = deck.gauge
@@ -158,11 +164,7 @@ def test_stress_recovery_row_equals_the_gauge(work, capsys):
     rcase = json.loads(json.dumps(case))
     rcase["blade"]["stress"] = {"row": "row.mtx"}
     (d / "row.json").write_text(json.dumps(rcase))
-    out = []
-    for c in (d / "case.json", d / "row.json"):
-        status, text, err = run(["backbone", c, "--forces", FORCES, "--json"], capsys)
-        assert status == 0, err
-        out.append(json.loads(text))
+    out = backbones([d / "case.json", d / "row.json"], capsys)
     for p, q in zip(out[0]["points"], out[1]["points"]):   # two reductions (see mm-t-s test)
         assert q["sigma_a"] == pytest.approx(p["sigma_a"], rel=1e-5)
         assert q["f_res"] == pytest.approx(p["f_res"], rel=1e-7)

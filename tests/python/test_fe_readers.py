@@ -12,7 +12,7 @@ import scipy.linalg as la
 import scipy.sparse as sp
 from scipy.spatial import cKDTree
 
-from udmap._lib import InputError
+from udmap import InputError
 from udmap.fe import nastran, read_fe
 
 from fe_compare import ccx_section, rel, same_model, via_matrix_market

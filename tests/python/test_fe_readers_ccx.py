@@ -77,20 +77,15 @@ def test_nastran_dmig_equals_matrix_market(ccx_exports, tmp_path, field):
             data = fields[1:]
             return [",".join([fields[0] if k == 0 else "+"] + data[k:k + 8])
                     for k in range(0, len(data), 8)]
-        if field == "small":
-            out, line = [], fields[0].ljust(8)
-            for k, v in enumerate(fields[1:]):
-                if k and k % 8 == 0:
-                    out.append(line)
-                    line = "+".ljust(8)
-                line += v.rjust(8)
-            return out + [line]
-        out, line = [], (fields[0] + "*").ljust(8)
+        # fixed fields: small 8 fields of 8 a line (continuation +), large "*" 4 of 16
+        name, per_line, width, cont = ((fields[0], 8, 8, "+") if field == "small" else
+                                       (fields[0] + "*", 4, 16, "*"))
+        out, line = [], name.ljust(8)
         for k, v in enumerate(fields[1:]):
-            if k and k % 4 == 0:
+            if k and k % per_line == 0:
                 out.append(line)
-                line = "*".ljust(8)
-            line += v.rjust(16)
+                line = cont.ljust(8)
+            line += v.rjust(width)
         return out + [line]
 
     def short(v):   # NASTRAN reals: as many digits as the field holds

@@ -15,7 +15,7 @@ import fe_reference as ref
 from udmap.reduction import platform_centred_reduction
 from fe_deck import assemble, make_deck
 from udmap.fe import FEModel
-from udmap.fe.case import gauge_row
+from udmap.case.fe import gauge_row
 
 ZETA = 0.002
 AXIS, DIRECTION = [0.0, 1.0, 0.0], [1.0, 0.0, 0.0]

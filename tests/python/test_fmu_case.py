@@ -51,6 +51,15 @@ def make(case, version, tmp_path):
     return out
 
 
+def make_valid(case, version, tmp_path):
+    """The case FMU, checked by fmpy's validation: (path, model description, variables by
+    name)."""
+    fmu = make(case, version, tmp_path)
+    assert validate_fmu(str(fmu)) == []
+    md = read_model_description(str(fmu))
+    return fmu, md, {v.name: v for v in md.modelVariables}
+
+
 def simulate(fmu, fmi_type, rows, names):
     dtype = [("time", float)] + [(n, float) for n in names]
     table, t = [], 0.0
@@ -83,10 +92,7 @@ def compare(r, references, key_names):
 
 @pytest.mark.parametrize("version", [2, 3])
 def test_matrices_blade_with_table_damper(matrices_table_case, version, tmp_path):
-    fmu = make(matrices_table_case, version, tmp_path)
-    assert validate_fmu(str(fmu)) == []
-    md = read_model_description(str(fmu))
-    names = {v.name: v for v in md.modelVariables}
+    fmu, md, names = make_valid(matrices_table_case, version, tmp_path)
     # a table damper has no mu, CF, stiffnesses or geometry; a matrices blade no beam data
     for gone in ("mu", "CF", "kn_flat", "pitch", "neck_L", "E", "airfoil_elements"):
         assert gone not in names
@@ -143,10 +149,7 @@ def test_matrices_blade_with_table_damper(matrices_table_case, version, tmp_path
 
 @pytest.mark.parametrize("version", [2, 3])
 def test_beam_case_with_other_starts(beam_case, version, tmp_path):
-    fmu = make(beam_case, version, tmp_path)
-    assert validate_fmu(str(fmu)) == []
-    md = read_model_description(str(fmu))
-    names = {v.name: v for v in md.modelVariables}
+    fmu, md, names = make_valid(beam_case, version, tmp_path)
     assert float(names["mu"].start) == 0.25 and float(names["CF"].start) == 1100.0
     assert len(names) == len(read_model_description(str(FMUS[version])).modelVariables)
     rows = [(F, CF, mu) for CF, mu in ((1100.0, 0.25), (900.0, 0.25), (900.0, 0.3))

@@ -24,6 +24,21 @@ def ready(version, **values) -> Instance:
     return inst
 
 
+def usable(version) -> tuple[Instance, dict]:
+    """A ready instance whose outputs are usable, and those outputs."""
+    inst = ready(version)
+    return inst, assert_usable(inst)
+
+
+def fails_at_evaluation(inst: Instance, **values) -> list[str]:
+    """Sets values the FMU accepts alone and asserts that the outputs then fail: the error
+    messages."""
+    assert inst.set(**values) == OK
+    st, _ = inst.outputs()
+    assert st == ERROR
+    return inst.messages(ERROR)
+
+
 def assert_usable(inst: Instance, reference: dict | None = None):
     st, out = inst.outputs()
     assert st == OK, inst.messages()
@@ -58,8 +73,7 @@ def assert_usable(inst: Instance, reference: dict | None = None):
 def test_bad_value_is_an_error_with_the_case_file_message(version, name, value, why):
     # the message of the case-file validation (FMU names for dotted paths), an FMI error, and
     # the instance keeps its value and computes as before
-    inst = ready(version)
-    before = assert_usable(inst)
+    inst, before = usable(version)
     old = inst.get(name)[1][0]
     assert inst.set(**{name: value}) == ERROR
     msg = inst.messages()[-1]
@@ -73,13 +87,10 @@ def test_bad_value_is_an_error_with_the_case_file_message(version, name, value, 
 
 @pytest.mark.parametrize("version", VERSIONS)
 def test_f_exc_outside_the_band_is_an_error_until_fixed(version):
-    inst = ready(version)
-    before = assert_usable(inst)
-    assert inst.set(f_exc=240.0) == OK  # valid alone; the band decides at evaluation
-    st, out = inst.outputs()
-    assert st == ERROR
+    inst, before = usable(version)
+    # valid alone; the band decides at evaluation
     assert any("f_exc = 240 Hz is outside the band [f_min, f_max] = [150, 230] Hz" in m
-               for m in inst.messages(ERROR))
+               for m in fails_at_evaluation(inst, f_exc=240.0))
     # the limit force does not depend on f_exc: still available
     st, (F_lim,) = inst.get("F_lim")
     assert st == OK and F_lim == before["F_lim"]
@@ -92,12 +103,8 @@ def test_f_exc_outside_the_band_is_an_error_until_fixed(version):
 
 @pytest.mark.parametrize("version", VERSIONS)
 def test_band_without_the_resonance_is_an_error_until_fixed(version):
-    inst = ready(version)
-    before = assert_usable(inst)
-    assert inst.set(f_min=300.0, f_max=400.0) == OK
-    st, _ = inst.outputs()
-    assert st == ERROR
-    msgs = inst.messages(ERROR)
+    inst, before = usable(version)
+    msgs = fails_at_evaluation(inst, f_min=300.0, f_max=400.0)
     assert msgs and all(m.startswith(f"fmi{version}Get") for m in msgs)
     assert any("resonance" in m for m in msgs), msgs
     assert inst.set(f_min=160.0, f_max=140.0) == OK
@@ -133,8 +140,7 @@ def test_unbounded_response_warns_without_nan(version):
 @pytest.mark.parametrize("version", VERSIONS)
 @pytest.mark.parametrize("change", [{"mu": 3.0}, {"pitch": 1e-6}])
 def test_jammed_damper_is_an_error_until_fixed(version, change):
-    inst = ready(version)
-    before = assert_usable(inst)
+    inst, before = usable(version)
     assert inst.set(**change) == OK
     assert inst.step(0.1) == OK
     st, out = inst.outputs()

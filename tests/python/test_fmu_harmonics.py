@@ -30,10 +30,16 @@ def close(a, b, rtol):
     return abs(a - b) <= rtol * max(abs(a), abs(b))
 
 
+def set_up(version, name):
+    """An instance of the generic FMU, set up (its setup asserted OK)."""
+    inst = Instance(version, name)
+    assert inst.setup() == OK
+    return inst
+
+
 @pytest.mark.parametrize("version", [2, 3])
 def test_harmonics_parameter_matches_the_package(version):
-    inst = Instance(version, "harmonics")
-    assert inst.setup() == OK
+    inst = set_up(version, "harmonics")
     assert inst.set(F_E=5.0) == OK
     st, h1 = inst.get(*REAL, "harmonics_used")
     assert st == OK and h1[-1] == 1
@@ -57,8 +63,7 @@ def test_harmonics_parameter_matches_the_package(version):
 
 @pytest.mark.parametrize("version", [2, 3])
 def test_harmonics_out_of_range_is_an_error_and_the_instance_stays_usable(version):
-    inst = Instance(version, "range")
-    assert inst.setup() == OK
+    inst = set_up(version, "range")
     assert inst.set(harmonics=65) == ERROR
     assert any("harmonics" in m and "65" in m for m in inst.messages()), inst.messages()
     assert inst.set(harmonics=-1) == ERROR
@@ -70,8 +75,7 @@ def test_harmonics_out_of_range_is_an_error_and_the_instance_stays_usable(versio
 @pytest.mark.parametrize("version", [2, 3])
 def test_limit_force_backbone(version):
     # mu = 0.6 on blade A: a contact lifts off and F_bb saturates well below F_lim (PHYSICS.md 5)
-    inst = Instance(version, "limit")
-    assert inst.setup() == OK
+    inst = set_up(version, "limit")
     assert inst.set(mu=0.6, F_E=4.0) == OK
     st, (F_lim, F_bb, lift_off) = inst.get("F_lim", "F_lim_backbone", "lift_off")
     assert st == OK, inst.messages()
@@ -90,8 +94,7 @@ def test_jump(version):
     # the lift-off design of test_jump.py: k(gamma) jumps at gamma_c = 1.0335e-3 rad, and the
     # forces 3.5 and 4 N peak there (PHYSICS.md 2.5)
     mu, CF = 0.3639798354357481, 1178.4721311181784
-    inst = Instance(version, "jump")
-    assert inst.setup() == OK
+    inst = set_up(version, "jump")
     for F_E in (3.5, 4.0):
         assert inst.set(mu=mu, CF=CF, F_E=F_E) == OK
         st, (jump, gamma_P, sigma_a) = inst.get("jump", "gamma_P", "sigma_a")
@@ -111,8 +114,7 @@ def test_jump(version):
 def test_F_E_steps_use_the_force_table(version):
     # after a change of F_E alone the FMU interpolates its verified force table (PHYSICS.md 4.1):
     # every step equals the package's exact multi-harmonic point to harmonic_tol/1000 = 1e-6
-    inst = Instance(version, "table")
-    assert inst.setup() == OK
+    inst = set_up(version, "table")
     assert inst.set(harmonics=3) == OK
     case = load_case(CASE)
     case.analysis["harmonics"] = 3

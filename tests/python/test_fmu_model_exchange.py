@@ -9,7 +9,7 @@ import pytest
 from fmpy import simulate_fmu
 from fmpy.validation import validate_fmu
 
-from fmu_harness import FMUS, OK, Instance, case_with, cli, step_table
+from fmu_harness import FMUS, OK, Instance, reference, step_table
 
 SEGMENTS = [(900.0, 0.3, 0.0, [0.2, 0.5, 2.0, 5.0, 12.0, 20.0]),
             (1200.0, 0.3, 0.0, [0.5, 5.0]),
@@ -47,13 +47,8 @@ def references(tmp_path_factory):
     d = tmp_path_factory.mktemp("me")
     refs = {}
     for CF, mu, f_exc, forces in SEGMENTS:
-        case = case_with(d, f"cf{CF}_mu{mu}_f{f_exc}", CF=CF, mu=mu)
-        arg = ",".join(repr(F) for F in forces)
-        if f_exc == 0.0:
-            data = cli("backbone", case, "--forces", arg)
-        else:
-            data = cli("response", case, "--forces", arg, "--freq", repr(f_exc))
-        refs[(CF, mu, f_exc)] = data, {p["F_E"]: p for p in data["points"]}
+        refs[(CF, mu, f_exc)] = reference(d, CF, mu, f_exc, forces,
+                                          name=f"cf{CF}_mu{mu}_f{f_exc}")
     return refs
 
 

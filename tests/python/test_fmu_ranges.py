@@ -9,7 +9,7 @@ import pytest
 
 from fmu_harness import CASE, ERROR, OK, Instance, description
 from udmap import doe
-from udmap._lib import InputError
+from udmap import InputError
 from udmap.case import SCHEMA, fmt_number, load_case, validate
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -67,7 +67,7 @@ def test_out_of_range_message_is_the_case_file_message(version):
         path = names[name]
         dotted = doe.Parameter("", path, 0, 0).dotted
         with pytest.raises(InputError) as info:
-            validate(doe._validation_dict(doe.with_values(case, [path], [value])))
+            validate(doe.validation_dict(doe.with_values(case, [path], [value])))
         expected = str(info.value).replace(dotted, name, 1)
         assert inst.set(**{name: value}) == ERROR
         kept = fmt_number(inst.get(name)[1][0])

@@ -10,7 +10,7 @@ import numpy as np
 import pytest
 from fmpy import simulate_fmu
 
-from fmu_harness import FMUS, case_with, cli, step_table
+from fmu_harness import FMUS, reference, step_table
 
 FORCES = [0.5, 1.0, 2.0, 3.5, 5.0, 8.0, 12.0, 20.0]
 # (CF, mu, f_exc, forces): a CF change alone (rescale), then mu changes, then a frequency
@@ -47,15 +47,6 @@ def test_fmi2_and_fmi3_outputs_are_identical(results):
     assert len(set(np.round(steps[steps > 0], 12))) > 2
 
 
-def reference(tmp_path, CF, mu, f_exc, forces):
-    """The command line's answer for the same case."""
-    case = case_with(tmp_path, f"cf{CF}_mu{mu}", CF=CF, mu=mu)
-    arg = ",".join(repr(F) for F in forces)
-    if f_exc == 0.0:
-        data = cli("backbone", case, "--forces", arg)
-    else:
-        data = cli("response", case, "--forces", arg, "--freq", repr(f_exc))
-    return data, {p["F_E"]: p for p in data["points"]}
 
 
 def close(a, b, rel=1e-8):

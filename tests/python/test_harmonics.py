@@ -13,7 +13,7 @@ import pytest
 
 from udmap import InputError
 from udmap import hbm
-from udmap.case import build_blade, build_damper, build_model, load_case
+from udmap.case import build_contact, build_model, load_case
 
 ROOT = Path(__file__).resolve().parents[2]
 CASE = ROOT / "cases" / "blade_a.json"
@@ -22,13 +22,6 @@ CASE = ROOT / "cases" / "blade_a.json"
 def run_cli(*args):
     return subprocess.run([sys.executable, "-m", "udmap", *args], capture_output=True, text=True,
                           timeout=110)
-
-
-@pytest.fixture(scope="module")
-def blade_a():
-    case = load_case(CASE)
-    blade, damper = build_blade(case), build_damper(case)
-    return case, blade, damper, build_model(case, blade, damper)
 
 
 def test_single_harmonic_fields(blade_a):
@@ -47,7 +40,7 @@ def test_h3_equals_standard_method(blade_a):
         points = model.backbone([2.0, 10.0])
     finally:
         model.set_harmonics(1)
-    ref = hbm.hbm(blade, case.damper, a["f_min"], a["f_max"], [2.0, 10.0], harmonics=3,
+    ref = hbm.hbm(blade, build_contact(case), a["f_min"], a["f_max"], [2.0, 10.0], harmonics=3,
                   harmonic0=1, warm_start=2, full_band=0)
     for p, r in zip(points, ref):
         assert p["harmonics"] == 3 and p["hcf_stress"] == "sigma_max"
@@ -106,11 +99,8 @@ def test_cli_harmonics_bad_value(value):
 @pytest.mark.parametrize("field,value", [("harmonics", 0), ("harmonics", 65),
                                          ("harmonics", "many"), ("harmonics", 2.5),
                                          ("harmonic_tol", -1.0), ("harmonic_tol", 0.5)])
-def test_case_fields_checked(tmp_path, field, value):
-    data = json.loads(CASE.read_text())
-    data["analysis"][field] = value
-    path = tmp_path / "case.json"
-    path.write_text(json.dumps(data))
+def test_case_fields_checked(write_case, field, value):
+    path = write_case("case", analysis={field: value})
     r = run_cli("backbone", str(path), "--forces", "5")
     assert r.returncode == 2 and f"analysis.{field}" in r.stderr
 

@@ -10,7 +10,7 @@ import math
 import pytest
 
 from udmap import PhysicsError, UdmapError
-from udmap.case import build_blade, build_damper, load_case
+from udmap.case import build_blade, build_contact, build_damper, load_case
 from udmap.model import Model
 
 DESIGNS = [
@@ -88,7 +88,7 @@ def test_crossing_equals_standard_method(J):
     model = Model(blade, damper, 0.8 * f1, 1.25 * f1, harmonics=3)
     F = 0.6 * model.limit_force()
     p = model.backbone([F])[0]
-    r = hbm.hbm(blade, case.damper, 0.8 * f1, 1.25 * f1, [F], harmonics=3, harmonic0=1,
+    r = hbm.hbm(blade, build_contact(case), 0.8 * f1, 1.25 * f1, [F], harmonics=3, harmonic0=1,
                 warm_start=2, full_band=0)[0]
     for key in ("gamma_P", "sigma_a", "f_res"):
         assert p[key] == pytest.approx(r[key], rel=1e-6), key

@@ -6,6 +6,7 @@ import numpy as np
 import pytest
 
 from udmap import InputError
+from udmap.case import contact_from_section
 from udmap.hbm import Contact, hbm_settings, dti_settings
 
 
@@ -42,7 +43,7 @@ def test_contact_errors():
     with pytest.raises(InputError, match="kt"):
         Contact.jenkins(-1.0, 1.0)
     with pytest.raises(InputError, match="table"):
-        Contact.from_params({"kind": "table", "file": "x.csv"})
+        contact_from_section({"kind": "table", "file": "x.csv"})
     c = Contact.jenkins(2.0, 3.0)
     with pytest.raises(InputError, match="samples"):
         c.aft([1.0, 0.5], samples=3)

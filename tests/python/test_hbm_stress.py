@@ -11,11 +11,8 @@ import scipy.io
 
 from udmap import Blade, UdmapError
 from udmap import hbm
-from udmap.case import load_case
+from udmap.case import contact_from_section, damper_from_section, load_case
 
-BLADE_A = dict(E=170e9, rho=8200.0, zeta=0.002, neck_L=0.020, neck_h=0.008, neck_b=0.020,
-               platform_L=0.010, platform_m=0.021, platform_J=1.4e-6, airfoil_L=0.120,
-               airfoil_h=0.004, airfoil_b=0.030, neck_elements=8, airfoil_elements=24)
 DAMPER = load_case().damper
 
 
@@ -35,20 +32,15 @@ def finite_or_error(fn):
     return out
 
 
-@pytest.fixture(scope="module")
-def blade_a():
-    return Blade.beam(**BLADE_A)
-
-
 @pytest.mark.parametrize("mu", [1e-4, 0.3, 2.0])
 @pytest.mark.parametrize("CF", [1e-3, 900.0, 1e5])
 @pytest.mark.parametrize("kscale", [1e-3, 1e3])
-def test_damper_parameters(blade_a, mu, CF, kscale):
+def test_damper_parameters(blade_a_beam, mu, CF, kscale):
     d = dict(DAMPER, mu=mu, CF=CF)
     for k in ("kn_flat", "kt_flat", "kn_curved", "kt_curved"):
         d[k] = DAMPER[k] * kscale
     try:
-        c = hbm.Contact.from_params(d)
+        c = contact_from_section(d)
     except UdmapError:
         return
     for a in (1e-12, 1e-6, 1e-3, 1.0):
@@ -59,24 +51,27 @@ def test_damper_parameters(blade_a, mu, CF, kscale):
             continue
         assert np.all(np.isfinite(M)) and math.isfinite(M0) and gmax > 0
     # a force of the order of the slip moments over the lever arms
-    finite_or_error(lambda: hbm.hbm(blade_a, c, 150, 230, [0.01 * mu * CF]))
+    finite_or_error(lambda: hbm.hbm(blade_a_beam, c, 150, 230, [0.01 * mu * CF]))
 
 
 @pytest.mark.parametrize("zeta", [0.0, 1e-5])
-def test_limit_force(zeta):
-    blade = Blade.beam(**dict(BLADE_A, zeta=zeta))
+def test_limit_force(zeta, blade_a_params):
+    blade = Blade.beam(**dict(blade_a_params, zeta=zeta))
     F_lim = 21.677454956969921  # blade A's damper (backbone)
     for frac in (0.99, 1.0, 1.01):
-        pts = finite_or_error(lambda: hbm.hbm(blade, DAMPER, 150, 230, [frac * F_lim]))
+        pts = finite_or_error(lambda: hbm.hbm(blade, contact_from_section(DAMPER), 150, 230,
+                                                  [frac * F_lim],
+                                                  damper=damper_from_section(DAMPER)))
         if pts is not None and frac >= 1.0:
             assert pts[0]["regime"] == 3 or pts[0].get("unbounded")
-        finite_or_error(lambda: hbm.dti(blade, DAMPER, [frac * F_lim], freq=190.0,
-                                        steps_per_period=64, max_periods=200))
+        finite_or_error(lambda: hbm.dti(blade, contact_from_section(DAMPER), [frac * F_lim],
+                                        freq=190.0, steps_per_period=64, max_periods=200))
 
 
-def test_band_without_resonance(blade_a):
+def test_band_without_resonance(blade_a_beam):
     with pytest.raises(UdmapError, match="no resonance"):
-        hbm.hbm(blade_a, DAMPER, 400, 600, [1.0])
+        hbm.hbm(blade_a_beam, contact_from_section(DAMPER), 400, 600, [1.0],
+                damper=damper_from_section(DAMPER))
 
 
 def test_near_singular_matrices(tmp_path):
@@ -90,8 +85,9 @@ def test_near_singular_matrices(tmp_path):
     except UdmapError:
         return
     jen = {"kind": "jenkins", "kt": 0.25, "M_slip": 0.2}
+    contact = contact_from_section
     f0 = 1 / (2 * math.pi)
-    finite_or_error(lambda: hbm.hbm(blade, jen, 0.5 * f0, 2 * f0, [0.05, 0.3]))
-    finite_or_error(lambda: hbm.hbm(blade, jen, 0.5 * f0, 2 * f0, [0.05], variant="full"))
-    finite_or_error(lambda: hbm.dti(blade, jen, [0.05], freq=f0, steps_per_period=64,
+    finite_or_error(lambda: hbm.hbm(blade, contact(jen), 0.5 * f0, 2 * f0, [0.05, 0.3]))
+    finite_or_error(lambda: hbm.hbm(blade, contact(jen), 0.5 * f0, 2 * f0, [0.05], variant="full"))
+    finite_or_error(lambda: hbm.dti(blade, contact(jen), [0.05], freq=f0, steps_per_period=64,
                                     max_periods=300))

@@ -28,16 +28,6 @@ MU_C, CF_C = 0.3639798354357481, 1178.4721311181784
 FORCES = [3.5, 4.0, 4.5]
 
 
-def case_file(tmp_path, name, damper=None, blade=None, analysis=None):
-    data = json.loads(CASE.read_text())
-    data["damper"].update(damper or {})
-    data["blade"].update(blade or {})
-    data["analysis"].update(analysis or {})
-    path = tmp_path / f"{name}.json"
-    path.write_text(json.dumps(data))
-    return path
-
-
 def loop_k(damper, gamma, n=1 << 16):
     """k of the loop traced at gamma, by the trapezoidal rule of PHYSICS.md 2.2."""
     tau, M = damper.loop(gamma, n)
@@ -45,8 +35,8 @@ def loop_k(damper, gamma, n=1 << 16):
     return (np.sum(M * np.cos(tau)) - 1j * np.sum(M * np.sin(tau))) * h / (np.pi * gamma)
 
 
-def test_jump_located_with_one_sided_values(tmp_path):
-    case = load_case(case_file(tmp_path, "liftoff", {"mu": MU_C, "CF": CF_C}))
+def test_jump_located_with_one_sided_values(write_case):
+    case = load_case(write_case("liftoff", {"mu": MU_C, "CF": CF_C}))
     damper = build_damper(case)
     jumps = damper.jumps
     assert len(jumps) == 1
@@ -68,10 +58,10 @@ def test_jump_located_with_one_sided_values(tmp_path):
     assert j2["k_minus"] == j["k_minus"] and j2["k_plus"] == j["k_plus"]
 
 
-def test_backbone_in_the_jump_independent_of_rtol(tmp_path):
+def test_backbone_in_the_jump_independent_of_rtol(write_case):
     results = {}
     for rtol in (1e-10, 1e-12, 1e-14):
-        case = load_case(case_file(tmp_path, f"r{rtol}", {"mu": MU_C, "CF": CF_C},
+        case = load_case(write_case(f"r{rtol}", {"mu": MU_C, "CF": CF_C},
                                    analysis={"rtol": rtol}))
         blade, damper = build_blade(case), build_damper(case)
         model = build_model(case, blade, damper)
@@ -112,8 +102,8 @@ def test_backbone_in_the_jump_independent_of_rtol(tmp_path):
     assert ref[2]["gamma_P"] > gamma_c
 
 
-def test_cli_json_jump_and_table(tmp_path):
-    path = case_file(tmp_path, "liftoff", {"mu": MU_C, "CF": CF_C})
+def test_cli_json_jump_and_table(write_case):
+    path = write_case("liftoff", {"mu": MU_C, "CF": CF_C})
     env_cmd = [sys.executable, "-m", "udmap"]
     out = subprocess.run(env_cmd + ["backbone", str(path), "--forces", "3.5,4.5", "--json"],
                          capture_output=True, text=True, check=True)
@@ -129,8 +119,8 @@ def test_cli_json_jump_and_table(tmp_path):
     assert "jump" in out.stdout
 
 
-def test_limit_force_backbone_with_lift_off(tmp_path):
-    path = case_file(tmp_path, "mu06", {"mu": 0.6}, {"zeta": 0.0}, {"sigma_all": 1e10})
+def test_limit_force_backbone_with_lift_off(write_case):
+    path = write_case("mu06", {"mu": 0.6}, {"zeta": 0.0}, {"sigma_all": 1e10})
     case = load_case(path)
     blade, damper = build_blade(case), build_damper(case)
     model = build_model(case, blade, damper)

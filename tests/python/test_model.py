@@ -14,7 +14,7 @@ import pytest
 
 from udmap import InputError, PhysicsError
 from udmap.blade import Blade
-from udmap.case import build_blade, build_damper, build_model, load_case
+from udmap.case import build_blade, build_model
 from udmap.damper import Damper
 from udmap.model import Model
 
@@ -48,13 +48,6 @@ def oscillator(tmp_path_factory):
     blade = Blade.matrices(d / "M.mtx", d / "K.mtx", 1, 1, C=d / "C.mtx")
     damper = Damper.jenkins(KT, SLIP)
     return Model(blade, damper, 0.8 / (2 * np.pi), 1.4 / (2 * np.pi))
-
-
-@pytest.fixture(scope="module")
-def blade_a():
-    case = load_case(CASE)
-    blade, damper = build_blade(case), build_damper(case)
-    return case, blade, damper, build_model(case, blade, damper)
 
 
 def test_oscillator_published_peaks(oscillator):
@@ -175,11 +168,8 @@ def test_cli_curves_and_response():
     assert [p["f_res"] for p in json.loads(r.stdout)["points"]] == [190.0, 190.0]
 
 
-def test_cli_unbounded_is_null_with_message(tmp_path):
-    data = json.loads(CASE.read_text())
-    data["blade"]["zeta"] = 0.0
-    path = tmp_path / "undamped.json"
-    path.write_text(json.dumps(data))
+def test_cli_unbounded_is_null_with_message(write_case):
+    path = write_case("undamped", blade={"zeta": 0.0})
     F_lim = json.loads(run_cli("backbone", str(path), "--forces", "1", "--json").stdout)["F_lim"]
     r = run_cli("backbone", str(path), "--forces", f"{2 * F_lim}", "--json")
     assert r.returncode == 0, r.stderr
@@ -187,14 +177,11 @@ def test_cli_unbounded_is_null_with_message(tmp_path):
     assert p["unbounded"] is True and p["gamma_P"] is None and p["message"]
 
 
-def test_cli_exit_statuses(tmp_path):
+def test_cli_exit_statuses(write_case):
     assert run_cli("backbone", str(CASE), "--forces", "-1").returncode == 2
     assert run_cli("backbone", str(CASE)).returncode == 2
     assert run_cli("response", str(CASE), "--forces", "1", "--freq", "400").returncode == 2
-    data = json.loads(CASE.read_text())
-    data["analysis"].update(f_min=100.0, f_max=150.0)
-    path = tmp_path / "band.json"
-    path.write_text(json.dumps(data))
+    path = write_case("band", analysis=dict(f_min=100.0, f_max=150.0))
     r = run_cli("backbone", str(path), "--forces", "1")
     assert r.returncode == 3 and "no resonance" in r.stderr
 

@@ -18,7 +18,7 @@ from pathlib import Path
 import pytest
 
 import udmap
-from udmap._lib import InputError, fmu_path
+from udmap import InputError, fmu_path
 
 ROOT = Path(__file__).resolve().parents[2]
 BUILD = Path(os.environ.get("UDMAP_BUILD_DIR", ROOT / "build"))
@@ -58,8 +58,8 @@ def _run(site, args, extra_env=None):
     return done.stdout
 
 
-PROBE = ("import json, udmap, udmap._lib as l; print(json.dumps([udmap.__file__, l.lib._name, "
-         "str(l.fmu_path(2)), str(l.fmu_path(3))]))")
+PROBE = ("import json, udmap; print(json.dumps([udmap.__file__, udmap.library_path(), "
+         "str(udmap.fmu_path(2)), str(udmap.fmu_path(3))]))")
 
 
 @pytest.mark.parametrize("extra_env", [{}, {"UDMAP_BUILD_DIR": str(BUILD)}],

@@ -7,7 +7,7 @@ import pytest
 import scipy.sparse as sp
 import scipy.sparse.linalg as sla
 
-from udmap._lib import InputError
+from udmap import InputError
 from udmap.fe import FEModel
 from udmap.fe.generator import brick_matrices, generate_blade
 from udmap.reduction import platform_centred_reduction

@@ -20,34 +20,26 @@ ROOT = Path(__file__).resolve().parents[2]
 CASE = ROOT / "cases" / "blade_a.json"
 
 
-def case_file(tmp_path, name, **damper):
-    data = json.loads(CASE.read_text())
-    data["damper"].update(damper)
-    path = tmp_path / f"{name}.json"
-    path.write_text(json.dumps(data))
-    return path
-
-
 def udmap(*args):
     return subprocess.run([sys.executable, "-m", "udmap", *map(str, args)],
                           capture_output=True, text=True)
 
 
-def test_neutral_wedge_is_status_3_naming_mu_and_angle(tmp_path):
-    path = case_file(tmp_path, "neutral", mu=math.tan(math.radians(45.0)))
+def test_neutral_wedge_is_status_3_naming_mu_and_angle(write_case):
+    path = write_case("neutral", dict(mu=math.tan(math.radians(45.0))))
     out = udmap("backbone", path, "--forces", "1,5", "--json")
     assert out.returncode == 3, out.stderr
     assert "mu = 1.0" in out.stderr and "beta_R_deg = 45" in out.stderr
     assert "neutral wedge" in out.stderr and "Traceback" not in out.stderr
     # 1e-7 away from tan(beta) the damper is an ordinary one
-    out = udmap("backbone", case_file(tmp_path, "near", mu=1 - 1e-7), "--forces", "1",
+    out = udmap("backbone", write_case("near", dict(mu=1 - 1e-7)), "--forces", "1",
                 "--json")
     assert out.returncode == 0, out.stderr
 
 
 @pytest.mark.parametrize("beta", [5.0, 10.0, 89.0])
-def test_asymptotic_shakedown_gives_answers(tmp_path, beta):
-    path = case_file(tmp_path, f"b{beta}", beta_L_deg=beta, beta_R_deg=beta)
+def test_asymptotic_shakedown_gives_answers(beta, write_case):
+    path = write_case(f"b{beta}", dict(beta_L_deg=beta, beta_R_deg=beta))
     out = udmap("backbone", path, "--forces", "1,5", "--json")
     if beta == 10.0:
         # the limit loops change their topology from one amplitude to the next
@@ -62,7 +54,7 @@ def test_asymptotic_shakedown_gives_answers(tmp_path, beta):
         assert all(math.isfinite(p[k]) for k in ("gamma_P", "f_res", "sigma_a", "u_E"))
 
 
-def test_doe_records_neutral_wedge_as_physics_and_jumps(tmp_path):
+def test_doe_records_neutral_wedge_as_physics_and_jumps(tmp_path, write_case):
     out = tmp_path / "neutral.csv"
     summary = run_doe(load_case(CASE), ["mu=0.99999999999:1.00000000001"], 4, out,
                       forces="1", workers=1, progress=False)
@@ -75,7 +67,7 @@ def test_doe_records_neutral_wedge_as_physics_and_jumps(tmp_path):
         assert "beta_R_deg = 45" in row["message"]
 
     # the lift-off case: the jump at 3.5 and 4 N, F_adm against the smaller limit
-    lift = load_case(case_file(tmp_path, "lift", mu=0.3639798354357481, CF=1178.4721311181784))
+    lift = load_case(write_case("lift", dict(mu=0.3639798354357481, CF=1178.4721311181784)))
     out = tmp_path / "lift.csv"
     run_doe(lift, ["mu=0.3639798354357481:0.36397983543574815"], 2, out,
             forces="3.5,4,4.5", workers=1, progress=False)

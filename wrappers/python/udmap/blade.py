@@ -9,40 +9,15 @@ import os
 
 import numpy as np
 
-from ._lib import ErrorHandle, InputError, as_doubles, c_double_p, c_int_p, declare
+from . import _capi
+from ._capi import ErrorHandle, as_doubles
+from .errors import InputError
 
 __all__ = ["Blade", "BEAM_PARAMETERS"]
 
 
-class _BeamParams(ctypes.Structure):
-    """udmap_beam_params: 12 doubles then 2 ints."""
-
-    _fields_ = [(name, ctypes.c_double) for name in (
-        "E", "rho", "zeta", "neck_L", "neck_h", "neck_b", "platform_L", "platform_m",
-        "platform_J", "airfoil_L", "airfoil_h", "airfoil_b")] + [
-        ("neck_elements", ctypes.c_int), ("airfoil_elements", ctypes.c_int)]
-
-
 #: Keyword arguments of Blade.beam, as in the C struct (case-file fields with underscores).
-BEAM_PARAMETERS = tuple(name for name, _ in _BeamParams._fields_)
-
-_handle_p = ctypes.POINTER(ctypes.c_void_p)
-_new_beam = declare("udmap_new_blade_beam",
-                    [ctypes.c_void_p, ctypes.POINTER(_BeamParams), _handle_p])
-_new_matrices = declare("udmap_new_blade_matrices",
-                        [ctypes.c_void_p, ctypes.c_char_p, ctypes.c_char_p, ctypes.c_char_p,
-                         ctypes.c_int, ctypes.c_int, ctypes.c_char_p, ctypes.c_char_p,
-                         ctypes.c_double, _handle_p])
-_delete = declare("udmap_delete_blade", [_handle_p], None)
-_get_size = declare("udmap_blade_get_size", [ctypes.c_void_p, ctypes.c_void_p, c_int_p, c_int_p])
-_natural_frequencies = declare("udmap_blade_natural_frequencies",
-                               [ctypes.c_void_p, ctypes.c_void_p, ctypes.c_int, c_double_p])
-_receptances = declare("udmap_blade_receptances",
-                       [ctypes.c_void_p, ctypes.c_void_p, ctypes.c_int, c_double_p, c_double_p])
-_layer_response = declare("udmap_blade_layer_response",
-                          [ctypes.c_void_p, ctypes.c_void_p, ctypes.c_int, c_double_p,
-                           ctypes.c_double, ctypes.c_double, c_double_p])
-_export = declare("udmap_blade_export", [ctypes.c_void_p, ctypes.c_void_p, ctypes.c_char_p])
+BEAM_PARAMETERS = tuple(name for name, _ in _capi.BeamParams._fields_)
 
 _RECEPTANCES = ("gE", "gg", "EE", "sE", "sg")
 
@@ -75,7 +50,7 @@ class Blade:
                 parts.append("missing beam parameter(s) " + ", ".join(missing))
             raise InputError("; ".join(parts))
         values = {}
-        for name, ctype in _BeamParams._fields_:
+        for name, ctype in _capi.BeamParams._fields_:
             value = params[name]
             if ctype is ctypes.c_int:
                 if isinstance(value, bool) or int(value) != value:
@@ -85,7 +60,8 @@ class Blade:
                 values[name] = float(value)
         error = ErrorHandle()
         handle = ctypes.c_void_p()
-        error.check(_new_beam(error.ptr, ctypes.byref(_BeamParams(**values)), ctypes.byref(handle)))
+        error.check(_capi.new_blade_beam(error.ptr, ctypes.byref(_capi.BeamParams(**values)),
+                                         ctypes.byref(handle)))
         return cls(handle, error)
 
     @classmethod
@@ -95,20 +71,26 @@ class Blade:
         gamma_dof, exc_dof 1-based). Without C, damping is beta K from zeta."""
         error = ErrorHandle()
         handle = ctypes.c_void_p()
-        error.check(_new_matrices(error.ptr, _path(M), _path(K), _path(C), int(gamma_dof),
+        error.check(_capi.new_blade_matrices(error.ptr, _path(M), _path(K), _path(C),
+                                             int(gamma_dof),
                                   int(exc_dof), _path(stress_K), _path(stress_M), float(zeta),
-                                  ctypes.byref(handle)))
+                                             ctypes.byref(handle)))
         return cls(handle, error)
 
     def __del__(self):
         handle = getattr(self, "_handle", None)
-        if handle is not None and handle.value and _delete is not None:
-            _delete(ctypes.byref(handle))
+        if handle is not None and handle.value and _capi is not None and _capi.lib is not None:
+            _capi.delete_blade(ctypes.byref(handle))
+
+    @property
+    def handle(self) -> ctypes.c_void_p:
+        """The udmap_blade handle (for the model and the standard method)."""
+        return self._handle
 
     def _size(self) -> "tuple[int, int]":
         ndof, has_stress = ctypes.c_int(), ctypes.c_int()
-        self._error.check(_get_size(self._error.ptr, self._handle, ctypes.byref(ndof),
-                                    ctypes.byref(has_stress)))
+        self._error.check(_capi.blade_get_size(self._error.ptr, self._handle, ctypes.byref(ndof),
+                                               ctypes.byref(has_stress)))
         return ndof.value, has_stress.value
 
     @property
@@ -124,8 +106,8 @@ class Blade:
     def natural_frequencies(self, n: int) -> np.ndarray:
         """The lowest n bare natural frequencies [Hz], ascending."""
         out = np.zeros(max(int(n), 1))
-        self._error.check(_natural_frequencies(self._error.ptr, self._handle, int(n),
-                                               out.ctypes.data_as(c_double_p)))
+        self._error.check(_capi.blade_natural_frequencies(self._error.ptr, self._handle, int(n),
+                                                          out.ctypes.data_as(_capi.c_double_p)))
         return out
 
     def receptances(self, f_hz) -> "dict[str, np.ndarray]":
@@ -134,8 +116,8 @@ class Blade:
         f = np.asarray(f_hz, dtype=np.float64)
         flat, fptr = as_doubles(f.reshape(-1))
         out = np.zeros(10 * flat.size)
-        self._error.check(_receptances(self._error.ptr, self._handle, flat.size, fptr,
-                                       out.ctypes.data_as(c_double_p)))
+        self._error.check(_capi.blade_receptances(self._error.ptr, self._handle, flat.size, fptr,
+                                                  out.ctypes.data_as(_capi.c_double_p)))
         pairs = out.reshape(-1, 5, 2)
         return {name: (pairs[:, j, 0] + 1j * pairs[:, j, 1]).reshape(f.shape)
                 for j, name in enumerate(_RECEPTANCES)}
@@ -147,8 +129,9 @@ class Blade:
         flat, fptr = as_doubles(f.reshape(-1))
         k = complex(k)
         out = np.zeros(6 * flat.size)
-        self._error.check(_layer_response(self._error.ptr, self._handle, flat.size, fptr,
-                                          k.real, k.imag, out.ctypes.data_as(c_double_p)))
+        self._error.check(_capi.blade_layer_response(self._error.ptr, self._handle, flat.size,
+                                                     fptr, k.real, k.imag,
+                                                     _capi.doubles_ptr(out)))
         pairs = out.reshape(-1, 3, 2)
         g, s, u = ((pairs[:, j, 0] + 1j * pairs[:, j, 1]).reshape(f.shape) for j in range(3))
         return g, s, u
@@ -156,7 +139,7 @@ class Blade:
     def export(self, directory) -> None:
         """Writes M.mtx, K.mtx (C.mtx, stress_K.mtx, stress_M.mtx when present) and
         blade.json into the existing directory."""
-        self._error.check(_export(self._error.ptr, self._handle, _path(directory)))
+        self._error.check(_capi.blade_export(self._error.ptr, self._handle, _path(directory)))
 
     def __repr__(self) -> str:
         ndof, has_stress = self._size()

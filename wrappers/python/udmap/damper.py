@@ -13,45 +13,16 @@ import ctypes
 
 import numpy as np
 
-from ._lib import ErrorHandle, InputError, as_doubles, c_double_p, declare, lib
+from . import _capi
+from ._capi import ErrorHandle, as_doubles
+from .errors import InputError
 
-__all__ = ["Damper"]
+__all__ = ["Damper", "AsymmetricBuilder", "ASYMMETRIC_FIELDS", "asymmetric_params"]
 
 _vp = ctypes.c_void_p
 
-
-class _AsymmetricParams(ctypes.Structure):
-    _fields_ = [(name, ctypes.c_double) for name in (
-        "CF", "mu", "pitch", "y_P", "beta_L_deg", "beta_R_deg",
-        "flat1_x", "flat1_y", "flat2_x", "flat2_y", "curved_x", "curved_y",
-        "kn_flat", "kt_flat", "kn_curved", "kt_curved")]
-
-
-class _Info(ctypes.Structure):
-    _fields_ = [("gamma_b", ctypes.c_double), ("gamma_s", ctypes.c_double),
-                ("M_max", ctypes.c_double), ("M_min", ctypes.c_double),
-                ("k_stuck", ctypes.c_double), ("lift_off", ctypes.c_int)]
-
-
-_new_asym = declare("udmap_new_damper_asymmetric",
-                    [_vp, ctypes.POINTER(_AsymmetricParams), ctypes.POINTER(_vp)])
-_new_jenkins = declare("udmap_new_damper_jenkins",
-                       [_vp, ctypes.c_double, ctypes.c_double, ctypes.POINTER(_vp)])
-_new_table = declare("udmap_new_damper_table",
-                     [_vp, ctypes.c_int, c_double_p, c_double_p, c_double_p, ctypes.c_int,
-                      ctypes.c_double, ctypes.POINTER(_vp)])
-_delete = declare("udmap_delete_damper", [ctypes.POINTER(_vp)], None)
-_get_info = declare("udmap_damper_get_info", [_vp, _vp, ctypes.POINTER(_Info)])
-_stiffness = declare("udmap_damper_stiffness",
-                     [_vp, _vp, ctypes.c_int, c_double_p, c_double_p, c_double_p])
-_stiffness_derivative = declare("udmap_damper_stiffness_derivative",
-                                [_vp, _vp, ctypes.c_int, c_double_p, c_double_p, c_double_p])
-_loop = declare("udmap_damper_loop",
-                [_vp, _vp, ctypes.c_double, ctypes.c_int, c_double_p, c_double_p])
-_set_CF = declare("udmap_damper_set_CF", [_vp, _vp, ctypes.c_double])
-_jump_count = declare("udmap_damper_jump_count", [_vp, _vp, ctypes.POINTER(ctypes.c_int)])
-_jump_get = declare("udmap_damper_jump_get", [_vp, _vp, ctypes.c_int, c_double_p,
-                                              ctypes.c_double * 2, ctypes.c_double * 2])
+#: The fields of the asymmetric damper's C parameter block (udmap_asymmetric_params), in order.
+ASYMMETRIC_FIELDS = tuple(name for name, _ in _capi.AsymmetricParams._fields_)
 
 
 def _number(name: str, value) -> float:
@@ -69,6 +40,25 @@ def _point(name: str, value) -> tuple[float, float]:
     return _number(f"{name}[0]", x), _number(f"{name}[1]", y)
 
 
+def asymmetric_params(CF, mu, pitch, y_P, beta_L_deg, beta_R_deg, flat_points, curved_point,
+                      kn_flat, kt_flat, kn_curved, kt_curved) -> "_capi.AsymmetricParams":
+    """The C parameter block of the asymmetric damper (PHYSICS.md 2.1; SI units, angles in
+    degrees), checked to be numbers: shared by the k(gamma) face (:class:`Damper`) and the
+    time-domain face (:class:`udmap.hbm.Contact`)."""
+    try:
+        f1, f2 = flat_points
+    except (TypeError, ValueError):
+        raise InputError("damper parameter 'flat_points' must be two pairs [[x, y], [x, y]]") \
+            from None
+    return _capi.AsymmetricParams(
+        _number("CF", CF), _number("mu", mu), _number("pitch", pitch), _number("y_P", y_P),
+        _number("beta_L_deg", beta_L_deg), _number("beta_R_deg", beta_R_deg),
+        *_point("flat_points[0]", f1), *_point("flat_points[1]", f2),
+        *_point("curved_point", curved_point),
+        _number("kn_flat", kn_flat), _number("kt_flat", kt_flat),
+        _number("kn_curved", kn_curved), _number("kt_curved", kt_curved))
+
+
 class Damper:
     """A damper handle: asymmetric flat/curved (traced exactly and tabulated on creation),
     rotational Jenkins element, or measured table. Create it with the classmethods."""
@@ -80,8 +70,13 @@ class Damper:
 
     def __del__(self):
         ptr = getattr(self, "_ptr", None)
-        if ptr is not None and lib is not None:
-            _delete(ctypes.byref(ptr))
+        if ptr is not None and _capi is not None and _capi.lib is not None:
+            _capi.delete_damper(ctypes.byref(ptr))
+
+    @property
+    def handle(self) -> ctypes.c_void_p:
+        """The udmap_damper handle (for the model)."""
+        return self._ptr
 
     @property
     def ptr(self) -> ctypes.c_void_p:
@@ -93,21 +88,11 @@ class Damper:
     def asymmetric(cls, CF, mu, pitch, y_P, beta_L_deg, beta_R_deg, flat_points, curved_point,
                    kn_flat, kt_flat, kn_curved, kt_curved) -> "Damper":
         """The asymmetric damper of PHYSICS.md 2.1 (SI units, angles in degrees)."""
-        try:
-            f1, f2 = flat_points
-        except (TypeError, ValueError):
-            raise InputError("damper parameter 'flat_points' must be two pairs [[x, y], [x, y]]") \
-                from None
-        p = _AsymmetricParams(
-            _number("CF", CF), _number("mu", mu), _number("pitch", pitch), _number("y_P", y_P),
-            _number("beta_L_deg", beta_L_deg), _number("beta_R_deg", beta_R_deg),
-            *_point("flat_points[0]", f1), *_point("flat_points[1]", f2),
-            *_point("curved_point", curved_point),
-            _number("kn_flat", kn_flat), _number("kt_flat", kt_flat),
-            _number("kn_curved", kn_curved), _number("kt_curved", kt_curved))
+        p = asymmetric_params(CF, mu, pitch, y_P, beta_L_deg, beta_R_deg, flat_points,
+                              curved_point, kn_flat, kt_flat, kn_curved, kt_curved)
         err = ErrorHandle()
         ptr = _vp()
-        err.check(_new_asym(err.ptr, ctypes.byref(p), ctypes.byref(ptr)))
+        err.check(_capi.new_damper_asymmetric(err.ptr, ctypes.byref(p), ctypes.byref(ptr)))
         return cls(ptr, err, "asymmetric")
 
     @classmethod
@@ -115,8 +100,8 @@ class Damper:
         """A rotational Jenkins element: kt [N m/rad], slip moment M_slip [N m]."""
         err = ErrorHandle()
         ptr = _vp()
-        err.check(_new_jenkins(err.ptr, _number("kt", kt), _number("M_slip", M_slip),
-                               ctypes.byref(ptr)))
+        err.check(_capi.new_damper_jenkins(err.ptr, _number("kt", kt), _number("M_slip", M_slip),
+                                           ctypes.byref(ptr)))
         return cls(ptr, err, "jenkins")
 
     @classmethod
@@ -135,13 +120,19 @@ class Damper:
         dM = _number("delta_M", delta_M) if has else 0.0
         err = ErrorHandle()
         ptr = _vp()
-        err.check(_new_table(err.ptr, g.size, gp, rp, ip, int(has), dM, ctypes.byref(ptr)))
+        err.check(_capi.new_damper_table(err.ptr, g.size, gp, rp, ip, int(has), dM,
+                                         ctypes.byref(ptr)))
         return cls(ptr, err, "table")
 
     # ------------------------------------------------------------------ base-cycle data
-    def _info(self) -> _Info:
-        info = _Info()
-        self._err.check(_get_info(self._err.ptr, self._ptr, ctypes.byref(info)))
+    def info(self) -> "_capi.DamperInfo":
+        """The base cycle in one kernel call: attributes gamma_b, gamma_s, M_max, M_min,
+        k_stuck, lift_off (as the properties below)."""
+        return self._info()
+
+    def _info(self) -> "_capi.DamperInfo":
+        info = _capi.DamperInfo()
+        self._err.check(_capi.damper_get_info(self._err.ptr, self._ptr, ctypes.byref(info)))
         return info
 
     @property
@@ -184,18 +175,18 @@ class Damper:
         re = np.empty_like(flat)
         im = np.empty_like(flat)
         self._err.check(fn(self._err.ptr, self._ptr, flat.size,
-                           flat.ctypes.data_as(c_double_p), re.ctypes.data_as(c_double_p),
-                           im.ctypes.data_as(c_double_p)))
+                           _capi.doubles_ptr(flat), _capi.doubles_ptr(re),
+                           _capi.doubles_ptr(im)))
         out = (re + 1j * im).reshape(g.shape)
         return out[()] if out.ndim == 0 else out
 
     def stiffness(self, gamma):
         """k(gamma) = k_re + i k_im [N m/rad] for amplitudes gamma [rad] (array or scalar)."""
-        return self._eval(_stiffness, gamma)
+        return self._eval(_capi.damper_stiffness, gamma)
 
     def stiffness_derivative(self, gamma):
         """dk/dgamma [N m/rad^2] (exact for the asymmetric and Jenkins kinds)."""
-        return self._eval(_stiffness_derivative, gamma)
+        return self._eval(_capi.damper_stiffness_derivative, gamma)
 
     def loop(self, gamma_a, n: int = 256):
         """The steady loop at amplitude gamma_a: (tau, M_r) at n equally spaced tau in
@@ -205,8 +196,8 @@ class Damper:
             raise InputError("loop: 'n' must be at least 1")
         tau = np.empty(n)
         M = np.empty(n)
-        self._err.check(_loop(self._err.ptr, self._ptr, _number("gamma_a", gamma_a), n,
-                              tau.ctypes.data_as(c_double_p), M.ctypes.data_as(c_double_p)))
+        self._err.check(_capi.damper_loop(self._err.ptr, self._ptr, _number("gamma_a", gamma_a), n,
+                                          _capi.doubles_ptr(tau), _capi.doubles_ptr(M)))
         return tau, M
 
     @property
@@ -215,19 +206,20 @@ class Damper:
         shape abruptly): per jump ``gamma_c`` [rad] and the one-sided stiffnesses ``k_minus``,
         ``k_plus`` (complex, N m/rad) below and above it, ascending; empty without."""
         n = ctypes.c_int()
-        self._err.check(_jump_count(self._err.ptr, self._ptr, ctypes.byref(n)))
+        self._err.check(_capi.damper_jump_count(self._err.ptr, self._ptr, ctypes.byref(n)))
         out = []
         for i in range(n.value):
             g = ctypes.c_double()
             km, kp = (ctypes.c_double * 2)(), (ctypes.c_double * 2)()
-            self._err.check(_jump_get(self._err.ptr, self._ptr, i, ctypes.byref(g), km, kp))
+            self._err.check(_capi.damper_jump_get(self._err.ptr, self._ptr, i, ctypes.byref(g),
+                                                  km, kp))
             out.append({"gamma_c": g.value, "k_minus": complex(km[0], km[1]),
                         "k_plus": complex(kp[0], kp[1])})
         return out
 
     def set_CF(self, CF) -> None:
         """New centrifugal load [N] (asymmetric kind): rescales, no new tracing."""
-        self._err.check(_set_CF(self._err.ptr, self._ptr, _number("CF", CF)))
+        self._err.check(_capi.damper_set_CF(self._err.ptr, self._ptr, _number("CF", CF)))
 
     def __repr__(self) -> str:
         i = self._info()
@@ -235,3 +227,19 @@ class Damper:
                 f"M_max={i.M_max:.6g} N m, M_min={i.M_min:.6g} N m, k_stuck={i.k_stuck:.6g} "
                 f"N m/rad, lift_off={bool(i.lift_off)})")
 
+
+class AsymmetricBuilder:
+    """Builds asymmetric dampers from C parameter blocks, the 16 numbers of
+    :data:`ASYMMETRIC_FIELDS` in order (what :meth:`Damper.asymmetric` passes to the kernel),
+    with one error handle for all of them (a design of experiments builds one per design)."""
+
+    def __init__(self):
+        self._err = ErrorHandle()
+
+    def build(self, values) -> Damper:
+        """The asymmetric damper of the parameter block ``values`` (floats)."""
+        params = _capi.AsymmetricParams(*values)
+        ptr = _vp()
+        self._err.check(_capi.new_damper_asymmetric(self._err.ptr, ctypes.byref(params),
+                                                    ctypes.byref(ptr)))
+        return Damper(ptr, self._err, "asymmetric")

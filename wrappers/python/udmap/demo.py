@@ -26,13 +26,13 @@ from pathlib import Path
 import numpy as np
 
 from . import plots
+from .case import Case, build_blade, build_damper, build_model, load_case, validate
 from .progress import Progress
 
 DEMO_FORCES = tuple(float(f) for f in range(1, 11))
 
 
 def _as_case(case):
-    from .case import Case, load_case, validate
     if case is None:
         return load_case(None)
     if isinstance(case, Case):
@@ -59,7 +59,6 @@ def _write_csv(path: Path, header: list[str], rows, comment: str = "") -> None:
 def _undamped_twin(case, damper):
     """The same case without structural damping (zeta = 0), or None if the blade has an
     explicit C or no damping already."""
-    from .case import build_blade, build_model
     b = case.blade
     if b.get("zeta", 0.0) == 0.0 or (b["kind"] == "matrices" and b.get("C")):
         return None
@@ -72,7 +71,6 @@ def _undamped_twin(case, damper):
 def run_demo(case=None, outdir="out/demo", forces=DEMO_FORCES, quiet: bool = False) -> dict:
     """Runs the demo on ``case`` (a Case, a case dict, a path, or None for the embedded blade
     A) and writes the plots and CSV files into ``outdir``. Returns the summary as a dict."""
-    from .case import build_blade, build_damper, build_model
     case = _as_case(case)
     out = Path(outdir)
     out.mkdir(parents=True, exist_ok=True)

@@ -1,6 +1,6 @@
 """``udmap fmu CASE --out NAME.fmu [--fmi 2|3]``: an FMU of the user's case.
 
-The generic FMU (``_lib.fmu_path``) is re-used as it is: the same binary, which finds the case
+The generic FMU (``udmap.fmu_path``) is re-used as it is: the same binary, which finds the case
 in ``resources/udmap-case.txt`` at instantiation (fmu/case.h) and reads the blade's matrices
 and the damper through the kernel's own readers. What changes is the description: the case's
 own instantiation token (a hash of the case's content and of the generic FMU's token), start
@@ -23,8 +23,9 @@ import xml.etree.ElementTree as ET
 import zipfile
 from pathlib import Path
 
-from ._lib import InputError, fmu_path
-from .case import Case, beam_params
+from .case import EIGEN_METHODS, Case, beam_params, load_case
+from .errors import InputError
+from .locate import fmu_path
 
 BEAM = ["neck_L", "neck_h", "neck_b", "platform_L", "platform_m", "platform_J", "airfoil_L",
         "airfoil_h", "airfoil_b", "neck_elements", "airfoil_elements", "E", "rho"]
@@ -95,7 +96,6 @@ def _case_file(case: Case, starts: dict, absent: set, files: dict) -> str:
             lines.append(f"delta_M {float(d['delta_M'])!r}")
         lines.append(f"table {len(d['rows'])}")
         lines += [" ".join(repr(float(x)) for x in row) for row in d["rows"]]
-    from .case import EIGEN_METHODS
     lines += [f"rtol {float(a['rtol'])!r}", f"grid_per_decade {int(a['grid_per_decade'])}",
               f"eigen_method {int(EIGEN_METHODS[a['eigen_method']])}",
               f"dense_max {int(a['dense_max'])}", f"sweep_points {int(a['sweep_points'])}",
@@ -222,7 +222,6 @@ def write_case_fmu(case: Case, out: Path, fmi: int = 2, source: str = "") -> Pat
 
 
 def cmd_fmu(args) -> None:
-    from .case import load_case
     if not args.out.endswith(".fmu"):
         raise InputError(f"--out must name a .fmu file, got {args.out!r}")
     case = load_case(args.case)

@@ -6,8 +6,8 @@ Newton-Raphson and arc-length continuation over the band for each force, the pea
 harmonic of gamma_P located on the continued curve. ``dti``: Newmark integration of the whole
 blade with the quasi-static damper from rest to a true steady state.
 
-The damper enters through its parameters (the ``damper`` section of a case): these methods
-need its contact law in time, not the stiffness table.
+The damper enters as a :class:`Contact`, its contact law in time (not the stiffness table);
+:func:`udmap.case.build_contact` makes one from the ``damper`` section of a case.
 """
 from __future__ import annotations
 
@@ -16,130 +16,35 @@ from typing import Iterable
 
 import numpy as np
 
-from ._lib import ErrorHandle, InputError, PhysicsError, as_doubles, declare, lib
-
-_c_double_p = ctypes.POINTER(ctypes.c_double)
-_c_int_p = ctypes.POINTER(ctypes.c_int)
+from . import _capi
+from ._capi import ErrorHandle, as_doubles
+from .blade import Blade
+from .damper import Damper, asymmetric_params
+from .errors import InputError, PhysicsError
+from .model import Model
 
 CONDENSED, FULL = 0, 1
-MAX_ROOTS = 8
-MAX_HARMONICS = 64
+MAX_ROOTS = _capi.MAX_ROOTS
+MAX_HARMONICS = _capi.MAX_HARMONICS
 VARIANTS = {"condensed": CONDENSED, "standard_condensed": CONDENSED,
             "full": FULL, "standard_full": FULL}
+HbmSettings = _capi.HbmSettings
+HbmPoint = _capi.HbmPoint
+DtiSettings = _capi.DtiSettings
+DtiPoint = _capi.DtiPoint
+_c_double_p = _capi.c_double_p
 
 
-class HbmSettings(ctypes.Structure):
-    """udmap_hbm_settings (defaults from the kernel)."""
-    _fields_ = [("harmonics", ctypes.c_int), ("harmonic0", ctypes.c_int),
-                ("variant", ctypes.c_int), ("tol", ctypes.c_double),
-                ("max_iter", ctypes.c_int), ("ds_initial", ctypes.c_double),
-                ("ds_min", ctypes.c_double), ("ds_max", ctypes.c_double),
-                ("target_iter", ctypes.c_int), ("max_angle", ctypes.c_double),
-                ("max_steps", ctypes.c_int), ("peak_tol", ctypes.c_double),
-                ("aft_samples", ctypes.c_int), ("aft_max_periods", ctypes.c_int),
-                ("fd_step", ctypes.c_double), ("gamma_limit", ctypes.c_double),
-                ("full_band", ctypes.c_int), ("jacobian_reuse", ctypes.c_int),
-                ("tol_path", ctypes.c_double), ("warm_start", ctypes.c_int)]
-
-
-class HbmPoint(ctypes.Structure):
-    """udmap_hbm_point."""
-    _fields_ = [("F_E", ctypes.c_double), ("gamma_P", ctypes.c_double),
-                ("f_res", ctypes.c_double), ("sigma_a", ctypes.c_double),
-                ("u_E", ctypes.c_double), ("k_re", ctypes.c_double), ("k_im", ctypes.c_double),
-                ("gamma_max", ctypes.c_double), ("npeaks", ctypes.c_int),
-                ("peaks", ctypes.c_double * MAX_ROOTS), ("peak_f", ctypes.c_double * MAX_ROOTS),
-                ("harmonics", ctypes.c_int), ("gamma_h", ctypes.c_double * MAX_HARMONICS),
-                ("steps", ctypes.c_int), ("iterations", ctypes.c_int),
-                ("aft_calls", ctypes.c_int), ("seconds", ctypes.c_double),
-                ("lift_off", ctypes.c_int)]
-
-
-class DtiSettings(ctypes.Structure):
-    """udmap_dti_settings (defaults from the kernel)."""
-    _fields_ = [("steps_per_period", ctypes.c_int), ("ss_tol", ctypes.c_double),
-                ("min_periods", ctypes.c_int), ("max_periods", ctypes.c_int),
-                ("peak_rtol", ctypes.c_double), ("peak_window", ctypes.c_double),
-                ("gamma_limit", ctypes.c_double)]
-
-
-class DtiPoint(ctypes.Structure):
-    """udmap_dti_point."""
-    _fields_ = [("F_E", ctypes.c_double), ("f", ctypes.c_double), ("gamma_1", ctypes.c_double),
-                ("sigma_1", ctypes.c_double), ("gamma_max", ctypes.c_double),
-                ("gamma_0", ctypes.c_double), ("ss_error", ctypes.c_double),
-                ("periods", ctypes.c_int), ("runs", ctypes.c_int), ("seconds", ctypes.c_double),
-                ("lift_off", ctypes.c_int)]
-
-
-_vp = ctypes.c_void_p
-_new_jenkins = declare("udmap_new_contact_jenkins",
-                       [_vp, ctypes.c_double, ctypes.c_double, ctypes.POINTER(_vp)])
-_delete_contact = declare("udmap_delete_contact", [ctypes.POINTER(_vp)], None)
-_contact_aft = declare("udmap_contact_aft",
-                       [_vp, _vp, ctypes.c_int, ctypes.c_double, _c_double_p, ctypes.c_int,
-                        _c_double_p, _c_double_p, _c_double_p])
-_hbm_defaults = declare("udmap_hbm_defaults", [ctypes.POINTER(HbmSettings)], None)
-_hbm_peaks = declare("udmap_hbm_peaks",
-                     [_vp, _vp, _vp, ctypes.c_double, ctypes.c_double,
-                      ctypes.POINTER(HbmSettings), ctypes.c_int, _c_double_p,
-                      ctypes.POINTER(HbmPoint)])
-_hbm_response = declare("udmap_hbm_response",
-                        [_vp, _vp, _vp, ctypes.c_double, ctypes.c_double,
-                         ctypes.POINTER(HbmSettings), ctypes.c_int, _c_double_p,
-                         ctypes.POINTER(HbmPoint)])
-_hbm_curve = declare("udmap_hbm_curve",
-                     [_vp, _vp, _vp, ctypes.c_double, ctypes.c_double,
-                      ctypes.POINTER(HbmSettings), ctypes.c_double, ctypes.c_int, _c_int_p,
-                      _c_double_p, _c_double_p, _c_double_p, _c_double_p])
-_dti_defaults = declare("udmap_dti_defaults", [ctypes.POINTER(DtiSettings)], None)
-_dti_response = declare("udmap_dti_response",
-                        [_vp, _vp, _vp, ctypes.POINTER(DtiSettings), ctypes.c_double,
-                         ctypes.c_int, _c_double_p, ctypes.POINTER(DtiPoint)])
-_dti_peak = declare("udmap_dti_peak",
-                    [_vp, _vp, _vp, ctypes.POINTER(DtiSettings), ctypes.c_double,
-                     ctypes.c_double, ctypes.c_int, _c_double_p, ctypes.POINTER(DtiPoint)])
-
-
-class _AsymmetricParams(ctypes.Structure):
-    """udmap_asymmetric_params (wrappers/c/udmap.h)."""
-    _fields_ = [(name, ctypes.c_double) for name in (
-        "CF", "mu", "pitch", "y_P", "beta_L_deg", "beta_R_deg", "flat1_x", "flat1_y",
-        "flat2_x", "flat2_y", "curved_x", "curved_y", "kn_flat", "kt_flat", "kn_curved",
-        "kt_curved")]
-
-
-def _asymmetric_params(damper: dict) -> _AsymmetricParams:
-    """udmap_asymmetric_params from the damper section of a case."""
-    try:
-        (f1x, f1y), (f2x, f2y) = damper["flat_points"]
-        cx, cy = damper["curved_point"]
-        return _AsymmetricParams(
-            *(float(damper[k]) for k in ("CF", "mu", "pitch", "y_P", "beta_L_deg", "beta_R_deg")),
-            float(f1x), float(f1y), float(f2x), float(f2y), float(cx), float(cy),
-            *(float(damper[k]) for k in ("kn_flat", "kt_flat", "kn_curved", "kt_curved")))
-    except (KeyError, TypeError, ValueError) as exc:
-        raise InputError(f"damper: asymmetric parameters incomplete or invalid ({exc})")
-
-
-def _new_asymmetric():
-    return declare("udmap_new_contact_asymmetric",
-                   [_vp, ctypes.POINTER(_AsymmetricParams), ctypes.POINTER(_vp)])
-
-
-def _blade_ptr(blade) -> ctypes.c_void_p:
-    """The udmap_blade handle of a Blade object (or a raw handle)."""
-    for name in ("_handle", "handle", "_ptr", "ptr"):
-        ptr = getattr(blade, name, None)
-        if ptr is not None:
-            return ptr if isinstance(ptr, ctypes.c_void_p) else ctypes.c_void_p(ptr)
-    if isinstance(blade, (int, ctypes.c_void_p)):
-        return blade if isinstance(blade, ctypes.c_void_p) else ctypes.c_void_p(blade)
-    raise InputError("hbm: 'blade' must be a udmap Blade")
+def _blade_ptr(blade: Blade) -> ctypes.c_void_p:
+    """The udmap_blade handle of a Blade."""
+    if not isinstance(blade, Blade):
+        raise InputError("hbm: 'blade' must be a udmap Blade")
+    return blade.handle
 
 
 class Contact:
-    """The damper's contact law in time: a hysteretic element driven along gamma(t)."""
+    """The damper's contact law in time: a hysteretic element driven along gamma(t). Build it
+    with :meth:`jenkins` or :meth:`asymmetric` (from a case: :func:`udmap.case.build_contact`)."""
 
     def __init__(self, ptr: ctypes.c_void_p):
         self.ptr = ptr
@@ -149,34 +54,24 @@ class Contact:
         """Rotational Jenkins element (PHYSICS.md 2.4): kt [N m/rad], M_slip [N m]."""
         err = ErrorHandle()
         ptr = ctypes.c_void_p()
-        err.check(_new_jenkins(err.ptr, float(kt), float(M_slip), ctypes.byref(ptr)))
+        err.check(_capi.new_contact_jenkins(err.ptr, float(kt), float(M_slip), ctypes.byref(ptr)))
         return cls(ptr)
 
     @classmethod
-    def from_params(cls, damper: dict) -> "Contact":
-        """From the ``damper`` section of a case (kinds ``jenkins`` and ``asymmetric``)."""
-        kind = damper.get("kind")
-        if kind == "jenkins":
-            return cls.jenkins(damper["kt"], damper["M_slip"])
-        if kind == "asymmetric":
-            return cls.asymmetric(damper)
-        raise InputError(f"damper.kind '{kind}': the standard method and the time integration "
-                         "need a contact model ('asymmetric' or 'jenkins'), not a table")
-
-    @classmethod
-    def asymmetric(cls, damper: dict) -> "Contact":
-        """The asymmetric flat/curved damper (PHYSICS.md 2.1) from its case parameters (the
-        damper section of a case: CF, mu, pitch, y_P, beta_L_deg, beta_R_deg, flat_points,
-        curved_point, kn_flat, kt_flat, kn_curved, kt_curved)."""
-        params = _asymmetric_params(damper)
+    def asymmetric(cls, CF, mu, pitch, y_P, beta_L_deg, beta_R_deg, flat_points, curved_point,
+                   kn_flat, kt_flat, kn_curved, kt_curved) -> "Contact":
+        """The asymmetric flat/curved damper (PHYSICS.md 2.1), parameters as in
+        :meth:`udmap.Damper.asymmetric`."""
+        params = asymmetric_params(CF, mu, pitch, y_P, beta_L_deg, beta_R_deg, flat_points,
+                                   curved_point, kn_flat, kt_flat, kn_curved, kt_curved)
         err = ErrorHandle()
         ptr = ctypes.c_void_p()
-        err.check(_new_asymmetric()(err.ptr, ctypes.byref(params), ctypes.byref(ptr)))
+        err.check(_capi.new_contact_asymmetric(err.ptr, ctypes.byref(params), ctypes.byref(ptr)))
         return cls(ptr)
 
     def __del__(self):
-        if getattr(self, "ptr", None) is not None and lib is not None:
-            _delete_contact(ctypes.byref(self.ptr))
+        if getattr(self, "ptr", None) is not None and _capi is not None and _capi.lib is not None:
+            _capi.delete_contact(ctypes.byref(self.ptr))
 
     def aft(self, G, G0: float = 0.0, samples: int = 0):
         """The steady moment for gamma(tau) = G0 + Re(sum_h G[h-1] e^{i h tau}) with the loading
@@ -188,23 +83,22 @@ class Contact:
         mp = M.ctypes.data_as(_c_double_p)
         M0, gmax = ctypes.c_double(), ctypes.c_double()
         err = ErrorHandle()
-        err.check(_contact_aft(err.ptr, self.ptr, H, float(G0), gp, int(samples),
-                               ctypes.byref(M0), mp, ctypes.byref(gmax)))
+        err.check(_capi.contact_aft(err.ptr, self.ptr, H, float(G0), gp, int(samples),
+                                    ctypes.byref(M0), mp, ctypes.byref(gmax)))
         return M0.value, M[0::2] + 1j*M[1::2], gmax.value
 
 
-def _contact(damper) -> Contact:
-    if isinstance(damper, Contact):
-        return damper
-    if isinstance(damper, dict):
-        return Contact.from_params(damper)
-    raise InputError("hbm: 'damper' must be the damper section of a case (dict) or a Contact")
+def _contact(contact) -> Contact:
+    if isinstance(contact, Contact):
+        return contact
+    raise InputError("hbm: 'damper' must be a Contact (udmap.case.build_contact makes one from "
+                     "the damper section of a case)")
 
 
 def hbm_settings(harmonics: int = 1, variant: str = "condensed", **kw) -> HbmSettings:
     """Kernel defaults, with `harmonics`, `variant` and any field of udmap_hbm_settings."""
     s = HbmSettings()
-    _hbm_defaults(ctypes.byref(s))
+    _capi.hbm_defaults(ctypes.byref(s))
     if variant not in VARIANTS:
         raise InputError(f"hbm: variant must be 'condensed' or 'full', got {variant!r}")
     s.harmonics = int(harmonics)
@@ -219,7 +113,7 @@ def hbm_settings(harmonics: int = 1, variant: str = "condensed", **kw) -> HbmSet
 def dti_settings(**kw) -> DtiSettings:
     """Kernel defaults, with any field of udmap_dti_settings."""
     s = DtiSettings()
-    _dti_defaults(ctypes.byref(s))
+    _capi.dti_defaults(ctypes.byref(s))
     for key, value in kw.items():
         if key not in dict(DtiSettings._fields_):
             raise InputError(f"dti: unknown setting {key!r}")
@@ -247,24 +141,24 @@ def _hbm_dict(p: HbmPoint) -> dict:
             "seconds": p.seconds}
 
 
-def hbm(blade, damper, f_min: float, f_max: float, F_E: Iterable[float], harmonics: int = 1,
-        variant: str = "condensed", sigma_all: float = 80e6, classify: bool = True,
+def hbm(blade, contact, f_min: float, f_max: float, F_E: Iterable[float], harmonics: int = 1,
+        variant: str = "condensed", sigma_all: float = 80e6, damper: "Damper | None" = None,
         progress=None, **settings) -> list[dict]:
     """Peaks of the response by the standard method for each force.
 
-    blade: a udmap Blade; damper: the case's damper section (dict) or a Contact; band
-    [f_min, f_max] in Hz; variant 'condensed' or 'full'; settings: fields of
-    udmap_hbm_settings (tol, tol_path, ds_max, aft_samples, harmonic0, jacobian_reuse,
-    warm_start, ...; with warm_start the forces go to the kernel in one call, in the order
-    given, each started from the previous one's peak).
+    blade: a udmap Blade; contact: a Contact; band [f_min, f_max] in Hz; variant 'condensed'
+    or 'full'; settings: fields of udmap_hbm_settings (tol, tol_path, ds_max, aft_samples,
+    harmonic0, jacobian_reuse, warm_start, ...; with warm_start the forces go to the kernel in
+    one call, in the order given, each started from the previous one's peak).
     Returns per force the backbone fields (F_E, gamma_P, f_res, sigma_a, u_E, k_re, k_im,
-    roots: every local maximum of gamma_1, ascending; with classify and a damper dict also
-    regime and hcf_ok from F_lim, gamma_s, gamma_b) plus gamma_max, gamma_h (|Gamma_h|),
-    peak_f, lift_off, steps, iterations, aft_calls and seconds (kernel wall time of that
-    force). A response the standard method finds unbounded (at or above F_lim without enough
-    damping) is a point with unbounded=True and a message, as for the backbone.
+    roots: every local maximum of gamma_1, ascending; with ``damper``, the same damper's
+    k(gamma) face (a udmap Damper), also F_lim, regime and hcf_ok from F_lim, gamma_s,
+    gamma_b) plus gamma_max, gamma_h (|Gamma_h|), peak_f, lift_off, steps, iterations,
+    aft_calls and seconds (kernel wall time of that force). A response the standard method
+    finds unbounded (at or above F_lim without enough damping) is a point with unbounded=True
+    and a message, as for the backbone.
     progress: optional callable, called with 1 after each force (e.g. Progress.update)."""
-    contact = _contact(damper)
+    contact = _contact(contact)
     s = hbm_settings(harmonics, variant, **settings)
     arr, _ = _forces(F_E)
     out = []
@@ -274,8 +168,8 @@ def hbm(blade, damper, f_min: float, f_max: float, F_E: Iterable[float], harmoni
         pts = (HbmPoint * len(arr))()
         err = ErrorHandle()
         try:
-            err.check(_hbm_peaks(err.ptr, _blade_ptr(blade), contact.ptr, float(f_min),
-                                 float(f_max), ctypes.byref(s), len(arr), ptr, pts))
+            err.check(_capi.hbm_peaks(err.ptr, _blade_ptr(blade), contact.ptr, float(f_min),
+                                      float(f_max), ctypes.byref(s), len(arr), ptr, pts))
         except PhysicsError as exc:
             if "unbounded" not in str(exc):
                 raise
@@ -290,8 +184,8 @@ def hbm(blade, damper, f_min: float, f_max: float, F_E: Iterable[float], harmoni
         pts = (HbmPoint * 1)()
         err = ErrorHandle()
         try:
-            err.check(_hbm_peaks(err.ptr, _blade_ptr(blade), contact.ptr, float(f_min),
-                                 float(f_max), ctypes.byref(s), 1, ptr, pts))
+            err.check(_capi.hbm_peaks(err.ptr, _blade_ptr(blade), contact.ptr, float(f_min),
+                                      float(f_max), ctypes.byref(s), 1, ptr, pts))
         except PhysicsError as exc:
             if "unbounded" not in str(exc):
                 raise
@@ -300,19 +194,19 @@ def hbm(blade, damper, f_min: float, f_max: float, F_E: Iterable[float], harmoni
             out.append(_hbm_dict(pts[0]))
         if progress is not None:
             progress(1)
-    if classify and isinstance(damper, dict):
-        _classify(blade, damper, f_min, f_max, sigma_all, out)
+    if damper is not None:
+        classify(blade, damper, f_min, f_max, sigma_all, out)
     return out
 
 
-def _classify(blade, damper: dict, f_min, f_max, sigma_all, points: list[dict]) -> None:
+def classify(blade: Blade, damper: Damper, f_min, f_max, sigma_all, points: list[dict]) -> None:
     """Adds regime (0 stuck, 1 partial slip, 2 full slip, 3 at or above F_lim) and hcf_ok
-    (F_E <= 0.5 F_lim and sigma_a <= sigma_all) as the backbone defines them."""
-    from .case import Case, build_damper
-    from .model import Model
-    kd = build_damper(Case(blade={}, damper=damper, analysis={}))
-    F_lim = Model(blade, kd, f_min, f_max, sigma_all=sigma_all).limit_force()
-    gamma_s, gamma_b = kd.gamma_s, kd.gamma_b
+    (F_E <= 0.5 F_lim and sigma_a <= sigma_all) as the backbone defines them. The kernel
+    classifies its own backbone points (regime_of in kernel/src/mapping/model_data.f90) but
+    does not offer that classification for other points through the C API: this is the same
+    rule, on the kernel's F_lim, gamma_s and gamma_b."""
+    F_lim = Model(blade, damper, f_min, f_max, sigma_all=sigma_all).limit_force()
+    gamma_s, gamma_b = damper.gamma_s, damper.gamma_b
     for p in points:
         p["F_lim"] = F_lim
         if p["F_E"] >= F_lim:
@@ -329,32 +223,33 @@ def _classify(blade, damper: dict, f_min, f_max, sigma_all, points: list[dict]) 
                            and p["sigma_a"] <= sigma_all)
 
 
-def hbm_response(blade, damper, f_min: float, f_exc: float, F_E: Iterable[float],
+def hbm_response(blade, contact, f_min: float, f_exc: float, F_E: Iterable[float],
                  harmonics: int = 1, variant: str = "condensed", **settings) -> list[dict]:
     """The response at f_exc [Hz] for each force, reached by continuation from f_min."""
-    contact = _contact(damper)
+    contact = _contact(contact)
     s = hbm_settings(harmonics, variant, **settings)
     arr, ptr = _forces(F_E)
     pts = (HbmPoint * max(1, len(arr)))()
     err = ErrorHandle()
-    err.check(_hbm_response(err.ptr, _blade_ptr(blade), contact.ptr, float(f_min), float(f_exc),
-                            ctypes.byref(s), len(arr), ptr, pts))
+    err.check(_capi.hbm_response(err.ptr, _blade_ptr(blade), contact.ptr, float(f_min),
+                                 float(f_exc),
+                                 ctypes.byref(s), len(arr), ptr, pts))
     return [_hbm_dict(pts[i]) for i in range(len(arr))]
 
 
-def hbm_curve(blade, damper, f_min: float, f_max: float, F_E: float, harmonics: int = 1,
+def hbm_curve(blade, contact, f_min: float, f_max: float, F_E: float, harmonics: int = 1,
               variant: str = "condensed", **settings) -> dict:
     """The continued response curve of one force: arrays f [Hz], gamma_1, sigma_1, gamma_max."""
-    contact = _contact(damper)
+    contact = _contact(contact)
     s = hbm_settings(harmonics, variant, **settings)
     cap = 4096
     while True:
         bufs = [np.zeros(cap) for _ in range(4)]
         n = ctypes.c_int()
         err = ErrorHandle()
-        err.check(_hbm_curve(err.ptr, _blade_ptr(blade), contact.ptr, float(f_min),
-                             float(f_max), ctypes.byref(s), float(F_E), cap, ctypes.byref(n),
-                             *[b.ctypes.data_as(_c_double_p) for b in bufs]))
+        err.check(_capi.hbm_curve(err.ptr, _blade_ptr(blade), contact.ptr, float(f_min),
+                                  float(f_max), ctypes.byref(s), float(F_E), cap, ctypes.byref(n),
+                                  *[b.ctypes.data_as(_c_double_p) for b in bufs]))
         if n.value <= cap:
             break
         cap = n.value
@@ -363,7 +258,7 @@ def hbm_curve(blade, damper, f_min: float, f_max: float, F_E: float, harmonics: 
             "sigma_1": bufs[2][:m], "gamma_max": bufs[3][:m]}
 
 
-def dti(blade, damper, F_E: Iterable[float], freq: float | None = None, peak: bool = False,
+def dti(blade, contact, F_E: Iterable[float], freq: float | None = None, peak: bool = False,
         f_min: float | None = None, f_max: float | None = None, progress=None,
         **settings) -> list[dict]:
     """Time integration to steady state for each force, at `freq` [Hz] or, with peak=True, at
@@ -372,7 +267,7 @@ def dti(blade, damper, F_E: Iterable[float], freq: float | None = None, peak: bo
     callable, called with 1 after each force.
     Returns dicts {F_E, f, gamma_1, sigma_1, gamma_max, gamma_0, ss_error, periods, runs,
     seconds, lift_off}."""
-    contact = _contact(damper)
+    contact = _contact(contact)
     s = dti_settings(**settings)
     arr, _ = _forces(F_E)
     if peak and (f_min is None or f_max is None):
@@ -386,11 +281,11 @@ def dti(blade, damper, F_E: Iterable[float], freq: float | None = None, peak: bo
         pts = (DtiPoint * 1)()
         err = ErrorHandle()
         if peak:
-            err.check(_dti_peak(err.ptr, _blade_ptr(blade), contact.ptr, ctypes.byref(s),
-                                float(f_min), float(f_max), 1, ptr, pts))
+            err.check(_capi.dti_peak(err.ptr, _blade_ptr(blade), contact.ptr, ctypes.byref(s),
+                                     float(f_min), float(f_max), 1, ptr, pts))
         else:
-            err.check(_dti_response(err.ptr, _blade_ptr(blade), contact.ptr, ctypes.byref(s),
-                                    float(freq), 1, ptr, pts))
+            err.check(_capi.dti_response(err.ptr, _blade_ptr(blade), contact.ptr, ctypes.byref(s),
+                                         float(freq), 1, ptr, pts))
         p = {k: getattr(pts[0], k) for k in keys}
         p["lift_off"] = bool(p["lift_off"])
         out.append(p)

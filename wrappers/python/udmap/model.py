@@ -14,72 +14,16 @@ import math
 
 import numpy as np
 
-from ._lib import ErrorHandle, as_doubles, c_double_p, c_int_p, declare
+from . import _capi
+from ._capi import ErrorHandle, as_doubles
+from .errors import InputError
 
 REGIME_NAMES = {0: "stuck", 1: "partial slip", 2: "full slip", 3: "at or above F_lim"}
 BRANCH_LOWER, BRANCH_UPPER, BRANCH_TURNING = 0, 1, 2
-MAX_ROOTS = 8
+MAX_ROOTS = _capi.MAX_ROOTS
 UNBOUNDED_MESSAGE = ("without structural damping (zeta = 0) friction cannot bound the response "
                      "to this force (F_E >= F_lim, or above the asymptote of the backbone): the "
                      "amplitude is unbounded")
-
-
-class _Analysis(ctypes.Structure):
-    _fields_ = [("f_min", ctypes.c_double), ("f_max", ctypes.c_double),
-                ("sigma_all", ctypes.c_double), ("rtol", ctypes.c_double),
-                ("grid_per_decade", ctypes.c_int), ("eigen_method", ctypes.c_int),
-                ("dense_max", ctypes.c_int), ("sweep_points", ctypes.c_int),
-                ("harmonics", ctypes.c_int), ("harmonic_tol", ctypes.c_double)]
-
-
-class _Point(ctypes.Structure):
-    _fields_ = [("F_E", ctypes.c_double), ("gamma_P", ctypes.c_double),
-                ("f_res", ctypes.c_double), ("sigma_a", ctypes.c_double),
-                ("u_E", ctypes.c_double), ("k_re", ctypes.c_double), ("k_im", ctypes.c_double),
-                ("regime", ctypes.c_int), ("hcf_ok", ctypes.c_int), ("unbounded", ctypes.c_int),
-                ("nroots", ctypes.c_int), ("roots", ctypes.c_double * MAX_ROOTS),
-                ("gamma_max", ctypes.c_double), ("sigma_max", ctypes.c_double),
-                ("harmonics", ctypes.c_int),
-                # the C struct's tail padding, named so that numpy sees the full item size
-                ("_pad", ctypes.c_int)]
-
-
-_vp = ctypes.c_void_p
-_analysis_defaults = declare("udmap_analysis_defaults", [ctypes.POINTER(_Analysis)], None)
-_new_model = declare("udmap_new_model", [_vp, _vp, _vp, ctypes.POINTER(_Analysis),
-                                         ctypes.POINTER(_vp)])
-_delete_model = declare("udmap_delete_model", [ctypes.POINTER(_vp)], None)
-_set_damper = declare("udmap_model_set_damper", [_vp, _vp, _vp])
-_limit_force = declare("udmap_model_limit_force", [_vp, _vp, c_double_p])
-_limit_force_backbone = declare("udmap_model_limit_force_backbone", [_vp, _vp, c_double_p])
-_backbone_jumps = declare("udmap_model_backbone_jumps", [_vp, _vp, ctypes.c_int, c_int_p])
-_backbone_curve = declare("udmap_model_backbone_curve",
-                          [_vp, _vp, ctypes.c_int, c_double_p, c_double_p, c_double_p])
-_backbone = declare("udmap_model_backbone",
-                    [_vp, _vp, ctypes.c_int, c_double_p, ctypes.POINTER(_Point)])
-_response = declare("udmap_model_response", [_vp, _vp, ctypes.c_double, ctypes.c_int,
-                                             c_double_p, ctypes.POINTER(_Point)])
-_curves = declare("udmap_model_curves", [_vp, _vp, ctypes.c_int, c_double_p, ctypes.c_int])
-_curve_size = declare("udmap_model_curve_size", [_vp, _vp, ctypes.c_int, c_int_p])
-_curve_get = declare("udmap_model_curve_get", [_vp, _vp, ctypes.c_int, ctypes.c_int, c_double_p,
-                                               c_double_p, c_double_p, c_int_p, c_int_p])
-_set_harmonics = declare("udmap_model_set_harmonics", [_vp, _vp, ctypes.c_int, ctypes.c_double])
-_admissible = declare("udmap_model_admissible_force", [_vp, _vp, ctypes.c_double,
-                                                      ctypes.c_double, ctypes.c_double,
-                                                      c_double_p])
-_set_force_table = declare("udmap_model_set_force_table", [_vp, _vp, ctypes.c_int])
-_point_harmonics = declare("udmap_model_point_harmonics", [_vp, _vp, ctypes.c_int, ctypes.c_int,
-                                                           c_double_p, c_double_p, c_int_p])
-_blade_get_size = declare("udmap_blade_get_size", [_vp, _vp, c_int_p, c_int_p])
-
-
-def _handle(obj):
-    """The kernel handle of a Blade or Damper object."""
-    for name in ("_handle", "_ptr"):
-        h = getattr(obj, name, None)
-        if h is not None:
-            return h
-    raise TypeError(f"{type(obj).__name__} has no kernel handle")
 
 
 def harmonics_code(harmonics) -> int:
@@ -88,7 +32,6 @@ def harmonics_code(harmonics) -> int:
         return 0
     if isinstance(harmonics, bool) or not isinstance(harmonics, (int, np.integer)) \
             or not 1 <= int(harmonics) <= 64:
-        from ._lib import InputError
         raise InputError(f"harmonics must be an integer from 1 to 64 or 'auto', got {harmonics!r}")
     return int(harmonics)
 
@@ -119,44 +62,45 @@ class Model:
                  dense_max: int = 200, sweep_points: int = 400, harmonics=1,
                  harmonic_tol: float = 1e-3):
         self._err = ErrorHandle()
-        self._ptr = _vp()
+        self._ptr = ctypes.c_void_p()
         self.blade = blade
         self.damper = damper
-        a = _Analysis()
-        _analysis_defaults(ctypes.byref(a))
+        a = _capi.Analysis()
+        _capi.analysis_defaults(ctypes.byref(a))
         a.f_min, a.f_max, a.sigma_all, a.rtol = f_min, f_max, sigma_all, rtol
         a.grid_per_decade, a.eigen_method = int(grid_per_decade), int(eigen_method)
         a.dense_max, a.sweep_points = int(dense_max), int(sweep_points)
         a.harmonics, a.harmonic_tol = harmonics_code(harmonics), float(harmonic_tol)
         self.f_min, self.f_max, self.sigma_all = float(f_min), float(f_max), float(sigma_all)
-        self._err.check(_new_model(self._err.ptr, _handle(blade), _handle(damper),
-                                   ctypes.byref(a), ctypes.byref(self._ptr)))
+        self._err.check(_capi.new_model(self._err.ptr, blade.handle, damper.handle,
+                                        ctypes.byref(a), ctypes.byref(self._ptr)))
         ndof, has_stress = ctypes.c_int(), ctypes.c_int()
-        self._err.check(_blade_get_size(self._err.ptr, _handle(blade), ctypes.byref(ndof),
-                                        ctypes.byref(has_stress)))
+        self._err.check(_capi.blade_get_size(self._err.ptr, blade.handle, ctypes.byref(ndof),
+                                             ctypes.byref(has_stress)))
         self.has_stress = bool(has_stress.value)
 
     def __del__(self):
         ptr = getattr(self, "_ptr", None)
-        if ptr is not None and ptr.value and _delete_model is not None:
-            _delete_model(ctypes.byref(ptr))
+        if ptr is not None and ptr.value and _capi is not None and _capi.lib is not None:
+            _capi.delete_model(ctypes.byref(ptr))
 
     def set_damper(self, damper) -> None:
         """Couples another damper (e.g. after a change of its parameters): the bare-blade data
         are kept, the backbone table is rebuilt on next use."""
-        self._err.check(_set_damper(self._err.ptr, self._ptr, _handle(damper)))
+        self._err.check(_capi.model_set_damper(self._err.ptr, self._ptr, damper.handle))
         self.damper = damper
 
     def set_harmonics(self, harmonics, harmonic_tol: float = 1e-3) -> None:
         """Harmonics for the next calls (1, H up to 64, or "auto"), keeping every cache."""
-        self._err.check(_set_harmonics(self._err.ptr, self._ptr, harmonics_code(harmonics),
-                                       float(harmonic_tol)))
+        self._err.check(_capi.model_set_harmonics(self._err.ptr, self._ptr,
+                                                  harmonics_code(harmonics),
+                                                  float(harmonic_tol)))
 
     def set_force_table(self, on: bool = True) -> None:
         """Backbone points at harmonics != 1 from the force table (as the FMU after a change of
         F_E alone): interpolated to harmonic_tol/1000 where a verified panel of exact points
         holds F_E, solved exactly elsewhere."""
-        self._err.check(_set_force_table(self._err.ptr, self._ptr, int(bool(on))))
+        self._err.check(_capi.model_set_force_table(self._err.ptr, self._ptr, int(bool(on))))
 
     def admissible_force(self, F_lim: float, sigma_all: float, rtol: float = 1e-12) -> float:
         """F_adm [N]: the largest F_E <= F_lim/2 whose resonant stress (sigma_a, sigma_max with
@@ -164,14 +108,15 @@ class Model:
         F_lim and F_lim_backbone (PHYSICS.md 5). Solved in the kernel
         (kernel/src/mapping/admissible.f90)."""
         out = ctypes.c_double()
-        self._err.check(_admissible(self._err.ptr, self._ptr, float(F_lim), float(sigma_all),
-                                    float(rtol), ctypes.byref(out)))
+        self._err.check(_capi.model_admissible_force(self._err.ptr, self._ptr, float(F_lim),
+                                                     float(sigma_all),
+                                                     float(rtol), ctypes.byref(out)))
         return out.value
 
     def limit_force(self) -> float:
         """F_lim = 2 Delta_M / (pi |phi_E/phi_g|) [N] (PHYSICS.md 5)."""
         value = ctypes.c_double()
-        self._err.check(_limit_force(self._err.ptr, self._ptr, ctypes.byref(value)))
+        self._err.check(_capi.model_limit_force(self._err.ptr, self._ptr, ctypes.byref(value)))
         return value.value
 
     def limit_force_backbone(self) -> float:
@@ -179,7 +124,8 @@ class Model:
         amplitude without structural damping; F_lim unless lift-off lowers it. The unbounded
         flag, hcf_ok and the regime of the points use the smaller of the two."""
         value = ctypes.c_double()
-        self._err.check(_limit_force_backbone(self._err.ptr, self._ptr, ctypes.byref(value)))
+        self._err.check(_capi.model_limit_force_backbone(self._err.ptr, self._ptr,
+                                                         ctypes.byref(value)))
         return value.value
 
     def backbone_curve(self, gamma) -> tuple[np.ndarray, np.ndarray]:
@@ -187,14 +133,14 @@ class Model:
         g, gp = as_doubles(np.atleast_1d(np.asarray(gamma, dtype=float)).ravel())
         F_bb = np.zeros_like(g)
         f_res = np.zeros_like(g)
-        self._err.check(_backbone_curve(self._err.ptr, self._ptr, len(g), gp,
-                                        F_bb.ctypes.data_as(c_double_p),
-                                        f_res.ctypes.data_as(c_double_p)))
+        self._err.check(_capi.model_backbone_curve(self._err.ptr, self._ptr, len(g), gp,
+                                                   F_bb.ctypes.data_as(_capi.c_double_p),
+                                                   f_res.ctypes.data_as(_capi.c_double_p)))
         return F_bb, f_res
 
     def _points(self, fn, *args) -> list[dict]:
         F, Fp = _forces(args[-1])
-        out = (_Point * max(len(F), 1))()
+        out = (_capi.Point * max(len(F), 1))()
         self._err.check(fn(self._err.ptr, self._ptr, *args[:-1], len(F), Fp, out))
         points = [self._point_dict(out[i]) for i in range(len(F))]
         for i, d in enumerate(points):
@@ -206,13 +152,13 @@ class Model:
         """|Gamma_h| [rad] and |sigma_h| [Pa], h = 0..H, of point i of the last call."""
         g, s = np.zeros(H + 1), np.zeros(H + 1)
         nh = ctypes.c_int()
-        self._err.check(_point_harmonics(self._err.ptr, self._ptr, i, H + 1,
-                                         g.ctypes.data_as(c_double_p),
-                                         s.ctypes.data_as(c_double_p), ctypes.byref(nh)))
+        self._err.check(_capi.model_point_harmonics(self._err.ptr, self._ptr, i, H + 1,
+                                                    g.ctypes.data_as(_capi.c_double_p),
+                                         s.ctypes.data_as(_capi.c_double_p), ctypes.byref(nh)))
         return {"gamma_h": [float(x) for x in g[:nh.value]],
                 "sigma_h": [float(x) for x in s[:nh.value]] if self.has_stress else None}
 
-    def _point_dict(self, p: _Point) -> dict:
+    def _point_dict(self, p: "_capi.Point") -> dict:
         d = {"F_E": p.F_E, "gamma_P": p.gamma_P, "f_res": p.f_res,
              "sigma_a": p.sigma_a if self.has_stress else None, "u_E": p.u_E,
              "k_re": p.k_re, "k_im": p.k_im, "regime": p.regime,
@@ -239,10 +185,10 @@ class Model:
         (largest excursions from the mean), harmonics (H used), hcf_stress (the stress hcf_ok
         compares with sigma_all: sigma_max when H > 1) and, when H > 1, harmonic_content
         {gamma_h, sigma_h} (amplitudes of harmonics 0..H)."""
-        points = self._points(_backbone, F_E)
+        points = self._points(_capi.model_backbone, F_E)
         jumps = np.zeros(max(len(points), 1), dtype=np.intc)
-        self._err.check(_backbone_jumps(self._err.ptr, self._ptr, len(points),
-                                        jumps.ctypes.data_as(c_int_p)))
+        self._err.check(_capi.model_backbone_jumps(self._err.ptr, self._ptr, len(points),
+                                                   jumps.ctypes.data_as(_capi.c_int_p)))
         for p, j in zip(points, jumps):
             p["jump"] = bool(j)
         return points
@@ -250,7 +196,7 @@ class Model:
     def response(self, f_exc: float, F_E) -> list[dict]:
         """The response at the excitation frequency f_exc [Hz] (inside the band) to the forces
         F_E [N]: same fields as :meth:`backbone`, f_res = f_exc."""
-        return self._points(_response, ctypes.c_double(f_exc), F_E)
+        return self._points(_capi.model_response, ctypes.c_double(f_exc), F_E)
 
     def curves(self, F_E, layers: int | None = None) -> list[dict]:
         """Response curves by amplitude layered force mapping (PHYSICS.md 3): per force a dict
@@ -259,19 +205,51 @@ class Model:
         parts), in path order. ``layers``: initial amplitude layers (default 200)."""
         F, Fp = _forces(F_E)
         layers = 200 if layers is None else int(layers)
-        self._err.check(_curves(self._err.ptr, self._ptr, len(F), Fp, layers))
+        self._err.check(_capi.model_curves(self._err.ptr, self._ptr, len(F), Fp, layers))
         result = []
         for i in range(len(F)):
             n = ctypes.c_int()
-            self._err.check(_curve_size(self._err.ptr, self._ptr, i, ctypes.byref(n)))
+            self._err.check(_capi.model_curve_size(self._err.ptr, self._ptr, i, ctypes.byref(n)))
             f, g, s = (np.zeros(n.value) for _ in range(3))
             branch, part = np.zeros(n.value, dtype=np.intc), np.zeros(n.value, dtype=np.intc)
-            self._err.check(_curve_get(self._err.ptr, self._ptr, i, n.value,
-                                       f.ctypes.data_as(c_double_p), g.ctypes.data_as(c_double_p),
-                                       s.ctypes.data_as(c_double_p),
-                                       branch.ctypes.data_as(c_int_p),
-                                       part.ctypes.data_as(c_int_p)))
+            self._err.check(_capi.model_curve_get(self._err.ptr, self._ptr, i, n.value,
+                                                  _capi.doubles_ptr(f), _capi.doubles_ptr(g),
+                                                  s.ctypes.data_as(_capi.c_double_p),
+                                                  branch.ctypes.data_as(_capi.c_int_p),
+                                                  part.ctypes.data_as(_capi.c_int_p)))
             result.append({"F_E": float(F[i]), "f": f, "gamma_P": g,
                            "sigma_a": s if self.has_stress else np.full(n.value, math.nan),
                            "branch": branch.astype(int), "part": part.astype(int)})
         return result
+
+
+class BackbonePoints:
+    """Reusable arrays of kernel backbone points (``udmap_point``) seen as numpy record arrays,
+    so that a backbone costs one C call and no Python object per point (a design of
+    experiments evaluates millions of them)."""
+
+    def __init__(self, size: int):
+        self._size = size
+        self._buf = (_capi.Point * size)()
+        self._view = np.ctypeslib.as_array(self._buf)
+        self._forces = np.zeros(size)
+        self._forces_ptr = self._forces.ctypes.data_as(_capi.c_double_p)
+        self._jumps = (ctypes.c_int * size)()
+
+    def backbone(self, model: Model, forces):
+        """The points of ``model`` for ``forces`` (a view valid until the next call)."""
+        n = len(forces)
+        if n > self._size:
+            self.__init__(n)
+        self._forces[:n] = forces
+        status = _capi.model_backbone(model._err.ptr, model._ptr, n, self._forces_ptr, self._buf)
+        if status:
+            model._err.check(status)
+        return self._view[:n]
+
+    def jumps(self, model: Model, n: int) -> list[bool]:
+        """Per point of the last :meth:`backbone` call: gamma_P at a jump of k."""
+        status = _capi.model_backbone_jumps(model._err.ptr, model._ptr, n, self._jumps)
+        if status:
+            model._err.check(status)
+        return [f != 0 for f in self._jumps[:n]]

@@ -13,7 +13,9 @@ from dataclasses import dataclass, field
 import numpy as np
 import scipy.sparse as sp
 
-from ._lib import ErrorHandle, InputError, declare
+from . import _capi
+from ._capi import ErrorHandle
+from .errors import InputError
 
 __all__ = ["Reduced", "platform_centred_reduction", "DEFAULT_RESIDUAL_BLOCKS"]
 
@@ -23,14 +25,6 @@ DEFAULT_RESIDUAL_BLOCKS = 3
 
 _vp = ctypes.c_void_p
 _ci = ctypes.c_int
-_reduce = declare("udmap_reduce", [
-    _vp, _ci, ctypes.c_int64, _vp, _vp, _vp, ctypes.c_int64, _vp, _vp, _vp, _vp, _vp, _ci, _vp,
-    _vp, _ci, _vp, _vp, _vp, _ci, _vp, _ci, _vp, _ci, _vp, _ci, ctypes.c_double, _ci, _ci,
-    ctypes.POINTER(_vp)])
-_sizes = declare("udmap_reduction_sizes", [_vp, _vp] + [ctypes.POINTER(_ci)] * 6)
-_get = declare("udmap_reduction_get", [_vp, _vp, _vp, _vp, _vp, _vp, _vp])
-_info = declare("udmap_reduction_info", [_vp, _vp, _vp])
-_delete = declare("udmap_delete_reduction", [ctypes.POINTER(_vp)], None)
 
 _INFO_KEYS = ("f_cut", "f_check", "cut_count", "cut_found", "full_count", "full_found", "n_t",
               "n_i", "factor_entries", "n_residual")
@@ -166,15 +160,16 @@ def platform_centred_reduction(fe, *, platform_nodes, ref_point, axis, exc_node,
     error = ErrorHandle()
     handle = _vp()
     t0 = time.perf_counter()
-    error.check(_reduce(error.ptr, n, kv.size, _ptr(kr), _ptr(kc), _ptr(kv), mv.size, _ptr(mr),
-                        _ptr(mc), _ptr(mv), _ptr(dn), _ptr(dc), node_ids.size, _ptr(node_ids),
-                        _ptr(node_xyz), platform.size, _ptr(platform), _ptr(ref), _ptr(ax),
-                        int(exc_node), _ptr(d), clamp.size, _ptr(clamp), S.shape[0], _ptr(S),
+    error.check(_capi.reduce(error.ptr, n, kv.size, _ptr(kr), _ptr(kc), _ptr(kv), mv.size,
+                             _ptr(mr),
+                             _ptr(mc), _ptr(mv), _ptr(dn), _ptr(dc), node_ids.size, _ptr(node_ids),
+                             _ptr(node_xyz), platform.size, _ptr(platform), _ptr(ref), _ptr(ax),
+                             int(exc_node), _ptr(d), clamp.size, _ptr(clamp), S.shape[0], _ptr(S),
                         nm, fm, int(n_residual), 1 if check_full else 0, ctypes.byref(handle)))
     t_kernel = time.perf_counter() - t0
     try:
         r, nmod, ns, nf, g, e = (_ci() for _ in range(6))
-        error.check(_sizes(error.ptr, handle, ctypes.byref(r), ctypes.byref(nmod),
+        error.check(_capi.reduction_sizes(error.ptr, handle, ctypes.byref(r), ctypes.byref(nmod),
                            ctypes.byref(ns), ctypes.byref(nf), ctypes.byref(g), ctypes.byref(e)))
         r = r.value
         Mr = np.zeros((r, r))
@@ -182,11 +177,12 @@ def platform_centred_reduction(fe, *, platform_nodes, ref_point, axis, exc_node,
         Sr = np.zeros((ns.value, r))
         fr = np.zeros(r)
         ff = np.zeros(nf.value)
-        error.check(_get(error.ptr, handle, _ptr(Mr), _ptr(Kr), _ptr(Sr), _ptr(fr), _ptr(ff)))
+        error.check(_capi.reduction_get(error.ptr, handle, _ptr(Mr), _ptr(Kr), _ptr(Sr), _ptr(fr),
+                                        _ptr(ff)))
         raw = np.zeros(15)
-        error.check(_info(error.ptr, handle, _ptr(raw)))
+        error.check(_capi.reduction_info(error.ptr, handle, _ptr(raw)))
     finally:
-        _delete(ctypes.byref(handle))
+        _capi.delete_reduction(ctypes.byref(handle))
     info = {k: float(v) for k, v in zip(_INFO_KEYS, raw[:10])}
     for k in ("cut_count", "cut_found", "full_count", "full_found", "n_t", "n_i",
               "factor_entries", "n_residual"):

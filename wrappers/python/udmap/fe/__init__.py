@@ -4,7 +4,8 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from .._lib import InputError
+from ..errors import InputError
+from ._text import read_mm
 from .model import COMPONENTS, FEModel, convert_units, make_model
 
 #: The files each format needs (INTERFACES.md).
@@ -18,7 +19,7 @@ FORMAT_FILES = {
 UNITS = ("SI", "mm-t-s")
 
 __all__ = ["FEModel", "COMPONENTS", "FORMAT_FILES", "UNITS", "read_fe", "resolve_files",
-           "make_model", "convert_units"]
+           "make_model", "convert_units", "read_mm"]
 
 
 def resolve_files(blade: dict, case_dir) -> dict:

@@ -8,7 +8,7 @@ from pathlib import Path
 import numpy as np
 import scipy.sparse as sp
 
-from .._lib import InputError
+from ..errors import InputError
 
 
 def read_text(path: Path, field: str) -> str:

@@ -10,7 +10,7 @@ from pathlib import Path
 
 import numpy as np
 
-from .._lib import InputError
+from ..errors import InputError
 from ._text import number, read_mm, read_text
 from .model import FEModel, make_model
 

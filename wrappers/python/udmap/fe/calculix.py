@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from .._lib import InputError
+from ..errors import InputError
 from ._text import parse_deck_nodes, read_text, read_triplets, symmetric_from_triplets
 from .model import FEModel, make_model
 

@@ -7,7 +7,7 @@ from pathlib import Path
 import numpy as np
 import scipy.sparse as sp
 
-from .._lib import InputError
+from ..errors import InputError
 from ._text import read_mm, read_text
 from .model import FEModel, make_model
 

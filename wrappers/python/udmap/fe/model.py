@@ -6,7 +6,7 @@ from dataclasses import dataclass
 import numpy as np
 import scipy.sparse as sp
 
-from .._lib import InputError
+from ..errors import InputError
 
 #: Component names 1..6 (translations, then rotations).
 COMPONENTS = ("UX", "UY", "UZ", "RX", "RY", "RZ")

@@ -16,7 +16,7 @@ import re
 import numpy as np
 import scipy.sparse as sp
 
-from .._lib import InputError
+from ..errors import InputError
 from ._text import read_text
 from .model import FEModel, make_model
 

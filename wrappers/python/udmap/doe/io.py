@@ -20,7 +20,7 @@ import math
 import os
 from pathlib import Path
 
-from ._lib import InputError
+from ..errors import InputError
 
 SUMMARY_COLUMNS = ("F_lim", "F_lim_backbone", "gamma_b", "M_max", "M_min", "lift_off")
 FORCE_FIELDS = ("gamma_P", "f_res", "sigma_a", "hcf_ok", "jump")

@@ -11,7 +11,6 @@ from __future__ import annotations
 
 import hashlib
 import json
-import math
 import os
 import shutil
 import tempfile
@@ -20,8 +19,11 @@ from pathlib import Path
 import numpy as np
 import scipy.sparse as sp
 
-from .._lib import InputError, UdmapError
-from . import FORMAT_FILES, UNITS, read_fe, resolve_files
+from ..errors import InputError, UdmapError
+from ..fe import FORMAT_FILES, UNITS, read_fe, read_mm, resolve_files
+from ..progress import Progress
+from .schema import Field, check_field
+from .. import reduction
 
 CACHE_VERSION = "fe-reduction-1"
 _NODE_FILE = {"calculix": "inp", "abaqus": "inp", "ansys": "nodes", "nastran": "bdf",
@@ -32,27 +34,19 @@ _FIELDS = ("kind", "format", "files", "units", "platform", "clamp", "excitation"
            "zeta", "modes", "dmig")
 
 
-def _num(path, v, positive=False):
-    if isinstance(v, bool) or not isinstance(v, (int, float)) or not math.isfinite(v):
-        raise InputError(f"{path} must be a finite number, got {json.dumps(v)}")
-    if positive and not v > 0:
-        raise InputError(f"{path} must be positive, got {v}")
-    return float(v)
-
-
-def _vec3(path, v, nonzero=False):
-    if not (isinstance(v, list) and len(v) == 3):
-        raise InputError(f"{path} must be three numbers [x, y, z], got {json.dumps(v)}")
-    out = [_num(f"{path}[{i}]", x) for i, x in enumerate(v)]
-    if nonzero and not np.linalg.norm(out) > 0:
-        raise InputError(f"{path} has zero length: it must give a direction")
-    return out
-
-
-def _node_id(path, v):
-    if isinstance(v, bool) or not isinstance(v, int):
-        raise InputError(f"{path} must be a node id (integer), got {json.dumps(v)}")
-    return v
+#: The number fields of an ``fe`` blade as rows of the case schema (the coordinates and units
+#: come from the FE model: only finiteness, signs and directions are checked here).
+FE_FIELDS = {
+    "platform.ref_point": Field("vec3", doc="reference point of the platform rotation"),
+    "platform.axis": Field("vec3", nonzero=True, doc="axis of gamma_P"),
+    "excitation.node": Field("node", doc="node of the excitation"),
+    "excitation.direction": Field("vec3", nonzero=True, doc="direction of the excitation"),
+    "stress.gauge": Field("node", doc="gauge nodes [a, b]"),
+    "stress.E": Field("finite", lo=0.0, open=True, unit="Pa", doc="Young's modulus of the gauge"),
+    "zeta": Field("finite", lo=0.0, default=0.0, doc="damping ratio of the first mode"),
+    "box": Field("vec3", doc="a corner of a node box"),
+    "node": Field("node", doc="a node id of a node set"),
+}
 
 
 def _node_set(path, sec, allow_extra=()):
@@ -69,11 +63,12 @@ def _node_set(path, sec, allow_extra=()):
             raise InputError(f"{path}.nodes must be a list of node ids")
         if not nodes:
             raise InputError(f"{path}.nodes is empty: the set needs at least one node")
-        return {"nodes": [_node_id(f"{path}.nodes[{i}]", v) for i, v in enumerate(nodes)]}
+        return {"nodes": [check_field(f"{path}.nodes[{i}]", v, FE_FIELDS["node"])
+                          for i, v in enumerate(nodes)]}
     box = sec["box"]
     if not (isinstance(box, list) and len(box) == 2):
         raise InputError(f"{path}.box must be two corners [[x0, y0, z0], [x1, y1, z1]]")
-    b = [_vec3(f"{path}.box[{i}]", c) for i, c in enumerate(box)]
+    b = [check_field(f"{path}.box[{i}]", c, FE_FIELDS["box"]) for i, c in enumerate(box)]
     if any(lo > hi for lo, hi in zip(*b)):
         raise InputError(f"{path}.box: the first corner must be the lower one in x, y and z")
     return {"box": b}
@@ -102,26 +97,29 @@ def validate_fe(blade_in: dict, base_dir: Path) -> dict:
             raise InputError(f"blade.platform.{key}: missing field")
     out["platform"] = _node_set("blade.platform", {k: v for k, v in plat.items()
                                                    if k not in ("ref_point", "axis")})
-    out["platform"]["ref_point"] = _vec3("blade.platform.ref_point", plat["ref_point"])
-    out["platform"]["axis"] = _vec3("blade.platform.axis", plat["axis"], nonzero=True)
+    for key in ("ref_point", "axis"):
+        out["platform"][key] = check_field(f"blade.platform.{key}", plat[key],
+                                           FE_FIELDS[f"platform.{key}"])
     if "clamp" in blade_in and blade_in["clamp"] is not None:
         out["clamp"] = _node_set("blade.clamp", blade_in["clamp"])
     exc = blade_in["excitation"]
     if not isinstance(exc, dict) or set(exc) != {"node", "direction"}:
         raise InputError("blade.excitation must be {\"node\": id, \"direction\": [x, y, z]}")
-    out["excitation"] = {"node": _node_id("blade.excitation.node", exc["node"]),
-                         "direction": _vec3("blade.excitation.direction", exc["direction"],
-                                            nonzero=True)}
+    out["excitation"] = {key: check_field(f"blade.excitation.{key}", exc[key],
+                                          FE_FIELDS[f"excitation.{key}"])
+                         for key in ("node", "direction")}
     if "stress" in blade_in and blade_in["stress"] is not None:
         st = blade_in["stress"]
         if isinstance(st, dict) and set(st) == {"gauge", "E"}:
             g = st["gauge"]
             if not (isinstance(g, list) and len(g) == 2):
                 raise InputError("blade.stress.gauge must be two node ids [a, b]")
-            g = [_node_id(f"blade.stress.gauge[{i}]", v) for i, v in enumerate(g)]
+            g = [check_field(f"blade.stress.gauge[{i}]", v, FE_FIELDS["stress.gauge"])
+                 for i, v in enumerate(g)]
             if g[0] == g[1]:
                 raise InputError("blade.stress.gauge: the two nodes must differ")
-            out["stress"] = {"gauge": g, "E": _num("blade.stress.E", st["E"], positive=True)}
+            out["stress"] = {"gauge": g, "E": check_field("blade.stress.E", st["E"],
+                                                          FE_FIELDS["stress.E"])}
         elif isinstance(st, dict) and set(st) == {"row"}:
             if not isinstance(st["row"], str) or not st["row"]:
                 raise InputError("blade.stress.row must be a file path (string)")
@@ -133,9 +131,8 @@ def validate_fe(blade_in: dict, base_dir: Path) -> dict:
         else:
             raise InputError("blade.stress must be {\"gauge\": [a, b], \"E\": ...} or "
                              "{\"row\": \"file.mtx\"}")
-    out["zeta"] = _num("blade.zeta", blade_in.get("zeta", 0.0))
-    if out["zeta"] < 0:
-        raise InputError(f"blade.zeta must be non-negative, got {out['zeta']}")
+    out["zeta"] = check_field("blade.zeta", blade_in.get("zeta", FE_FIELDS["zeta"].default),
+                              FE_FIELDS["zeta"])
     if blade_in.get("modes") is not None:
         m = blade_in["modes"]
         if isinstance(m, bool) or not isinstance(m, int) or m < 1:
@@ -247,7 +244,6 @@ def reduction_inputs(fe, blade: dict) -> dict:
             raise InputError("blade.stress.gauge: the two nodes are at the same place")
         kw["stress_rows"] = [gauge_row(fe, a, b, st["E"])]
     elif st and "row" in st:
-        from ._text import read_mm
         row = read_mm(st["row"], "blade.stress.row", vector=True)
         if len(row) != fe.n:
             raise InputError(f"blade.stress.row: {st['row']} has {len(row)} entries but the "
@@ -378,7 +374,6 @@ def reduce_fe(blade: dict, f_max: float, *, use_cache: bool = True):
         meta = json.loads(meta_path.read_text())
         meta["cached"] = True
         return final, meta
-    from ..progress import Progress
     # Stages of a reduction that can take minutes: read, check, reduce (bar on a terminal).
     with Progress(3, "fe reduction") as bar:
         fe = read_fe(blade, "/")
@@ -386,8 +381,8 @@ def reduce_fe(blade: dict, f_max: float, *, use_cache: bool = True):
         check_matrices(fe, blade)
         kw = reduction_inputs(fe, blade)
         bar.update()
-        from ..reduction import platform_centred_reduction
-        red = platform_centred_reduction(fe, n_modes=blade.get("modes"), f_max=f_max, **kw)
+        red = reduction.platform_centred_reduction(fe, n_modes=blade.get("modes"), f_max=f_max,
+                                                   **kw)
         bar.update()
     Mr = np.asarray(red.M)
     if not (np.all(np.isfinite(Mr)) and np.all(np.isfinite(np.asarray(red.K)))):
@@ -429,7 +424,6 @@ def check_gamma_moves(directory: Path, meta: dict, f_min: float, f_max: float,
     the mode does not excite would leave the damper without work); at least one mode of the
     band must feel it."""
     import scipy.linalg as la
-    from ._text import read_mm
     K = read_mm(directory / meta["files"]["K"], "reduced K").toarray()
     M = read_mm(directory / meta["files"]["M"], "reduced M").toarray()
     try:

@@ -1,7 +1,7 @@
 """Executors of the design of experiments: serial, process pool, thread pool, Dask distributed.
 
-Each runs :func:`udmap.doe.run_chunk` on chunks ``(start, values)`` and yields its results in
-completion order (the output puts them back in design order). A bounded number of chunks is in
+Each runs :func:`udmap.doe.worker.run_chunk` on chunks ``(start, values)`` and yields its results
+in completion order (the output puts them back in design order). A bounded number of chunks is in
 flight, so millions of designs never sit in memory as futures. Worker processes keep their
 context (the nominal case, the shared blade) for the whole run: the pool stays warm.
 """
@@ -10,10 +10,12 @@ from __future__ import annotations
 import math
 import os
 import signal
+import threading
 import time
 from concurrent.futures import FIRST_COMPLETED, wait
 
-from ._lib import InputError
+from ..errors import InputError, error_from_status
+from .worker import run_chunk
 
 
 def default_chunk(samples: int, workers: int) -> int:
@@ -36,11 +38,17 @@ def chunk_ranges(first: int, samples: int, held, chunk: int) -> list[tuple[int, 
     return ranges
 
 
+def default_workers() -> int:
+    """The cores this process may run on."""
+    try:
+        return max(len(os.sched_getaffinity(0)), 1)
+    except AttributeError:
+        return max(os.cpu_count() or 1, 1)
+
+
 def _init_worker(parent: int) -> None:
     """Worker process set-up: Ctrl-C is handled by the parent, which stops the pool (workers
     must not die noisily), and a worker whose parent was killed exits instead of lingering."""
-    import os
-    import threading
     signal.signal(signal.SIGINT, signal.SIG_IGN)
 
     def watch():
@@ -64,7 +72,6 @@ class SerialExecutor:
         return False
 
     def run(self, spec, ranges):
-        from .doe import run_chunk
         for start, values in ranges:
             yield run_chunk(spec, start, values)
 
@@ -104,7 +111,6 @@ class PoolExecutor:
         return False
 
     def run(self, spec, ranges):
-        from .doe import run_chunk
         todo = iter(ranges)
         pending = set()
 
@@ -132,9 +138,9 @@ def _dask_chunk_function():
     message)`` rather than as an exception of a udmap class, for the same reason."""
 
     def udmap_doe_chunk(spec, start, values):
-        import udmap.doe
+        import udmap.doe.worker
         try:
-            return ("ok", udmap.doe.run_chunk(spec, start, values))
+            return ("ok", udmap.doe.worker.run_chunk(spec, start, values))
         except udmap.UdmapError as exc:
             return ("error", exc.status, str(exc))
 
@@ -145,13 +151,7 @@ def _dask_result(reply):
     """The chunk result of :func:`_dask_chunk_function`'s reply, or its udmap error raised."""
     if reply[0] == "ok":
         return reply[1]
-    from ._lib import PhysicsError, UdmapError
-    status, message = reply[1], reply[2]
-    if status == 2:
-        raise InputError(message)
-    if status == 3:
-        raise PhysicsError(message)
-    raise UdmapError(message, status)
+    raise error_from_status(reply[1], reply[2])
 
 
 class DaskExecutor:
@@ -242,7 +242,6 @@ def make_executor(workers: int | None = None, threads: bool = False, dask: str |
     if dask:
         return DaskExecutor(dask)
     if workers is None:
-        from .doe import default_workers
         workers = default_workers()
     if workers < 1:
         raise InputError(f"--workers must be at least 1, got {workers}")

@@ -1,0 +1,193 @@
+"""The subcommands of the command line (INTERFACES.md "Command line"), each on a case file."""
+from __future__ import annotations
+
+import json
+import os
+import shutil
+from pathlib import Path
+
+import numpy as np
+
+from .. import hbm
+from ..case import build_blade, build_contact, build_damper, build_model, load_case
+from ..errors import InputError
+from .output import emit, finite, point_json, print_points, print_rows
+
+
+def _with_harmonics(case, args):
+    """The case with --harmonics (if given) overriding analysis.harmonics."""
+    if getattr(args, "harmonics", None) is not None:
+        case.analysis["harmonics"] = args.harmonics
+    return case
+
+
+def cmd_table(args) -> None:
+    case = load_case(args.case)
+    damper = build_damper(case)
+    gammas = np.asarray(args.gammas)
+    k = damper.stiffness(gammas)
+    data = {"gamma_b": damper.gamma_b, "gamma_s": damper.gamma_s, "M_max": damper.M_max,
+            "M_min": damper.M_min, "k_stuck": damper.k_stuck, "lift_off": bool(damper.lift_off),
+            "points": [{"gamma": float(g), "k_re": float(kk.real), "k_im": float(kk.imag)}
+                       for g, kk in zip(gammas, k)],
+            # PHYSICS.md 2.5: k jumps at gamma_c; at gamma_c itself k is k(gamma_c-)
+            "jumps": [{"gamma_c": j["gamma_c"], "k_re_minus": j["k_minus"].real,
+                       "k_im_minus": j["k_minus"].imag, "k_re_plus": j["k_plus"].real,
+                       "k_im_plus": j["k_plus"].imag} for j in damper.jumps]}
+
+    def table(d):
+        for key in ("gamma_b", "gamma_s", "M_max", "M_min", "k_stuck", "lift_off"):
+            print(f"{key:>8} = {d[key]}")
+        print_rows(["gamma [rad]", "k_re [N m/rad]", "k_im [N m/rad]"],
+                    [[p["gamma"], p["k_re"], p["k_im"]] for p in d["points"]],
+                    [".6e", ".8g", ".8g"])
+        if d["jumps"]:
+            print(f"k(gamma) jumps at {len(d['jumps'])} amplitude(s) gamma_c (PHYSICS.md 2.5):")
+            print_rows(["gamma_c [rad]", "k_re(gamma_c-)", "k_im(gamma_c-)", "k_re(gamma_c+)",
+                         "k_im(gamma_c+)"],
+                        [[j["gamma_c"], j["k_re_minus"], j["k_im_minus"], j["k_re_plus"],
+                          j["k_im_plus"]] for j in d["jumps"]],
+                        [".10e", ".8g", ".8g", ".8g", ".8g"])
+    emit(args, data, table)
+
+
+def _summary(model, blade, damper) -> dict:
+    return {"F_lim": model.limit_force(), "F_lim_backbone": model.limit_force_backbone(),
+            "gamma_b": damper.gamma_b, "gamma_s": damper.gamma_s,
+            "f1_bare": float(blade.natural_frequencies(1)[0]),
+            "lift_off": bool(damper.lift_off)}
+
+
+def cmd_backbone(args) -> None:
+    case = _with_harmonics(load_case(args.case), args)
+    blade, damper = build_blade(case), build_damper(case)
+    model = build_model(case, blade, damper)
+    data = _summary(model, blade, damper)
+    data["points"] = [point_json(p) for p in model.backbone(args.forces)]
+    emit(args, data, print_points)
+
+
+def cmd_response(args) -> None:
+    case = _with_harmonics(load_case(args.case), args)
+    a = case.analysis
+    if not a["f_min"] <= args.freq <= a["f_max"]:
+        raise InputError(f"--freq {args.freq} Hz is outside the band [analysis.f_min, "
+                         f"analysis.f_max] = [{a['f_min']}, {a['f_max']}] Hz of the case")
+    blade, damper = build_blade(case), build_damper(case)
+    model = build_model(case, blade, damper)
+    data = _summary(model, blade, damper)
+    data["f_exc"] = args.freq
+    data["points"] = [point_json(dict(p, jump=False))
+                      for p in model.response(args.freq, args.forces)]
+    emit(args, data, print_points)
+
+
+def cmd_curves(args) -> None:
+    case = _with_harmonics(load_case(args.case), args)
+    model = build_model(case)
+    layers = args.layers or case.analysis["layers"]
+    curves = model.curves(args.forces, layers=layers)
+    data = {"curves": [{"F_E": c["F_E"], "f": [float(x) for x in c["f"]],
+                        "gamma_P": [float(x) for x in c["gamma_P"]],
+                        "sigma_a": [finite(float(x)) for x in c["sigma_a"]],
+                        "branch": [int(x) for x in c["branch"]],
+                        "part": [int(x) for x in c["part"]]} for c in curves]}
+
+    def table(d):
+        for c in d["curves"]:
+            print(f"F_E = {c['F_E']} N: {len(c['f'])} points")
+            print_rows(["f [Hz]", "gamma_P [rad]", "sigma_a [MPa]", "branch"],
+                        [[f, g, None if s is None else s / 1e6, b]
+                         for f, g, s, b in zip(c["f"], c["gamma_P"], c["sigma_a"], c["branch"])],
+                        [".6f", ".6e", ".4f", "d"])
+    emit(args, data, table)
+
+
+def cmd_hbm(args) -> None:
+    case = load_case(args.case)
+    blade = build_blade(case)
+    a = case.analysis
+    points = hbm.hbm(blade, build_contact(case), a["f_min"], a["f_max"], args.forces,
+                     harmonics=args.harmonics, variant=args.variant, sigma_all=a["sigma_all"])
+    hbm.classify(blade, build_damper(case), a["f_min"], a["f_max"], a["sigma_all"], points)
+    data = {"harmonics": args.harmonics, "variant": args.variant,
+            "points": [point_json(p) for p in points]}
+    emit(args, data, print_points)
+
+
+def cmd_dti(args) -> None:
+    case = load_case(args.case)
+    blade = build_blade(case)
+    a = case.analysis
+    if args.freq is not None and not a["f_min"] <= args.freq <= a["f_max"]:
+        raise InputError(f"--freq {args.freq} Hz is outside the band [analysis.f_min, "
+                         f"analysis.f_max] = [{a['f_min']}, {a['f_max']}] Hz of the case")
+    points = hbm.dti(blade, build_contact(case), args.forces, freq=args.freq, peak=args.peak,
+                     f_min=a["f_min"], f_max=a["f_max"])
+    data = {"points": [{k: finite(p[k]) for k in ("F_E", "f", "gamma_1", "sigma_1", "gamma_max")}
+                       for p in points]}
+
+    def table(d):
+        print_rows(["F_E [N]", "f [Hz]", "gamma_1 [rad]", "sigma_1 [MPa]", "gamma_max [rad]"],
+                    [[p["F_E"], p["f"], p["gamma_1"],
+                      None if p["sigma_1"] is None else p["sigma_1"] / 1e6, p["gamma_max"]]
+                     for p in d["points"]], [".4g", ".6f", ".6e", ".4f", ".6e"])
+    emit(args, data, table)
+
+
+def cmd_reduce(args) -> None:
+    """Writes the reduced ``matrices`` case of an ``fe`` case (files beside ``--out``)."""
+    out = Path(args.out)
+    if out.suffix.lower() != ".json":
+        raise InputError(f"--out must name a .json case file, got {args.out}")
+    if not out.parent.is_dir():
+        raise InputError(f"--out: directory not found: {out.parent}")
+    case = load_case(args.case)
+    if case.fe is None:
+        raise InputError(f"blade.kind: reduce needs an 'fe' blade ({args.case})")
+    raw = json.loads(Path(args.case).read_text())
+    src = Path(case.fe["cache_dir"])
+    blade = {"kind": "matrices"}
+    moves = []
+    for key, name in case.fe["files"].items():
+        target = out.parent / f"{out.stem}_{name}"
+        tmp = target.with_name(f".{target.name}.tmp")
+        shutil.copyfile(src / name, tmp)
+        moves.append((tmp, target))
+        blade[key] = target.name
+    blade.update(gamma_dof=case.blade["gamma_dof"], exc_dof=case.blade["exc_dof"],
+                 zeta=case.blade["zeta"])
+    damper = dict(raw["damper"])
+    if damper.get("kind") == "table":
+        damper["file"] = os.path.relpath(case.damper["file"], out.parent.resolve())
+    new = {"name": raw.get("name", case.name),
+           "description": f"Platform Centred Reduction of {Path(args.case).name} "
+                          f"({case.fe['n_full']} DOFs -> {case.fe['n_reduced']})",
+           "blade": blade, "damper": damper, "analysis": raw["analysis"]}
+    tmp = out.with_name(f".{out.name}.tmp")
+    tmp.write_text(json.dumps(new, indent=2) + "\n")
+    moves.append((tmp, out))
+    for a, b in moves:          # the case file last: it is complete only with its matrices
+        os.replace(a, b)
+    data = {"out": str(out), "n_full": case.fe["n_full"], "n_reduced": case.fe["n_reduced"],
+            "gamma_dof": case.blade["gamma_dof"], "exc_dof": case.blade["exc_dof"],
+            "cached": case.fe["cached"], "freqs_full": case.fe["freqs_full"],
+            "freqs_reduced": case.fe["freqs_reduced"]}
+
+    def table(d):
+        print(f"wrote {d['out']}: {d['n_full']} DOFs reduced to {d['n_reduced']} "
+              f"(gamma_dof {d['gamma_dof']}, exc_dof {d['exc_dof']}"
+              f"{', from the cache' if d['cached'] else ''})")
+        ff, fr = d["freqs_full"], d["freqs_reduced"]
+        rows = [[i + 1, ff[i] if i < len(ff) else None, fr[i] if i < len(fr) else None,
+                 (fr[i] - ff[i]) / ff[i] if i < min(len(ff), len(fr)) and ff[i] > 0 else None]
+                for i in range(max(len(ff), len(fr)))]
+        print_rows(["mode", "full [Hz]", "reduced [Hz]", "rel. diff"], rows,
+                    ["d", ".9g", ".9g", ".2e"])
+    emit(args, data, table)
+
+
+def cmd_demo(args) -> None:
+    # imported here, not above: the demo's plots load matplotlib, which no other command needs
+    from ..demo import run_demo
+    run_demo(load_case(args.case), Path(args.out))
