@@ -10,18 +10,12 @@ import os
 import numpy as np
 
 from ._lib import ErrorHandle, InputError, as_doubles, c_double_p, c_int_p, declare
+from .parameters import BeamParams
 
 __all__ = ["Blade", "BEAM_PARAMETERS"]
 
 
-class _BeamParams(ctypes.Structure):
-    """udmap_beam_params: 12 doubles then 2 ints."""
-
-    _fields_ = [(name, ctypes.c_double) for name in (
-        "E", "rho", "zeta", "neck_L", "neck_h", "neck_b", "platform_L", "platform_m",
-        "platform_J", "airfoil_L", "airfoil_h", "airfoil_b")] + [
-        ("neck_elements", ctypes.c_int), ("airfoil_elements", ctypes.c_int)]
-
+_BeamParams = BeamParams  # udmap_beam_params: 12 doubles then 2 ints
 
 #: Keyword arguments of Blade.beam, as in the C struct (case-file fields with underscores).
 BEAM_PARAMETERS = tuple(name for name, _ in _BeamParams._fields_)

@@ -14,17 +14,14 @@ import ctypes
 import numpy as np
 
 from ._lib import ErrorHandle, InputError, as_doubles, c_double_p, declare, lib
+from .parameters import AsymmetricParams
 
 __all__ = ["Damper"]
 
 _vp = ctypes.c_void_p
 
 
-class _AsymmetricParams(ctypes.Structure):
-    _fields_ = [(name, ctypes.c_double) for name in (
-        "CF", "mu", "pitch", "y_P", "beta_L_deg", "beta_R_deg",
-        "flat1_x", "flat1_y", "flat2_x", "flat2_y", "curved_x", "curved_y",
-        "kn_flat", "kt_flat", "kn_curved", "kt_curved")]
+_AsymmetricParams = AsymmetricParams  # udmap_asymmetric_params
 
 
 class _Info(ctypes.Structure):

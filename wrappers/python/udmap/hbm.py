@@ -17,6 +17,7 @@ from typing import Iterable
 import numpy as np
 
 from ._lib import ErrorHandle, InputError, PhysicsError, as_doubles, declare, lib
+from .parameters import AsymmetricParams
 
 _c_double_p = ctypes.POINTER(ctypes.c_double)
 _c_int_p = ctypes.POINTER(ctypes.c_int)
@@ -101,12 +102,7 @@ _dti_peak = declare("udmap_dti_peak",
                      ctypes.c_double, ctypes.c_int, _c_double_p, ctypes.POINTER(DtiPoint)])
 
 
-class _AsymmetricParams(ctypes.Structure):
-    """udmap_asymmetric_params (wrappers/c/udmap.h)."""
-    _fields_ = [(name, ctypes.c_double) for name in (
-        "CF", "mu", "pitch", "y_P", "beta_L_deg", "beta_R_deg", "flat1_x", "flat1_y",
-        "flat2_x", "flat2_y", "curved_x", "curved_y", "kn_flat", "kt_flat", "kn_curved",
-        "kt_curved")]
+_AsymmetricParams = AsymmetricParams  # udmap_asymmetric_params (wrappers/c/udmap.h)
 
 
 def _asymmetric_params(damper: dict) -> _AsymmetricParams:
