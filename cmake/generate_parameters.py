@@ -67,6 +67,8 @@ class Table:
         self.fields = data["field"]
         self.top_level = data["top_level"]
         self.structs = data["struct"]
+        for s in self.structs:
+            s.setdefault("kind", None)
         self.legacy = data["legacy"]
         self.fmu = data["fmu"]
         self.flat = {}        # (section, kind) -> [(flat name, field, index, fortran component)]
@@ -224,8 +226,13 @@ def python_module(t: Table) -> str:
     return "\n".join(out) + "\n"
 
 
+def _is_int(f: dict) -> bool:
+    """Whether a field is an int of the C structs."""
+    return f["type"] in ("int", "choice", "harmonics")
+
+
 def _ctype(f: dict) -> str:
-    return "ctypes.c_int" if f["type"] == "int" else "ctypes.c_double"
+    return "ctypes.c_int" if _is_int(f) else "ctypes.c_double"
 
 
 # ---------------------------------------------------------------- C header blocks
@@ -233,11 +240,20 @@ def _ctype(f: dict) -> str:
 def c_struct(t: Table, s: dict) -> list[str]:
     flat = t.flat_of(s["section"], s["kind"])
     out = ["typedef struct {"]
+    comments = s.get("comments", {})
     for line in s["lines"]:
-        types = {"int" if flat[n][0]["type"] == "int" else "double" for n in line}
+        types = {"int" if _is_int(flat[n][0]) else "double" for n in line}
         if len(types) != 1:
             raise SystemExit(f"{TABLE}: struct {s['name']}: one type per line, got {line}")
-        out.append(f"  {types.pop()} {', '.join(line)};")
+        decl = f"  {types.pop()} {', '.join(line)};"
+        text = comments.get(line[0])
+        if not text:
+            out.append(decl)
+            continue
+        column = s["comment_column"]
+        out.append(f"{decl:<{column}}/* {text[0]}" + (" */" if len(text) == 1 else ""))
+        out += [" " * (column + 3) + t + (" */" if k == len(text) - 2 else "")
+                for k, t in enumerate(text[1:])]
     out.append(f"}} {s['name']};")
     return out
 
@@ -363,7 +379,7 @@ def legacy_module(t: Table) -> str:
                     f"    type({s['fortran_type']}) :: p"]
             for n, c in zip(a["entries"], names):
                 f, _, comp = flat[n]
-                value = f"nint(a({c}))" if f["type"] == "int" else f"real(a({c}), wp)"
+                value = f"nint(a({c}))" if _is_int(f) else f"real(a({c}), wp)"
                 body.append(f"    p%{comp} = {value}")
             body.append(f"  end function {a['legacy_function']}")
             funcs.append(body)
@@ -390,11 +406,11 @@ def c_types_module(t: Table) -> str:
     for s in t.structs:
         flat = t.flat_of(s["section"], s["kind"])
         uses.setdefault(s["fortran_module"], []).append(s["fortran_type"])
-        publics += [s["fortran"], s["from_c"]]
+        publics += [s["fortran"], s["from_c"]] + ([s["to_c"]] if "to_c" in s else [])
         body += ["", f"  !> struct {s['name']} (wrappers/c/udmap.h).",
                  f"  type, bind(C) :: {s['fortran']}"]
         for line in s["lines"]:
-            kind = "integer(c_int)" if flat[line[0]][0]["type"] == "int" else "real(c_double)"
+            kind = "integer(c_int)" if _is_int(flat[line[0]][0]) else "real(c_double)"
             body.append(f"    {kind} :: {', '.join(line)}")
         body.append(f"  end type {s['fortran']}")
     funcs = []
@@ -407,9 +423,21 @@ def c_types_module(t: Table) -> str:
         for line in s["lines"]:
             for n in line:
                 f, _, comp = flat[n]
-                value = f"int(c%{n})" if f["type"] == "int" else f"c%{n}"
+                value = f"int(c%{n})" if _is_int(f) else f"c%{n}"
                 funcs.append(f"    p%{comp} = {value}")
         funcs.append(f"  end function {s['from_c']}")
+        if "to_c" not in s:
+            continue
+        funcs += ["", f"  !> The C struct {s['name']} of the kernel's {s['fortran_type']}.",
+                  f"  pure function {s['to_c']}(p) result(c)",
+                  f"    type({s['fortran_type']}), intent(in) :: p",
+                  f"    type({s['fortran']}) :: c"]
+        for line in s["lines"]:
+            for n in line:
+                f, _, comp = flat[n]
+                value = f"int(p%{comp}, c_int)" if _is_int(f) else f"real(p%{comp}, c_double)"
+                funcs.append(f"    c%{n} = {value}")
+        funcs.append(f"  end function {s['to_c']}")
     out = ["!> The C API's parameter structs in Fortran and their conversion to the kernel's "
            "types."]
     out += ["!> " + line for line in textwrap.wrap(STAMP[0].upper() + STAMP[1:] + ".", 92)]

@@ -152,6 +152,7 @@ int udmap_damper_set_CF(udmap_error error, udmap_damper damper, double CF);
 /* ---------------------------------------------------------------- mapping, backbone */
 
 /* Analysis settings; fill with udmap_analysis_defaults, then change what is needed. */
+/* generated:begin udmap_analysis (from kernel/parameters.toml: do not edit) */
 typedef struct {
   double f_min, f_max;  /* band [Hz] */
   double sigma_all;     /* allowable alternating stress [Pa], default 80e6 */
@@ -168,6 +169,7 @@ typedef struct {
                            harmonic_tol) */
   double harmonic_tol;  /* relative change that stops the automatic choice, default 1e-3 */
 } udmap_analysis;
+/* generated:end udmap_analysis */
 
 void udmap_analysis_defaults(udmap_analysis *analysis);
 

@@ -15,6 +15,7 @@ import math
 import numpy as np
 
 from ._lib import ErrorHandle, as_doubles, c_double_p, c_int_p, declare
+from .parameters import Analysis
 
 REGIME_NAMES = {0: "stuck", 1: "partial slip", 2: "full slip", 3: "at or above F_lim"}
 BRANCH_LOWER, BRANCH_UPPER, BRANCH_TURNING = 0, 1, 2
@@ -24,12 +25,7 @@ UNBOUNDED_MESSAGE = ("without structural damping (zeta = 0) friction cannot boun
                      "amplitude is unbounded")
 
 
-class _Analysis(ctypes.Structure):
-    _fields_ = [("f_min", ctypes.c_double), ("f_max", ctypes.c_double),
-                ("sigma_all", ctypes.c_double), ("rtol", ctypes.c_double),
-                ("grid_per_decade", ctypes.c_int), ("eigen_method", ctypes.c_int),
-                ("dense_max", ctypes.c_int), ("sweep_points", ctypes.c_int),
-                ("harmonics", ctypes.c_int), ("harmonic_tol", ctypes.c_double)]
+_Analysis = Analysis  # udmap_analysis
 
 
 class _Point(ctypes.Structure):

@@ -211,3 +211,20 @@ class AsymmetricParams(ctypes.Structure):
         ('kn_curved', ctypes.c_double),
         ('kt_curved', ctypes.c_double),
     ]
+
+
+class Analysis(ctypes.Structure):
+    """udmap_analysis (wrappers/c/udmap.h)."""
+
+    _fields_ = [
+        ('f_min', ctypes.c_double),
+        ('f_max', ctypes.c_double),
+        ('sigma_all', ctypes.c_double),
+        ('rtol', ctypes.c_double),
+        ('grid_per_decade', ctypes.c_int),
+        ('eigen_method', ctypes.c_int),
+        ('dense_max', ctypes.c_int),
+        ('sweep_points', ctypes.c_int),
+        ('harmonics', ctypes.c_int),
+        ('harmonic_tol', ctypes.c_double),
+    ]

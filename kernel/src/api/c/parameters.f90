@@ -5,9 +5,11 @@ module udmap_api_c_parameters
   use, intrinsic :: iso_c_binding, only: c_double, c_int
   use udmap_beam, only: beam_params_type
   use udmap_damper_params, only: asymmetric_params_type
+  use udmap_model, only: analysis_type
   implicit none
   private
-  public :: c_beam_params, beam_from_c, udmap_asymmetric_params, asymmetric_from_c
+  public :: c_beam_params, beam_from_c, udmap_asymmetric_params, asymmetric_from_c, &
+    & c_analysis_type, analysis_from_c, analysis_to_c
 
   !> struct udmap_beam_params (wrappers/c/udmap.h).
   type, bind(C) :: c_beam_params
@@ -24,6 +26,19 @@ module udmap_api_c_parameters
     real(c_double) :: flat1_x, flat1_y, flat2_x, flat2_y, curved_x, curved_y
     real(c_double) :: kn_flat, kt_flat, kn_curved, kt_curved
   end type udmap_asymmetric_params
+
+  !> struct udmap_analysis (wrappers/c/udmap.h).
+  type, bind(C) :: c_analysis_type
+    real(c_double) :: f_min, f_max
+    real(c_double) :: sigma_all
+    real(c_double) :: rtol
+    integer(c_int) :: grid_per_decade
+    integer(c_int) :: eigen_method
+    integer(c_int) :: dense_max
+    integer(c_int) :: sweep_points
+    integer(c_int) :: harmonics
+    real(c_double) :: harmonic_tol
+  end type c_analysis_type
 
 contains
 
@@ -68,4 +83,36 @@ contains
     p%kn_curved = c%kn_curved
     p%kt_curved = c%kt_curved
   end function asymmetric_from_c
+
+  !> The kernel's analysis_type of the C struct udmap_analysis.
+  pure function analysis_from_c(c) result(p)
+    type(c_analysis_type), intent(in) :: c
+    type(analysis_type) :: p
+    p%f_min = c%f_min
+    p%f_max = c%f_max
+    p%sigma_all = c%sigma_all
+    p%rtol = c%rtol
+    p%grid_per_decade = int(c%grid_per_decade)
+    p%eigen_method = int(c%eigen_method)
+    p%dense_max = int(c%dense_max)
+    p%sweep_points = int(c%sweep_points)
+    p%harmonics = int(c%harmonics)
+    p%harmonic_tol = c%harmonic_tol
+  end function analysis_from_c
+
+  !> The C struct udmap_analysis of the kernel's analysis_type.
+  pure function analysis_to_c(p) result(c)
+    type(analysis_type), intent(in) :: p
+    type(c_analysis_type) :: c
+    c%f_min = real(p%f_min, c_double)
+    c%f_max = real(p%f_max, c_double)
+    c%sigma_all = real(p%sigma_all, c_double)
+    c%rtol = real(p%rtol, c_double)
+    c%grid_per_decade = int(p%grid_per_decade, c_int)
+    c%eigen_method = int(p%eigen_method, c_int)
+    c%dense_max = int(p%dense_max, c_int)
+    c%sweep_points = int(p%sweep_points, c_int)
+    c%harmonics = int(p%harmonics, c_int)
+    c%harmonic_tol = real(p%harmonic_tol, c_double)
+  end function analysis_to_c
 end module udmap_api_c_parameters
