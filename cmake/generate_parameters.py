@@ -71,6 +71,7 @@ class Table:
             s.setdefault("kind", None)
         self.legacy = data["legacy"]
         self.fmu = data["fmu"]
+        self.kinds_module = data["fortran"]["kinds_module"]
         self.flat = {}        # (section, kind) -> [(flat name, field, index, fortran component)]
         self.by_flat = {}     # flat name -> (field, index), the first section and kind with it
         for f in self.fields:
@@ -95,10 +96,8 @@ class Table:
             node = node.get(part) if isinstance(node, dict) else None
         if node is None:
             return field["default"]
-        if field["type"] == "point":
-            return node[index]
-        if field["type"] == "points":
-            return node[index // 2][index % 2]
+        for i in _coordinate(field, index):
+            node = node[i]
         return node
 
 
@@ -151,6 +150,11 @@ def _field_items(f: dict, indent: str) -> list[str]:
     return items
 
 
+def _coordinate(f: dict, i: int) -> tuple:
+    """The indices of coordinate i of a point ([x, y]) or points ([[x, y], ...]) field."""
+    return {"point": (i,), "points": (i // 2, i % 2)}.get(f["type"], ())
+
+
 def python_module(t: Table) -> str:
     out = ['"""The parameter table for Python: udmap.case.SCHEMA\'s rows (FIELDS, TOP_LEVEL: '
            'keyword',
@@ -182,10 +186,11 @@ def python_module(t: Table) -> str:
     out.append("}")
     out.append("#: The flat names (C structs, FMU variables, plain arrays) of each section and "
                "kind:")
-    out.append("#: (section, kind) -> ((flat name, dotted field name, coordinate or None), ...).")
+    out.append("#: (section, kind) -> ((flat name, dotted field name, indices of the coordinate), "
+               "...).")
     out.append("FLAT_NAMES = {")
     for (section, kind), rows in t.flat.items():
-        items = [f"({_py(n)}, {_py(f['name'])}, {i if f['type'] in ('point', 'points') else None})"
+        items = [f"({_py(n)}, {_py(f['name'])}, {_py(_coordinate(f, i))})"
                  for n, f, i, _ in rows]
         out += _wrap_py(f"({_py(section)}, {_py(kind)}): (", items, "    ", "),")
     out.append("}")
@@ -390,7 +395,7 @@ def legacy_module(t: Table) -> str:
     out += [
            "module udmap_api_legacy_parameters",
            "  use, intrinsic :: iso_c_binding, only: c_double",
-           "  use udmap_kinds, only: wp"]
+           f"  use {t.kinds_module}, only: wp"]
     out += [f"  use {m}, only: {', '.join(ts)}" for m, ts in uses.items()]
     out += ["  implicit none", "  private"]
     out += _fortran_wrap("  public :: " + ", ".join(publics))

@@ -18,7 +18,7 @@ from pathlib import Path
 from typing import Any
 
 from ._lib import InputError
-from .parameters import CHOICE_CODES, FIELDS, TOP_LEVEL as _TOP_LEVEL
+from .parameters import CHOICE_CODES, FIELDS, FLAT_NAMES, TOP_LEVEL as _TOP_LEVEL
 
 #: The embedded default case (blade A with its asymmetric damper).
 DEFAULT_CASE = Path(__file__).resolve().parent / "data" / "blade_a.json"
@@ -441,14 +441,24 @@ def loads_case(text: str, base_dir: Path | str = ".", source: str = "case") -> C
         raise
 
 
+def flat_params(data: dict, section: str, kind=None) -> dict:
+    """The values of a validated section (of this kind) under the flat names of the C structs
+    and the FMU (neck_L, flat1_x, ...; kernel/parameters.toml), absent optional fields left out."""
+    out = {}
+    for flat, dotted, coordinate in FLAT_NAMES[(section, kind)]:
+        node = data
+        for part in dotted.split("."):
+            node = node.get(part) if isinstance(node, dict) else None
+        if node is not None:
+            for i in coordinate:
+                node = node[i]
+            out[flat] = node
+    return out
+
+
 def beam_params(blade: dict) -> dict:
     """The flat parameter names of the C API / FMU (neck_L, ...) for a beam blade section."""
-    p = {"E": blade["E"], "rho": blade["rho"], "zeta": blade["zeta"]}
-    for part, keys in (("neck", ("L", "h", "b", "elements")), ("platform", ("L", "m", "J")),
-                       ("airfoil", ("L", "h", "b", "elements"))):
-        for key in keys:
-            p[f"{part}_{key}"] = blade[part][key]
-    return p
+    return flat_params(blade, "blade", "beam")
 
 
 def build_blade(case: Case):

@@ -24,7 +24,7 @@ import zipfile
 from pathlib import Path
 
 from ._lib import InputError, fmu_path
-from .case import Case, beam_params
+from .case import Case, beam_params, flat_params
 from .parameters import CASE_ITEMS, CHOICE_CODES, FMU_KIND_VARIABLES
 
 # the FMU variables of a beam blade and of an asymmetric damper (from kernel/parameters.toml)
@@ -57,12 +57,7 @@ def starts_and_absent(case: Case) -> tuple[dict, set]:
         else:
             starts["zeta"] = b.get("zeta") or 0.0
     if d["kind"] == "asymmetric":
-        for k in ("mu", "CF", "kn_flat", "kt_flat", "kn_curved", "kt_curved", "pitch", "y_P",
-                  "beta_L_deg", "beta_R_deg"):
-            starts[k] = d[k]
-        (starts["flat1_x"], starts["flat1_y"]), (starts["flat2_x"], starts["flat2_y"]) = \
-            d["flat_points"]
-        starts["curved_x"], starts["curved_y"] = d["curved_point"]
+        starts.update(flat_params(d, "damper", "asymmetric"))
     else:
         absent.update(ASYMMETRIC)
     return starts, absent
