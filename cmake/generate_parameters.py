@@ -473,8 +473,11 @@ def main(argv=None) -> int:
     p.add_argument("--out", type=Path, help="write under this directory, not the source root")
     p.add_argument("--check", action="store_true",
                    help="fail if a checked-in generated file is not current")
+    p.add_argument("--root", type=Path, default=ROOT,
+                   help="the source tree (default: this script's checkout)")
     args = p.parse_args(argv)
-    files = generate(ROOT)
+    root = args.root
+    files = generate(root)
     if args.check:
         stale = []
         with tempfile.TemporaryDirectory() as tmp:
@@ -482,8 +485,8 @@ def main(argv=None) -> int:
                 (Path(tmp) / path).parent.mkdir(parents=True, exist_ok=True)
                 (Path(tmp) / path).write_text(text, encoding="utf-8")
                 fresh = (Path(tmp) / path).read_text(encoding="utf-8")
-                current = (ROOT / path).read_text(encoding="utf-8") \
-                    if (ROOT / path).is_file() else ""
+                current = (root / path).read_text(encoding="utf-8") \
+                    if (root / path).is_file() else ""
                 if fresh != current:
                     stale.append(path)
                     sys.stdout.writelines(difflib.unified_diff(
@@ -491,11 +494,11 @@ def main(argv=None) -> int:
                         f"{path} (checked in)", f"{path} (from {TABLE})", n=1))
         if stale:
             print(f"\nnot current with {TABLE}: {', '.join(stale)}\n"
-                  f"regenerate with: python3 {ME}   (then commit the files)")
+                  f"regenerate with: python3 {ME} (or make parameters), then commit the files")
             return 1
         print(f"{len(files)} generated files are current with {TABLE}")
         return 0
-    out = args.out or ROOT
+    out = args.out or root
     for path, text in files.items():
         target = out / path
         target.parent.mkdir(parents=True, exist_ok=True)
