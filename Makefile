@@ -11,7 +11,7 @@ export PYTHONPATH := $(CURDIR)/wrappers/python$(if $(PYTHONPATH),:$(PYTHONPATH))
 export PIP_BREAK_SYSTEM_PACKAGES := 1
 export PIP_DISABLE_PIP_VERSION_CHECK := 1
 
-.PHONY: all deps deps-windows build test test-windows test-pip demo bench clean
+.PHONY: all deps deps-windows build test test-windows test-pip demo bench parameters clean
 
 all: build
 
@@ -77,6 +77,10 @@ demo: build
 # (a few minutes more; its numbers are kept in docs/bench/model_error_dti.json for docs/benchmarks.md)
 bench: build
 	$(PYTHON) bench/run.py
+
+# The files generated from the parameter table kernel/parameters.toml (after editing it).
+parameters:
+	$(PYTHON) cmake/generate_parameters.py
 
 clean:
 	rm -rf $(BUILD) out

@@ -106,17 +106,11 @@ CaseConfig *case_read(const char *resourceLocation, char *msg, size_t n) {
     else if (strcmp(key, "C") == 0) file = c->C;
     else if (strcmp(key, "stress_K") == 0) file = c->stress_K;
     else if (strcmp(key, "stress_M") == 0) file = c->stress_M;
-    else if (strcmp(key, "gamma_dof") == 0) c->gamma_dof = (int)x;
-    else if (strcmp(key, "exc_dof") == 0) c->exc_dof = (int)x;
-    else if (strcmp(key, "kt") == 0) c->kt = x;
-    else if (strcmp(key, "M_slip") == 0) c->M_slip = x;
     else if (strcmp(key, "delta_M") == 0) c->has_delta_M = true, c->delta_M = x;
-    else if (strcmp(key, "rtol") == 0) c->analysis.rtol = x;
-    else if (strcmp(key, "grid_per_decade") == 0) c->analysis.grid_per_decade = (int)x;
-    else if (strcmp(key, "eigen_method") == 0) c->analysis.eigen_method = (int)x;
-    else if (strcmp(key, "dense_max") == 0) c->analysis.dense_max = (int)x;
-    else if (strcmp(key, "sweep_points") == 0) c->analysis.sweep_points = (int)x;
-    else if (strcmp(key, "harmonic_tol") == 0) c->analysis.harmonic_tol = x;
+    /* the items that are case-file fields (fmu/parameters.h, from kernel/parameters.toml) */
+#define CASE_ITEM(name, member, cast) else if (strcmp(key, name) == 0) c->member = cast x;
+    UDMAP_CASE_ITEMS(CASE_ITEM)
+#undef CASE_ITEM
     else if (strcmp(key, "table") == 0) {
       c->n = (int)x;
       if (c->n < 2 || c->n > 1000000 || c->gamma)

@@ -10,21 +10,13 @@ module udmap_api_blade
   use udmap_error, only: error_type, fatal_error, UDMAP_EINPUT, UDMAP_EPHYSICS
   use udmap_api_support, only: set_error, clear_error, check_handle, check_input, take_handle, &
     & handle_slot, indexed_name, c_string, put_out
-  use udmap_beam, only: beam_params_type
+  ! udmap_beam_params and its conversion, generated from kernel/parameters.toml
+  use udmap_api_c_parameters, only: c_beam_params, beam_from_c
   use udmap_blade, only: blade_type, receptances_type, new_beam_blade, read_matrices_blade, &
     & export_blade, layer_response
   implicit none
   private
   public :: c_beam_params, beam_from_c
-
-  !> udmap_beam_params: 12 doubles then 2 ints, as in the header.
-  type, bind(C) :: c_beam_params
-    real(c_double) :: E, rho, zeta
-    real(c_double) :: neck_L, neck_h, neck_b
-    real(c_double) :: platform_L, platform_m, platform_J
-    real(c_double) :: airfoil_L, airfoil_h, airfoil_b
-    integer(c_int) :: neck_elements, airfoil_elements
-  end type c_beam_params
 
 contains
 
@@ -231,17 +223,6 @@ contains
   end function udmap_blade_export
 
   ! ------------------------------------------------------------------ helpers
-
-  !> The kernel's parameters of the beam blade from the C struct.
-  pure function beam_from_c(cp) result(p)
-    type(c_beam_params), intent(in) :: cp
-    type(beam_params_type) :: p
-    p = beam_params_type(E=cp%E, rho=cp%rho, zeta=cp%zeta, neck_L=cp%neck_L, neck_h=cp%neck_h, &
-      & neck_b=cp%neck_b, platform_L=cp%platform_L, platform_m=cp%platform_m, &
-      & platform_J=cp%platform_J, airfoil_L=cp%airfoil_L, airfoil_h=cp%airfoil_h, &
-      & airfoil_b=cp%airfoil_b, neck_elements=int(cp%neck_elements), &
-      & airfoil_elements=int(cp%airfoil_elements))
-  end function beam_from_c
 
   !> Gives a new blade to the caller's handle, or frees it on error.
   subroutine hand_over(b, err, out)

@@ -8,18 +8,13 @@ module udmap_api_damper
   use udmap_error, only: error_type, fatal_error, UDMAP_EINPUT
   use udmap_api_support, only: set_error, clear_error, check_handle, check_input, take_handle, &
     & indexed_name
-  use udmap_damper, only: damper_type, asymmetric_params_type, new_asymmetric_damper, &
+  ! udmap_asymmetric_params and its conversion, generated from kernel/parameters.toml
+  use udmap_api_c_parameters, only: udmap_asymmetric_params, asymmetric_from_c
+  use udmap_damper, only: damper_type, new_asymmetric_damper, &
     & new_jenkins_damper, new_table_damper, DAMPER_TABLE
   implicit none
   private
   public :: udmap_asymmetric_params, udmap_damper_info, damper_from_handle, asymmetric_from_c
-
-  !> udmap_asymmetric_params: 16 doubles in the header's order.
-  type, bind(C) :: udmap_asymmetric_params
-    real(c_double) :: CF, mu, pitch, y_P, beta_L_deg, beta_R_deg
-    real(c_double) :: flat1_x, flat1_y, flat2_x, flat2_y, curved_x, curved_y
-    real(c_double) :: kn_flat, kt_flat, kn_curved, kt_curved
-  end type udmap_asymmetric_params
 
   !> udmap_damper_info.
   type, bind(C) :: udmap_damper_info
@@ -39,17 +34,6 @@ contains
     call check_handle(handle, name, error)
     if (.not. allocated(error)) call c_f_pointer(handle, damper)
   end subroutine damper_from_handle
-
-  !> The kernel's parameters of the asymmetric damper from the C struct.
-  pure function asymmetric_from_c(params) result(p)
-    type(udmap_asymmetric_params), intent(in) :: params
-    type(asymmetric_params_type) :: p
-    p = asymmetric_params_type(CF=params%CF, mu=params%mu, pitch=params%pitch, y_P=params%y_P, &
-      & beta_L_deg=params%beta_L_deg, beta_R_deg=params%beta_R_deg, &
-      & flat=reshape([params%flat1_x, params%flat1_y, params%flat2_x, params%flat2_y], [2, 2]), &
-      & curved=[params%curved_x, params%curved_y], kn_flat=params%kn_flat, &
-      & kt_flat=params%kt_flat, kn_curved=params%kn_curved, kt_curved=params%kt_curved)
-  end function asymmetric_from_c
 
   function udmap_new_damper_asymmetric(herr, params, hdamper) result(stat) &
       & bind(C, name="udmap_new_damper_asymmetric")

@@ -47,8 +47,14 @@ module udmap_api_legacy
   use udmap_error, only: error_type, UDMAP_EINPUT
   use udmap_version_info, only: udmap_version_major, udmap_version_minor, udmap_version_patch
   use udmap_api_support, only: copy_out
-  use udmap_api_blade, only: c_beam_params, beam_from_c
-  use udmap_api_damper, only: udmap_asymmetric_params, asymmetric_from_c
+  ! the array layouts, generated from kernel/parameters.toml
+  use udmap_api_legacy_parameters, only: LEGACY_NBEAM, LEGACY_NDAMPER_ASYMMETRIC, &
+    & LEGACY_NDAMPER_JENKINS, LEGACY_NANALYSIS_MIN, LEGACY_NANALYSIS_MAX, &
+    & LEGACY_BEAM_NECK_ELEMENTS, LEGACY_BEAM_AIRFOIL_ELEMENTS, LEGACY_JENKINS_KT, &
+    & LEGACY_JENKINS_M_SLIP, LEGACY_ANALYSIS_F_MIN, LEGACY_ANALYSIS_F_MAX, &
+    & LEGACY_ANALYSIS_SIGMA_ALL, LEGACY_ANALYSIS_RTOL, LEGACY_ANALYSIS_GRID_PER_DECADE, &
+    & LEGACY_ANALYSIS_HARMONICS, LEGACY_ANALYSIS_HARMONIC_TOL, beam_from_array, &
+    & asymmetric_from_array
   use udmap_blade, only: blade_type, new_beam_blade
   use udmap_damper, only: damper_type, new_asymmetric_damper, new_jenkins_damper
   use udmap_model, only: analysis_type, point_type, curve_type, model_type, new_model, &
@@ -60,12 +66,6 @@ module udmap_api_legacy
   public :: LEGACY_NBEAM, LEGACY_NDAMPER_ASYMMETRIC, LEGACY_NDAMPER_JENKINS, &
     & LEGACY_NANALYSIS_MIN, LEGACY_NANALYSIS_MAX, LEGACY_REGIME_UNBOUNDED
 
-  !> Length of BEAM.
-  integer, parameter :: LEGACY_NBEAM = 14
-  !> Length of DAMPER for the asymmetric damper and for the Jenkins element.
-  integer, parameter :: LEGACY_NDAMPER_ASYMMETRIC = 16, LEGACY_NDAMPER_JENKINS = 2
-  !> Allowed lengths of ANALYS.
-  integer, parameter :: LEGACY_NANALYSIS_MIN = 2, LEGACY_NANALYSIS_MAX = 7
   !> REGIME value of a point without a finite response (zeta = 0 and F_E >= F_lim).
   integer, parameter :: LEGACY_REGIME_UNBOUNDED = 4
 
@@ -286,7 +286,8 @@ contains
     if (info /= 0) return
     call zero_points(nforce, gamma_P, f_res, sigma_a, u_E, regime)
     if (present(f_exc)) then
-      if (.not.(f_exc >= analysis(1) .and. f_exc <= analysis(2))) then
+      if (.not.(f_exc >= analysis(LEGACY_ANALYSIS_F_MIN) .and. &
+        & f_exc <= analysis(LEGACY_ANALYSIS_F_MAX))) then
         info = -7
         return
       end if
@@ -385,13 +386,12 @@ contains
     type(damper_type), intent(out) :: damper
     type(error_type), allocatable, intent(out) :: error
     if (n == LEGACY_NDAMPER_JENKINS) then
-      call new_jenkins_damper(damper, real(p(1), wp), real(p(2), wp), error)
+      call new_jenkins_damper(damper, real(p(LEGACY_JENKINS_KT), wp), &
+        & real(p(LEGACY_JENKINS_M_SLIP), wp), error)
       return
     end if
-    ! DAMPER holds the fields of udmap_asymmetric_params in order
-    call new_asymmetric_damper(damper, asymmetric_from_c(udmap_asymmetric_params(p(1), p(2), &
-      & p(3), p(4), p(5), p(6), p(7), p(8), p(9), p(10), p(11), p(12), p(13), p(14), p(15), &
-      & p(16))), error)
+    call new_asymmetric_damper(damper, asymmetric_from_array(p(1:LEGACY_NDAMPER_ASYMMETRIC)), &
+      & error)
   end subroutine build_damper
 
   !> Blade, damper and model from the parameter arrays, and F_lim; INFO names the array
@@ -412,19 +412,18 @@ contains
 
     F_lim = 0
     info = 0
-    if (.not.(whole(beam(13)) .and. whole(beam(14)))) then
+    if (.not.(whole(beam(LEGACY_BEAM_NECK_ELEMENTS)) .and. &
+      & whole(beam(LEGACY_BEAM_AIRFOIL_ELEMENTS)))) then
       info = int(-beam_arg, c_int)
       return
     end if
     ! grid_per_decade and harmonics, where given, are whole numbers
-    if (.not.all(whole(analysis(5:min(nanalysis, 6_c_int))))) then
+    if (.not.all(whole(analysis(LEGACY_ANALYSIS_GRID_PER_DECADE:min(int(nanalysis), &
+      & LEGACY_ANALYSIS_HARMONICS))))) then
       info = int(-analysis_arg, c_int)
       return
     end if
-    ! BEAM holds the fields of udmap_beam_params in order
-    call new_beam_blade(blade, beam_from_c(c_beam_params(beam(1), beam(2), beam(3), beam(4), &
-      & beam(5), beam(6), beam(7), beam(8), beam(9), beam(10), beam(11), beam(12), &
-      & nint(beam(13)), nint(beam(14)))), error)
+    call new_beam_blade(blade, beam_from_array(beam(1:LEGACY_NBEAM)), error)
     if (allocated(error)) then
       info = info_of(error, beam_arg)
       return
@@ -434,13 +433,17 @@ contains
       info = info_of(error, damper_arg)
       return
     end if
-    a%f_min = real(analysis(1), wp)
-    a%f_max = real(analysis(2), wp)
-    if (nanalysis >= 3) a%sigma_all = real(analysis(3), wp)
-    if (nanalysis >= 4) a%rtol = real(analysis(4), wp)
-    if (nanalysis >= 5) a%grid_per_decade = nint(analysis(5))
-    if (nanalysis >= 6) a%harmonics = nint(analysis(6))
-    if (nanalysis >= 7) a%harmonic_tol = real(analysis(7), wp)
+    a%f_min = real(analysis(LEGACY_ANALYSIS_F_MIN), wp)
+    a%f_max = real(analysis(LEGACY_ANALYSIS_F_MAX), wp)
+    if (nanalysis >= LEGACY_ANALYSIS_SIGMA_ALL) &
+      & a%sigma_all = real(analysis(LEGACY_ANALYSIS_SIGMA_ALL), wp)
+    if (nanalysis >= LEGACY_ANALYSIS_RTOL) a%rtol = real(analysis(LEGACY_ANALYSIS_RTOL), wp)
+    if (nanalysis >= LEGACY_ANALYSIS_GRID_PER_DECADE) &
+      & a%grid_per_decade = nint(analysis(LEGACY_ANALYSIS_GRID_PER_DECADE))
+    if (nanalysis >= LEGACY_ANALYSIS_HARMONICS) &
+      & a%harmonics = nint(analysis(LEGACY_ANALYSIS_HARMONICS))
+    if (nanalysis >= LEGACY_ANALYSIS_HARMONIC_TOL) &
+      & a%harmonic_tol = real(analysis(LEGACY_ANALYSIS_HARMONIC_TOL), wp)
     call new_model(model, blade, d, a, error)
     if (allocated(error)) then
       info = info_of(error, analysis_arg)

@@ -10,6 +10,8 @@ module udmap_api_model
     & copy_out
   use udmap_blade, only: blade_type
   use udmap_damper, only: damper_type
+  ! udmap_analysis and its conversions, generated from kernel/parameters.toml
+  use udmap_api_c_parameters, only: c_analysis_type, analysis_from_c, analysis_to_c
   use udmap_model, only: model_type, analysis_type, point_type, curve_type, new_model, &
     & set_damper, limit_force, backbone_curve, backbone, response, response_curves, &
     & limit_force_backbone, set_harmonics, admissible_force
@@ -19,15 +21,6 @@ module udmap_api_model
 
   !> Largest number of roots a udmap_point carries (UDMAP_MAX_ROOTS).
   integer, parameter :: max_roots = 8
-
-  !> struct udmap_analysis.
-  type, bind(C) :: c_analysis_type
-    real(c_double) :: f_min, f_max, sigma_all, rtol
-    integer(c_int) :: grid_per_decade
-    integer(c_int) :: eigen_method, dense_max, sweep_points
-    integer(c_int) :: harmonics
-    real(c_double) :: harmonic_tol
-  end type c_analysis_type
 
   !> struct udmap_point.
   type, bind(C) :: c_point_type
@@ -54,16 +47,7 @@ contains
   subroutine udmap_analysis_defaults(analysis) bind(C, name="udmap_analysis_defaults")
     type(c_analysis_type), intent(out) :: analysis
     type(analysis_type) :: a
-    analysis%f_min = 0
-    analysis%f_max = 0
-    analysis%sigma_all = a%sigma_all
-    analysis%rtol = a%rtol
-    analysis%grid_per_decade = a%grid_per_decade
-    analysis%eigen_method = a%eigen_method
-    analysis%dense_max = a%dense_max
-    analysis%sweep_points = a%sweep_points
-    analysis%harmonics = a%harmonics
-    analysis%harmonic_tol = a%harmonic_tol
+    analysis = analysis_to_c(a)  ! f_min = f_max = 0
   end subroutine udmap_analysis_defaults
 
   !> int udmap_new_model(error, blade, damper, const udmap_analysis *, udmap_model *): couples the
@@ -86,16 +70,7 @@ contains
     if (.not.allocated(error)) then
       call c_f_pointer(bladeh, blade)
       call c_f_pointer(damperh, damper)
-      a%f_min = analysis%f_min
-      a%f_max = analysis%f_max
-      a%sigma_all = analysis%sigma_all
-      a%rtol = analysis%rtol
-      a%grid_per_decade = analysis%grid_per_decade
-      a%eigen_method = analysis%eigen_method
-      a%dense_max = analysis%dense_max
-      a%sweep_points = analysis%sweep_points
-      a%harmonics = analysis%harmonics
-      a%harmonic_tol = analysis%harmonic_tol
+      a = analysis_from_c(analysis)
       allocate(m)
       call new_model(m%model, blade, damper, a, error)
       if (allocated(error)) then

@@ -1,6 +1,7 @@
 """The FMU's inputs and parameters have the ranges of the case-file schema (udmap.case.SCHEMA)
-in its variable table (fmu/variables.h, hence the min/max of modelDescription.xml), and a value
-outside is refused with the case loader's message under the FMU's name."""
+in its variable table (fmu/parameters.h, generated from kernel/parameters.toml as the schema is,
+hence the min/max of modelDescription.xml), and a value outside is refused with the case
+loader's message under the FMU's name."""
 import math
 import re
 from pathlib import Path
@@ -16,8 +17,8 @@ ROOT = Path(__file__).resolve().parents[2]
 
 
 def _fmu_table() -> dict:
-    """name -> (min, max, flags) of the FMU's variable table (fmu/variables.h)."""
-    text = (ROOT / "fmu" / "variables.h").read_text()
+    """name -> (min, max, flags) of the FMU's variable table (fmu/parameters.h)."""
+    text = (ROOT / "fmu" / "parameters.h").read_text()
     rows = re.findall(r"X\((\w+), (REAL|INTEGER|BOOLEAN), (\w+), \w+, \"[^\"]*\", [^,]+, "
                       r"([^,]+), ([^,]+), ([^,]+),", text)
 

@@ -48,6 +48,7 @@ void udmap_get_error(udmap_error error, char *buffer, int buflen);
 /* ---------------------------------------------------------------- blade */
 
 /* Built-in beam blade (PHYSICS.md 1.1). */
+/* generated:begin udmap_beam_params (from kernel/parameters.toml: do not edit) */
 typedef struct {
   double E, rho, zeta;
   double neck_L, neck_h, neck_b;
@@ -55,6 +56,7 @@ typedef struct {
   double airfoil_L, airfoil_h, airfoil_b;
   int neck_elements, airfoil_elements;
 } udmap_beam_params;
+/* generated:end udmap_beam_params */
 
 int udmap_new_blade_beam(udmap_error error, const udmap_beam_params *params, udmap_blade *blade);
 
@@ -91,11 +93,13 @@ int udmap_blade_export(udmap_error error, udmap_blade blade, const char *dir);
 /* ---------------------------------------------------------------- damper */
 
 /* Asymmetric flat/curved rigid damper (PHYSICS.md 2.1). */
+/* generated:begin udmap_asymmetric_params (from kernel/parameters.toml: do not edit) */
 typedef struct {
   double CF, mu, pitch, y_P, beta_L_deg, beta_R_deg;
   double flat1_x, flat1_y, flat2_x, flat2_y, curved_x, curved_y;
   double kn_flat, kt_flat, kn_curved, kt_curved;
 } udmap_asymmetric_params;
+/* generated:end udmap_asymmetric_params */
 
 int udmap_new_damper_asymmetric(udmap_error error, const udmap_asymmetric_params *params,
                                 udmap_damper *damper);
@@ -148,6 +152,7 @@ int udmap_damper_set_CF(udmap_error error, udmap_damper damper, double CF);
 /* ---------------------------------------------------------------- mapping, backbone */
 
 /* Analysis settings; fill with udmap_analysis_defaults, then change what is needed. */
+/* generated:begin udmap_analysis (from kernel/parameters.toml: do not edit) */
 typedef struct {
   double f_min, f_max;  /* band [Hz] */
   double sigma_all;     /* allowable alternating stress [Pa], default 80e6 */
@@ -164,6 +169,7 @@ typedef struct {
                            harmonic_tol) */
   double harmonic_tol;  /* relative change that stops the automatic choice, default 1e-3 */
 } udmap_analysis;
+/* generated:end udmap_analysis */
 
 void udmap_analysis_defaults(udmap_analysis *analysis);
 

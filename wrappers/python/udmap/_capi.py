@@ -14,6 +14,8 @@ import numpy as np
 
 from .errors import error_from_status
 from .locate import FMU_NAMES, fmu_path, library_candidates
+# The parameter structs are generated from kernel/parameters.toml (cmake/generate_parameters.py).
+from .parameters import Analysis, AsymmetricParams, BeamParams
 
 __all__ = ["lib", "fmu_path", "FMU_NAMES", "ErrorHandle", "library_path", "version", "as_doubles",
            "declare"]
@@ -56,33 +58,10 @@ MAX_ROOTS = 8
 MAX_HARMONICS = 64
 
 
-class BeamParams(ctypes.Structure):
-    """udmap_beam_params: 12 doubles then 2 ints."""
-    _fields_ = [(name, _cd) for name in (
-        "E", "rho", "zeta", "neck_L", "neck_h", "neck_b", "platform_L", "platform_m",
-        "platform_J", "airfoil_L", "airfoil_h", "airfoil_b")] + [
-        ("neck_elements", _ci), ("airfoil_elements", _ci)]
-
-
-class AsymmetricParams(ctypes.Structure):
-    """udmap_asymmetric_params: 16 doubles."""
-    _fields_ = [(name, _cd) for name in (
-        "CF", "mu", "pitch", "y_P", "beta_L_deg", "beta_R_deg",
-        "flat1_x", "flat1_y", "flat2_x", "flat2_y", "curved_x", "curved_y",
-        "kn_flat", "kt_flat", "kn_curved", "kt_curved")]
-
-
 class DamperInfo(ctypes.Structure):
     """udmap_damper_info: the base cycle of a damper."""
     _fields_ = [("gamma_b", _cd), ("gamma_s", _cd), ("M_max", _cd), ("M_min", _cd),
                 ("k_stuck", _cd), ("lift_off", _ci)]
-
-
-class Analysis(ctypes.Structure):
-    """udmap_analysis (defaults from the kernel)."""
-    _fields_ = [("f_min", _cd), ("f_max", _cd), ("sigma_all", _cd), ("rtol", _cd),
-                ("grid_per_decade", _ci), ("eigen_method", _ci), ("dense_max", _ci),
-                ("sweep_points", _ci), ("harmonics", _ci), ("harmonic_tol", _cd)]
 
 
 class Point(ctypes.Structure):

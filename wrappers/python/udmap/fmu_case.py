@@ -23,15 +23,14 @@ import xml.etree.ElementTree as ET
 import zipfile
 from pathlib import Path
 
-from .case import EIGEN_METHODS, Case, beam_params, load_case
+from .case import Case, beam_params, flat_params, load_case
 from .errors import InputError
 from .locate import fmu_path
+from .parameters import CASE_ITEMS, CHOICE_CODES, FMU_KIND_VARIABLES
 
-BEAM = ["neck_L", "neck_h", "neck_b", "platform_L", "platform_m", "platform_J", "airfoil_L",
-        "airfoil_h", "airfoil_b", "neck_elements", "airfoil_elements", "E", "rho"]
-ASYMMETRIC = ["mu", "CF", "kn_flat", "kt_flat", "kn_curved", "kt_curved", "pitch", "y_P",
-              "beta_L_deg", "beta_R_deg", "flat1_x", "flat1_y", "flat2_x", "flat2_y",
-              "curved_x", "curved_y"]
+# the FMU variables of a beam blade and of an asymmetric damper (from kernel/parameters.toml)
+BEAM = list(FMU_KIND_VARIABLES[("blade", "beam")])
+ASYMMETRIC = list(FMU_KIND_VARIABLES[("damper", "asymmetric")])
 MATRIX_FILES = ("M", "K", "C", "stress_K", "stress_M")
 
 
@@ -59,12 +58,7 @@ def starts_and_absent(case: Case) -> tuple[dict, set]:
         else:
             starts["zeta"] = b.get("zeta") or 0.0
     if d["kind"] == "asymmetric":
-        for k in ("mu", "CF", "kn_flat", "kt_flat", "kn_curved", "kt_curved", "pitch", "y_P",
-                  "beta_L_deg", "beta_R_deg"):
-            starts[k] = d[k]
-        (starts["flat1_x"], starts["flat1_y"]), (starts["flat2_x"], starts["flat2_y"]) = \
-            d["flat_points"]
-        starts["curved_x"], starts["curved_y"] = d["curved_point"]
+        starts.update(flat_params(d, "damper", "asymmetric"))
     else:
         absent.update(ASYMMETRIC)
     return starts, absent
@@ -78,6 +72,18 @@ def _token(generic_token: str, case_text: str, files: dict[str, bytes]) -> str:
     return f"{{{x[:8]}-{x[8:12]}-{x[12:16]}-{x[16:20]}-{x[20:32]}}}"
 
 
+def _items(data: dict, where: tuple) -> list[str]:
+    """The lines "name value" of the case-file items of the section or kind `where` (section,
+    kind) whose validated fields are `data` (fmu/case.c reads them)."""
+    lines = []
+    for name, kind in CASE_ITEMS[where]:
+        x = data[name]
+        if kind == "choice":
+            x = CHOICE_CODES[(*where, name)][x]
+        lines.append(f"{name} {float(x)!r}" if kind == "real" else f"{name} {int(x)}")
+    return lines
+
+
 def _case_file(case: Case, starts: dict, absent: set, files: dict) -> str:
     """resources/udmap-case.txt without its token line (fmu/case.h)."""
     b, d, a = case.blade, case.damper, case.analysis
@@ -87,19 +93,16 @@ def _case_file(case: Case, starts: dict, absent: set, files: dict) -> str:
             if b.get(key):
                 files[f"{key}.mtx"] = Path(b[key]).read_bytes()
                 lines.append(f"{key} {key}.mtx")
-        lines += [f"gamma_dof {int(b['gamma_dof'])}", f"exc_dof {int(b['exc_dof'])}"]
+        lines += _items(b, ("blade", "matrices"))
     lines.append(f"damper {d['kind']}")
     if d["kind"] == "jenkins":
-        lines += [f"kt {d['kt']!r}", f"M_slip {d['M_slip']!r}"]
+        lines += _items(d, ("damper", "jenkins"))
     elif d["kind"] == "table":
         if d.get("delta_M") is not None:
             lines.append(f"delta_M {float(d['delta_M'])!r}")
         lines.append(f"table {len(d['rows'])}")
         lines += [" ".join(repr(float(x)) for x in row) for row in d["rows"]]
-    lines += [f"rtol {float(a['rtol'])!r}", f"grid_per_decade {int(a['grid_per_decade'])}",
-              f"eigen_method {int(EIGEN_METHODS[a['eigen_method']])}",
-              f"dense_max {int(a['dense_max'])}", f"sweep_points {int(a['sweep_points'])}",
-              f"harmonic_tol {float(a['harmonic_tol'])!r}"]
+    lines += _items(a, ("analysis", None))
     lines += [f"start {k} {float(v)!r}" for k, v in sorted(starts.items())]
     lines += [f"absent {k}" for k in sorted(absent)]
     return "\n".join(lines) + "\n"

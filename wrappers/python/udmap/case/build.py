@@ -10,7 +10,7 @@ from ..errors import InputError
 from ..hbm import Contact
 from ..model import Model
 from .load import Case
-from .schema import EIGEN_METHODS
+from .schema import EIGEN_METHODS, flat_params
 
 ASYMMETRIC_KEYS = ("CF", "mu", "pitch", "y_P", "beta_L_deg", "beta_R_deg", "flat_points",
                    "curved_point", "kn_flat", "kt_flat", "kn_curved", "kt_curved")
@@ -18,12 +18,7 @@ ASYMMETRIC_KEYS = ("CF", "mu", "pitch", "y_P", "beta_L_deg", "beta_R_deg", "flat
 
 def beam_params(blade: dict) -> dict:
     """The flat parameter names of the C API / FMU (neck_L, ...) for a beam blade section."""
-    p = {"E": blade["E"], "rho": blade["rho"], "zeta": blade["zeta"]}
-    for part, keys in (("neck", ("L", "h", "b", "elements")), ("platform", ("L", "m", "J")),
-                       ("airfoil", ("L", "h", "b", "elements"))):
-        for key in keys:
-            p[f"{part}_{key}"] = blade[part][key]
-    return p
+    return flat_params(blade, "blade", "beam")
 
 
 def build_blade(case: Case) -> Blade:

@@ -1,5 +1,5 @@
 """The case-file schema (INTERFACES.md "Case files"): every field with its type, its allowed
-range (physical bounds, README "Case files"), its unit and its default, in one table,
+range (physical bounds, docs/case-files.md), its unit and its default, in one table,
 :data:`SCHEMA`, and the checks of one value against its row.
 
 A value outside its row raises :class:`~udmap.errors.InputError` naming the field by its dotted
@@ -13,9 +13,10 @@ from dataclasses import dataclass
 from typing import Any
 
 from ..errors import InputError
+from ..parameters import CHOICE_CODES, FIELDS, FLAT_NAMES, TOP_LEVEL as _TOP_LEVEL
 
 #: Kernel codes of analysis.eigen_method.
-EIGEN_METHODS = {"auto": 0, "direct": 1, "modal": 2}
+EIGEN_METHODS = CHOICE_CODES[("analysis", None, "eigen_method")]
 
 REQUIRED = "required"   # default marker: the field must be given
 OPTIONAL = "optional"   # default marker: the field may be absent (no value is filled in)
@@ -49,108 +50,15 @@ class Field:
     nonzero: bool = False
 
 
-def _real(lo, hi, unit, doc, default=REQUIRED, open=False):
-    return Field("real", lo, hi, unit, default, doc, open=open)
-
-
-def _int(lo, hi, doc, default=REQUIRED, even=False):
-    return Field("int", lo, hi, "", default, doc, even=even)
-
-
-# Shared bounds (why these numbers: README "Case files", valid ranges).
-_LENGTH = (1e-4, 3.0)        # m: beam lengths, micro-turbines to beyond the longest LP blades
-_SECTION = (1e-5, 1.0)       # m: section height and width
-_COORD = (-1.0, 1.0)         # m: damper geometry, coordinates from the damper's centre of gravity
-_CONTACT = (1e2, 1e12)       # N/m: contact stiffness per contact point
-_ZETA = (0.0, 0.5)           # damping ratio of the first mode, well below critical
-_BAND = (1e-3, 1e6)          # Hz
-
 #: The schema: (section, kind) -> {dotted field name: Field}. ``kind`` is None for sections
-#: without kinds. Adding a field is one line here; nested objects are spelled with dots.
-SCHEMA: dict[tuple, dict[str, Field]] = {
-    ("blade", "beam"): {
-        "E": _real(1e6, 1e13, "Pa", "Young's modulus: elastomers to beyond diamond (1.2e12)"),
-        "rho": _real(1e2, 3e4, "kg/m3", "density: foams to beyond osmium (22600)"),
-        "zeta": _real(*_ZETA, "", "damping ratio of the first bare-blade mode, up to half "
-                  "critical"),
-        "neck.L": _real(*_LENGTH, "m", "neck length: micro-turbines to beyond the longest "
-                        "steam-turbine blades"),
-        "neck.h": _real(*_SECTION, "m", "neck section height (bending direction)"),
-        "neck.b": _real(*_SECTION, "m", "neck section width"),
-        "neck.elements": _int(1, 1000, "neck beam elements (the first modes converge with a few)"),
-        "platform.L": _real(1e-5, 1.0, "m", "platform length"),
-        "platform.m": _real(1e-6, 1e3, "kg", "platform mass: 1 mg to 1 t"),
-        "platform.J": _real(1e-15, 1e2, "kg.m2", "platform rotary inertia about P: those masses "
-                            "at 30 um to 0.3 m"),
-        "airfoil.L": _real(*_LENGTH, "m", "airfoil length"),
-        "airfoil.h": _real(*_SECTION, "m", "airfoil section height (bending direction)"),
-        "airfoil.b": _real(*_SECTION, "m", "airfoil section width"),
-        "airfoil.elements": _int(2, 1000, "airfoil beam elements (even: E is a node)", even=True),
-    },
-    ("blade", "matrices"): {
-        "M": Field("path", doc="mass matrix (Matrix Market)"),
-        "K": Field("path", doc="stiffness matrix (Matrix Market)"),
-        "C": Field("path", default=OPTIONAL, doc="damping matrix (Matrix Market)"),
-        "gamma_dof": _int(1, 10**8, "DOF of the platform rotation (1-based)"),
-        "exc_dof": _int(1, 10**8, "DOF of the excitation (1-based)"),
-        "stress_K": Field("path", default=OPTIONAL, doc="stress row, stiffness part"),
-        "stress_M": Field("path", default=OPTIONAL, doc="stress row, mass part"),
-        "zeta": _real(*_ZETA, "", "damping ratio of the first bare-blade mode", default=0.0),
-    },
-    ("damper", "asymmetric"): {
-        "CF": _real(1e-3, 1e6, "N", "centrifugal load on the damper (real dampers: 10 N to "
-                    "10 kN)"),
-        "mu": _real(1e-4, 10.0, "", "friction coefficient (dry metals: 0.1 to 1.5; large values "
-                    "jam the damper: status 3)"),
-        "pitch": _real(1e-6, 1.0, "m", "distance between the platform centres"),
-        "y_P": _real(*_COORD, "m", "radial coordinate of the platform centres (damper geometry: "
-                     "within 1 m of its centre of gravity)"),
-        "beta_L_deg": _real(0.0, 90.0, "deg", "left face inclination", open=True),
-        "beta_R_deg": _real(0.0, 90.0, "deg", "right face inclination", open=True),
-        "flat_points": Field("points", *_COORD, "m", doc="flat-side contact points", count=2),
-        "curved_point": Field("point", *_COORD, "m", doc="curved-side contact point"),
-        "kn_flat": _real(*_CONTACT, "N/m", "normal stiffness, flat side (soft polymer to stiffer "
-                           "than a 1 m steel cube)"),
-        "kt_flat": _real(*_CONTACT, "N/m", "tangential stiffness, flat side"),
-        "kn_curved": _real(*_CONTACT, "N/m", "normal stiffness, curved side"),
-        "kt_curved": _real(*_CONTACT, "N/m", "tangential stiffness, curved side"),
-    },
-    ("damper", "jenkins"): {
-        "kt": _real(1e-6, 1e12, "N.m/rad", "stuck stiffness (wide: non-dimensional models too)"),
-        "M_slip": _real(1e-9, 1e9, "N.m", "slip moment"),
-    },
-    ("damper", "table"): {
-        "file": Field("path", doc="CSV gamma,k_re,k_im"),
-        "delta_M": _real(1e-12, 1e9, "N.m", "moment swing for extrapolation", default=OPTIONAL),
-    },
-    ("analysis", None): {
-        "f_min": _real(*_BAND, "Hz", "lower edge of the band in which the resonance is sought "
-                      "(1 mHz: non-dimensional models)"),
-        "f_max": _real(*_BAND, "Hz", "upper edge of the band"),
-        "sigma_all": _real(1e3, 1e10, "Pa", "allowable alternating stress of the HCF check (up to "
-                          "beyond any material's strength)", default=80e6),
-        "rtol": _real(1e-15, 1e-3, "", "relative tolerance of peak and root refinement (kernel "
-                      "limits, as below)", default=1e-12),
-        "grid_per_decade": _int(2, 1000, "amplitude grid on which backbone roots are "
-                                "bracketed", default=24),
-        "layers": _int(4, 100000, "amplitude layers of the response curves (refined "
-                      "adaptively)", default=200),
-        "eigen_method": Field("choice", default="auto", choices=tuple(EIGEN_METHODS),
-                              doc="eigenvalue start: direct (zggev; ARPACK for large models) "
-                              "or modal (secular equation)"),
-        "dense_max": _int(1, 100000, "largest number of DOFs solved densely by zggev", default=200),
-        "sweep_points": _int(16, 1000000, "bare-blade frequency samples for bracketing "
-                             "curve crossings",
-                             default=400),
-        "harmonics": Field("harmonics", 2, 64, default=1,
-                           doc="1, harmonics 0..H, or auto (PHYSICS.md 4.1)"),
-        "harmonic_tol": _real(1e-10, 0.1, "", "relative change that stops harmonics auto "
-                              "(the kernel's limits)", default=1e-3),
-    },
-}
+#: without kinds. Its rows come from the parameter table kernel/parameters.toml (through the
+#: generated udmap.parameters): adding a field is one row there.
+SCHEMA: dict[tuple, dict[str, Field]] = {}
+for section, kind, name, keywords in FIELDS:
+    SCHEMA.setdefault((section, kind), {})[name] = Field(**keywords)
+del section, kind, name, keywords
 #: Top-level fields besides the sections.
-TOP_LEVEL = {"name": Field("text", default="case", doc="case name"),
-             "description": Field("text", default=OPTIONAL, doc="free text")}
+TOP_LEVEL = {name: Field(**keywords) for name, keywords in _TOP_LEVEL}
 SECTIONS = ("blade", "damper", "analysis")
 #: Analysis settings with their defaults (None: required), from the schema.
 ANALYSIS_DEFAULTS: dict[str, Any] = {
@@ -354,3 +262,18 @@ def schema_markdown() -> str:
                 f"`{f.default}`" if isinstance(f.default, str) else fmt_number(f.default)
             lines.append(f"| {where} | {kind_text} | {allowed} | {default} | {f.doc} |")
     return "\n".join(lines) + "\n"
+
+
+def flat_params(data: dict, section: str, kind=None) -> dict:
+    """The values of a validated section (of this kind) under the flat names of the C structs
+    and the FMU (neck_L, flat1_x, ...; kernel/parameters.toml), absent optional fields left out."""
+    out = {}
+    for flat, dotted, coordinate in FLAT_NAMES[(section, kind)]:
+        node = data
+        for part in dotted.split("."):
+            node = node.get(part) if isinstance(node, dict) else None
+        if node is not None:
+            for i in coordinate:
+                node = node[i]
+            out[flat] = node
+    return out
