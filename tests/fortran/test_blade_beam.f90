@@ -6,6 +6,7 @@ module test_blade_beam
   use udmap_error, only: error_type, UDMAP_EINPUT
   use udmap_beam, only: beam_params_type
   use udmap_blade, only: blade_type, new_beam_blade, new_matrices_blade
+  use fixtures, only: blade_a_beam_params, ieee_nan, ieee_inf
   use testing, only: test_suite, check_close, check_true, check_no_error, check_error, &
     & unittest_type, new_unittest
   implicit none
@@ -24,23 +25,13 @@ contains
     type(test_suite), intent(inout) :: suite
     type(beam_params_type) :: a
 
-    a = blade_a()
+    a = blade_a_beam_params()
     call layout_and_first_frequency()
     call cantilever_airfoil()
     call mesh_convergence()
     call bad_parameters()
 
   contains
-
-    !> blade_a.json
-    function blade_a() result(p)
-      type(beam_params_type) :: p
-      p = beam_params_type(E=170e9_wp, rho=8200.0_wp, zeta=0.002_wp, &
-        & neck_L=0.020_wp, neck_h=0.008_wp, neck_b=0.020_wp, &
-        & platform_L=0.010_wp, platform_m=0.021_wp, platform_J=1.4e-6_wp, &
-        & airfoil_L=0.120_wp, airfoil_h=0.004_wp, airfoil_b=0.030_wp, &
-        & neck_elements=8, airfoil_elements=24)
-    end function blade_a
 
     subroutine layout_and_first_frequency()
       type(blade_type) :: b
@@ -223,16 +214,5 @@ contains
         & .and. b%exc_dof == 3)
     end subroutine bad_parameters
 
-    function ieee_inf() result(x)
-      use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_positive_inf
-      real(wp) :: x
-      x = ieee_value(x, ieee_positive_inf)
-    end function ieee_inf
-
-    function ieee_nan() result(x)
-      use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
-      real(wp) :: x
-      x = ieee_value(x, ieee_quiet_nan)
-    end function ieee_nan
   end subroutine run_blade_beam
 end module test_blade_beam

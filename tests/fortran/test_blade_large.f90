@@ -9,6 +9,7 @@ module test_blade_large
   use udmap_error, only: error_type
   use udmap_beam, only: beam_params_type
   use udmap_blade, only: blade_type, receptances_type, new_beam_blade, layer_response
+  use fixtures, only: blade_a_beam_params
   use testing, only: test_suite, check_close, check_true, check_no_error, unittest_type, &
     & new_unittest
   implicit none
@@ -42,11 +43,8 @@ contains
     !> Near the resonance with a stuck-like damper.
     real(wp), parameter :: fl(2) = [190.0_wp, 197.6_wp]
 
-    a = beam_params_type(E=170e9_wp, rho=8200.0_wp, zeta=0.002_wp, &
-      & neck_L=0.020_wp, neck_h=0.008_wp, neck_b=0.020_wp, &
-      & platform_L=0.010_wp, platform_m=0.021_wp, platform_J=1.4e-6_wp, &
-      & airfoil_L=0.120_wp, airfoil_h=0.004_wp, airfoil_b=0.030_wp, &
-      & neck_elements=8, airfoil_elements=2048)
+    a = blade_a_beam_params()
+    a%airfoil_elements = 2048
     call new_beam_blade(b, a, error)
     call check_no_error(suite, "2048-element blade builds", error)
     if (allocated(error)) return

@@ -6,6 +6,7 @@ module test_blade_mmio
   use udmap_error, only: error_type, UDMAP_EINPUT
   use udmap_mmio, only: mtx_type, read_mtx, write_mtx, mtx_to_dense, mtx_bandwidth
   use udmap_blade, only: blade_type, read_matrices_blade
+  use fixtures, only: temp_dir
   use testing, only: test_suite, check_close, check_true, check_no_error, check_error, &
     & unittest_type, new_unittest
   implicit none
@@ -24,7 +25,7 @@ contains
     type(test_suite), intent(inout) :: suite
     character(len=:), allocatable :: dir
 
-    dir = temp_dir()
+    dir = temp_dir("mmio")
     call round_trip()
     call formats()
     call malformed()
@@ -240,19 +241,5 @@ contains
       close(unit)
     end subroutine write_text
 
-    function temp_dir() result(d)
-      character(len=:), allocatable :: d
-      character(len=256) :: base
-      character(len=12) :: suffix
-      real(wp) :: u
-      integer :: stat
-      call get_environment_variable("TMPDIR", base, status=stat)
-      if (stat /= 0 .or. len_trim(base) == 0) base = "/tmp"
-      call random_init(.false., .true.)
-      call random_number(u)
-      write(suffix, '(i12.12)') int(u*1.0e12_wp, kind=8)
-      d = trim(base)//"/udmap_test_mmio_"//suffix
-      call execute_command_line("mkdir -p "//d)
-    end function temp_dir
   end subroutine run_blade_mmio
 end module test_blade_mmio

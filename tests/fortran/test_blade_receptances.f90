@@ -12,6 +12,7 @@ module test_blade_receptances
   use udmap_beam, only: beam_params_type
   use udmap_blade, only: blade_type, receptances_type, new_beam_blade, new_matrices_blade, &
     & read_matrices_blade, export_blade, layer_response
+  use fixtures, only: blade_a_beam_params, ieee_nan, temp_dir
   use testing, only: test_suite, check_close, check_true, check_no_error, check_error, &
     & unittest_type, new_unittest
   implicit none
@@ -41,11 +42,7 @@ contains
     real(wp), parameter :: far(7) = [12000.0_wp, 13500.0_wp, 14200.0_wp, 20000.0_wp, 60000.0_wp, &
       & 89000.0_wp, 100000.0_wp]
 
-    a = beam_params_type(E=170e9_wp, rho=8200.0_wp, zeta=0.002_wp, &
-      & neck_L=0.020_wp, neck_h=0.008_wp, neck_b=0.020_wp, &
-      & platform_L=0.010_wp, platform_m=0.021_wp, platform_J=1.4e-6_wp, &
-      & airfoil_L=0.120_wp, airfoil_h=0.004_wp, airfoil_b=0.030_wp, &
-      & neck_elements=8, airfoil_elements=24)
+    a = blade_a_beam_params()
     call new_beam_blade(b, a, error)
     call check_no_error(suite, "blade A builds", error)
     if (allocated(error)) return
@@ -246,7 +243,7 @@ contains
       real(wp) :: worst
       integer :: i
       logical :: exists
-      dir = temp_dir("export")
+      dir = temp_dir("blade_"//"export")
       call export_blade(b, dir, error)
       call check_no_error(suite, "export blade A", error)
       if (allocated(error)) return
@@ -460,27 +457,5 @@ contains
       end do
     end subroutine quad_solve
 
-    !> A fresh directory under $TMPDIR (or /tmp).
-    function temp_dir(tag) result(dir)
-      character(len=*), intent(in) :: tag
-      character(len=:), allocatable :: dir
-      character(len=256) :: base
-      character(len=12) :: suffix
-      real(wp) :: u
-      integer :: stat
-      call get_environment_variable("TMPDIR", base, status=stat)
-      if (stat /= 0 .or. len_trim(base) == 0) base = "/tmp"
-      call random_init(.false., .true.)
-      call random_number(u)
-      write(suffix, '(i12.12)') int(u*1.0e12_wp, kind=8)
-      dir = trim(base)//"/udmap_test_blade_"//tag//"_"//suffix
-      call execute_command_line("mkdir -p "//dir)
-    end function temp_dir
-
-    function ieee_nan() result(x)
-      use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
-      real(wp) :: x
-      x = ieee_value(x, ieee_quiet_nan)
-    end function ieee_nan
   end subroutine run_blade_receptances
 end module test_blade_receptances

@@ -8,6 +8,7 @@ module test_damper_blade_a
   use udmap_damper_tracer, only: full_slip_moment, CONTACT_SLIP_POS, CONTACT_SLIP_NEG
   use udmap_damper_loops, only: loop_type, loop_workspace_type, ramp_type, cf_only_ramp, &
     & steady_loop, loop_stiffness
+  use fixtures, only: sign_of
   use testing, only: test_suite, check_close, check_true, check_no_error, unittest_type, &
     & new_unittest
   implicit none
@@ -197,14 +198,6 @@ contains
     call check_loop(0.9_wp*gb)
 
   contains
-
-    pure function sign_of(mode) result(s)
-      integer, intent(in) :: mode(3)
-      integer :: s(3)
-      s = 0
-      where (mode == CONTACT_SLIP_POS) s = 1
-      where (mode == CONTACT_SLIP_NEG) s = -1
-    end function sign_of
 
     subroutine check_complex(suite, name, actual, expected, rtol, atol)
       type(test_suite), intent(inout) :: suite

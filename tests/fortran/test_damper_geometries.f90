@@ -7,6 +7,7 @@ module test_damper_geometries
   use udmap_damper, only: damper_type, asymmetric_params_type, new_asymmetric_damper
   use udmap_damper_params, only: blade_a_damper_params
   use udmap_damper_tracer, only: full_slip_moment, CONTACT_SLIP_POS, CONTACT_SLIP_NEG
+  use fixtures, only: sign_of
   use testing, only: test_suite, check_close, check_true, check_no_error, unittest_type, &
     & new_unittest
   implicit none
@@ -67,14 +68,5 @@ contains
       end if
     end do
 
-  contains
-
-    pure function sign_of(mode) result(s)
-      integer, intent(in) :: mode(3)
-      integer :: s(3)
-      s = 0
-      where (mode == CONTACT_SLIP_POS) s = 1
-      where (mode == CONTACT_SLIP_NEG) s = -1
-    end function sign_of
   end subroutine run_damper_geometries
 end module test_damper_geometries

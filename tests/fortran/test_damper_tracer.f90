@@ -7,6 +7,7 @@ module test_damper_tracer
   use udmap_damper_params, only: blade_a_damper_params
   use udmap_damper_tracer, only: damper_state_type, virgin_state, ramp_CF, advance, &
     & restoring_moment, CONTACT_OPEN
+  use fixtures, only: ieee_nan
   use testing, only: test_suite, check_close, check_true, check_no_error, check_error, &
     & unittest_type, new_unittest
   implicit none
@@ -86,12 +87,5 @@ contains
     call ramp_CF(d%geometry, st, -1.0_wp, error)
     call check_error(suite, "ramp_CF rejects negative CF", error, UDMAP_EINPUT, "CF")
 
-  contains
-
-    function ieee_nan() result(x)
-      use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
-      real(wp) :: x
-      x = ieee_value(x, ieee_quiet_nan)
-    end function ieee_nan
   end subroutine run_damper_tracer
 end module test_damper_tracer

@@ -15,6 +15,7 @@ module test_hbm_blade_a
   use udmap_aft, only: aft_workspace_type, aft_moment
   use udmap_hbm, only: hbm_settings_type, hbm_point_type, hbm_peaks, hbm_response
   use udmap_newmark, only: dti_settings_type, dti_point_type, dti_response
+  use fixtures, only: blade_a_beam_params
   use testing, only: test_suite, check_close, check_true, check_no_error, unittest_type, &
     & new_unittest
   implicit none
@@ -52,10 +53,7 @@ contains
     integer :: i, v
     character(len=24) :: tag
 
-    bp = beam_params_type(E=170e9_wp, rho=8200.0_wp, zeta=0.002_wp, neck_L=0.020_wp, &
-      & neck_h=0.008_wp, neck_b=0.020_wp, platform_L=0.010_wp, platform_m=0.021_wp, &
-      & platform_J=1.4e-6_wp, airfoil_L=0.120_wp, airfoil_h=0.004_wp, airfoil_b=0.030_wp, &
-      & neck_elements=8, airfoil_elements=24)
+    bp = blade_a_beam_params()
     call new_beam_blade(blade, bp, error)
     call check_no_error(suite, "blade A", error)
     call new_asymmetric_damper(damper, blade_a_damper_params(), error)

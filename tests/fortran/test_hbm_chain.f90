@@ -8,6 +8,7 @@ module test_hbm_chain
   use udmap_linear_structure, only: structure_type, new_structure
   use udmap_hysteretic, only: jenkins_element_type, new_jenkins_element
   use udmap_hbm, only: hbm_settings_type, hbm_point_type, hbm_peak, HBM_FULL
+  use fixtures, only: spring_chain
   use testing, only: test_suite, check_close, check_true, check_no_error, unittest_type, &
     & new_unittest
   implicit none
@@ -39,18 +40,7 @@ contains
     integer :: i, H
     character(len=16) :: tag
 
-    M = 0.0_wp
-    K = 0.0_wp
-    ! spring i joins node i-1 (the ground for i = 1) and node i
-    do i = 1, n
-      M(i,i) = 1.0_wp + 0.1_wp*i
-      K(i,i) = K(i,i) + 100.0_wp
-    end do
-    do i = 2, n
-      K(i-1,i-1) = K(i-1,i-1) + 100.0_wp
-      K(i-1,i) = K(i-1,i) - 100.0_wp
-      K(i,i-1) = K(i,i-1) - 100.0_wp
-    end do
+    call spring_chain(M, K)
     sK = K(gdof, :)
     sM = 0.0_wp
     sM(5) = 0.1_wp

@@ -9,6 +9,7 @@ module test_hbm_dti
   use udmap_hysteretic, only: jenkins_element_type, new_jenkins_element
   use udmap_hbm, only: hbm_settings_type, hbm_point_type, hbm_peak, hbm_response
   use udmap_newmark, only: dti_settings_type, dti_point_type, dti_response, dti_peak
+  use fixtures, only: spring_chain
   use testing, only: test_suite, check_close, check_true, check_no_error, check_error, &
     & unittest_type, new_unittest
   implicit none
@@ -34,7 +35,7 @@ contains
     type(dti_settings_type) :: dset
     type(dti_point_type) :: dp
     real(wp) :: M(n,n), K(n,n), sK(n), sM(n), err(3), exact, w, val(4), ref, order
-    integer :: i, j
+    integer :: j
     integer, parameter :: Ns(4) = [128, 256, 1024, 4096]
 
     ! one DOF: m = 1, k = 1, c = 0.01 (PHYSICS.md 8)
@@ -81,17 +82,7 @@ contains
 
     ! (c) banded chain, Jenkins on DOF 4, at the single-harmonic peak frequency: strong third
     ! harmonic (3 f near the second mode), so H = 1 is far off while H = 13 and Newmark agree
-    M = 0.0_wp
-    K = 0.0_wp
-    do i = 1, n
-      M(i,i) = 1.0_wp + 0.1_wp*i
-      K(i,i) = K(i,i) + 100.0_wp
-    end do
-    do i = 2, n
-      K(i-1,i-1) = K(i-1,i-1) + 100.0_wp
-      K(i-1,i) = K(i-1,i) - 100.0_wp
-      K(i,i-1) = K(i,i-1) - 100.0_wp
-    end do
+    call spring_chain(M, K)
     sK = K(gdof, :)
     sM = 0.0_wp
     sM(5) = 0.1_wp

@@ -13,6 +13,7 @@ module test_hbm_stress
   use udmap_aft, only: aft_workspace_type, aft_moment
   use udmap_hbm, only: hbm_settings_type, hbm_point_type, hbm_peak, hbm_response
   use udmap_newmark, only: dti_settings_type, dti_point_type, dti_response
+  use fixtures, only: ieee_nan
   use testing, only: test_suite, check_true, check_error, unittest_type, new_unittest
   implicit none
   private
@@ -141,10 +142,5 @@ contains
       end if
       call check_true(suite, name, fine)
     end subroutine account
-    function ieee_nan() result(x)
-      use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
-      real(wp) :: x
-      x = ieee_value(1.0_wp, ieee_quiet_nan)
-    end function ieee_nan
   end subroutine run_hbm_stress
 end module test_hbm_stress

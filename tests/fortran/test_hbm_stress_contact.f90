@@ -14,6 +14,7 @@ module test_hbm_stress_contact
   use udmap_aft, only: aft_workspace_type, aft_moment
   use udmap_hbm, only: hbm_settings_type, hbm_point_type, hbm_peak
   use udmap_newmark, only: dti_settings_type, dti_point_type, dti_response
+  use fixtures, only: blade_a_beam_params
   use testing, only: test_suite, check_true, check_error, unittest_type, new_unittest
   implicit none
   private
@@ -50,10 +51,7 @@ contains
     integer :: im, ic, ik, ig, iz, jf
     character(len=96) :: tag
 
-    bp = beam_params_type(E=170e9_wp, rho=8200.0_wp, zeta=0.002_wp, neck_L=0.020_wp, &
-      & neck_h=0.008_wp, neck_b=0.020_wp, platform_L=0.010_wp, platform_m=0.021_wp, &
-      & platform_J=1.4e-6_wp, airfoil_L=0.120_wp, airfoil_h=0.004_wp, airfoil_b=0.030_wp, &
-      & neck_elements=8, airfoil_elements=24)
+    bp = blade_a_beam_params()
     call new_beam_blade(blade, bp, error)
     call structure_from_blade(st, blade, error)
     set%ds_max = 0.3_wp

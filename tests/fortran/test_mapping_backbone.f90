@@ -10,6 +10,7 @@ module test_mapping_backbone
   use udmap_eigen_start, only: direct_eigen_start, secular_root
   use udmap_model, only: model_type, analysis_type, point_type, new_model, limit_force, &
     & backbone, backbone_curve, response, REGIME_LIMIT, REGIME_STUCK, REGIME_FULL_SLIP
+  use fixtures, only: blade_a_beam_params, dense_gamma, layer_force
   use testing, only: test_suite, check_close, check_true, check_no_error, check_error, &
     & unittest_type, new_unittest
   implicit none
@@ -50,10 +51,7 @@ contains
     logical :: ok
     integer :: i, j
 
-    params = beam_params_type(E=170e9_wp, rho=8200.0_wp, zeta=0.002_wp, neck_L=0.020_wp, &
-      & neck_h=0.008_wp, neck_b=0.020_wp, platform_L=0.010_wp, platform_m=0.021_wp, &
-      & platform_J=1.4e-6_wp, airfoil_L=0.120_wp, airfoil_h=0.004_wp, airfoil_b=0.030_wp, &
-      & neck_elements=8, airfoil_elements=24)
+    params = blade_a_beam_params()
     call new_beam_blade(blade, params, error)
     call check_no_error(suite, "blade", error)
     call new_jenkins_damper(damper, kt, M_slip, error)
@@ -71,7 +69,7 @@ contains
     do i = 1, size(points)
       w = 2*pi*points(i)%f_res
       k = damper%stiffness(points(i)%gamma_P)
-      call layer_force(points(i)%gamma_P, k, w, F, dF)
+      call layer_force(blade, points(i)%gamma_P, k, w, F, dF, error)
       ! the layer gamma_P reaches F_E at f_res, with a double crossing (dF/domega = 0)
       call check_close(suite, "F(f_res) = F_E", F, points(i)%F_E, 1e-10_wp)
       call check_close(suite, "dF/domega = 0", dF*w/F, 0.0_wp, 0.0_wp, 1e-8_wp)
@@ -81,7 +79,7 @@ contains
         call check_true(suite, "layers above stay above F_E", fmin_layer > points(i)%F_E)
       end do
       ! Sherman-Morrison against a dense solve of the coupled blade at the peak
-      call check_close(suite, "gamma_P by dense solve", dense_gamma(points(i)%gamma_P, &
+      call check_close(suite, "gamma_P by dense solve", dense_gamma(blade, damper, points(i)%gamma_P, &
         & points(i)%F_E, w), points(i)%gamma_P, 1e-9_wp)
     end do
     call check_true(suite, "regime full slip", points(2)%regime == REGIME_FULL_SLIP)
@@ -189,26 +187,12 @@ contains
     call check_no_error(suite, "response", error)
     do i = 1, size(points)
       do j = 1, size(points(i)%roots)
-        call check_close(suite, "response root by dense solve", dense_gamma(points(i)%roots(j), &
+        call check_close(suite, "response root by dense solve", dense_gamma(blade, damper, points(i)%roots(j), &
           & points(i)%F_E, 2*pi*190.0_wp), points(i)%roots(j), 1e-9_wp)
       end do
     end do
 
   contains
-
-    !> F(omega) = gamma/|g~| and dF/d omega of the layer gamma (stiffness k).
-    subroutine layer_force(gamma, k, w, F, dF)
-      real(wp), intent(in) :: gamma, w
-      complex(wp), intent(in) :: k
-      real(wp), intent(out) :: F, dF
-      type(receptances_type) :: r
-      complex(wp) :: g, dg
-      call blade%receptances(w, r, error, derivatives=.true.)
-      g = r%gE/(1 + k*r%gg)
-      dg = r%dgE/(1 + k*r%gg) - r%gE*k*r%dgg/(1 + k*r%gg)**2
-      F = gamma/abs(g)
-      dF = -F*real(dg*conjg(g), wp)/abs(g)**2
-    end subroutine layer_force
 
     !> min over the band of F(omega) for the layer gamma: 4000 samples, then golden section
     !> around the smallest.
@@ -222,24 +206,24 @@ contains
       w0 = 2*pi*analysis%f_min
       h = 2*pi*(analysis%f_max - analysis%f_min)/4000
       do n = 0, 4000
-        call layer_force(gamma, kk, w0 + n*h, vals(n), dummy)
+        call layer_force(blade, gamma, kk, w0 + n*h, vals(n), dummy, error)
       end do
       best = minloc(vals, 1) - 1
       a = w0 + max(best - 1, 0)*h
       b = w0 + min(best + 1, 4000)*h
       c = b - (b - a)*0.618033988749895_wp
       d = a + (b - a)*0.618033988749895_wp
-      call layer_force(gamma, kk, c, Fc, dummy)
-      call layer_force(gamma, kk, d, Fd, dummy)
+      call layer_force(blade, gamma, kk, c, Fc, dummy, error)
+      call layer_force(blade, gamma, kk, d, Fd, dummy, error)
       do it = 1, 100
         if (Fc < Fd) then
           b = d; d = c; Fd = Fc
           c = b - (b - a)*0.618033988749895_wp
-          call layer_force(gamma, kk, c, Fc, dummy)
+          call layer_force(blade, gamma, kk, c, Fc, dummy, error)
         else
           a = c; c = d; Fc = Fd
           d = a + (b - a)*0.618033988749895_wp
-          call layer_force(gamma, kk, d, Fd, dummy)
+          call layer_force(blade, gamma, kk, d, Fd, dummy, error)
         end if
       end do
       Fmin = min(minval(vals), Fc, Fd)
@@ -254,10 +238,10 @@ contains
       w0 = 2*pi*analysis%f_min
       h = 2*pi*(analysis%f_max - analysis%f_min)/2000
       a = w0
-      call layer_force(1.0_wp, kk, a, Fa, dFa)
+      call layer_force(blade, 1.0_wp, kk, a, Fa, dFa, error)
       b = a
       do n = 1, 2000
-        call layer_force(1.0_wp, kk, w0 + n*h, Fv, dFv)
+        call layer_force(blade, 1.0_wp, kk, w0 + n*h, Fv, dFv, error)
         ! dF/domega changes sign from negative to positive at the minimum of F (peak of |g~|)
         if (dFa < 0 .and. dFv >= 0) then
           b = w0 + n*h
@@ -269,7 +253,7 @@ contains
       do it = 1, 200
         m = 0.5_wp*(a + b)
         if (m <= a .or. m >= b) exit
-        call layer_force(1.0_wp, kk, m, Fm, dFm)
+        call layer_force(blade, 1.0_wp, kk, m, Fm, dFm, error)
         if (dFm < 0) then
           a = m
         else
@@ -278,38 +262,6 @@ contains
       end do
       wpk = 0.5_wp*(a + b)
     end function peak_by_bisection
-
-    !> |q_g| of the dense solve (K + k(gamma) e_g e_g^T - w^2 M + i w C) q = F_E e_E, with two
-    !> steps of iterative refinement on residuals in quadruple precision (D is ill-conditioned:
-    !> its entries span omega_max^2/omega^2).
-    real(wp) function dense_gamma(gamma, F_E, w) result(amp)
-      real(wp), intent(in) :: gamma, F_E, w
-      integer, parameter :: qp = selected_real_kind(30)
-      complex(wp), allocatable :: D(:, :), LU(:, :), q(:, :), dq(:, :)
-      complex(qp), allocatable :: D_quad(:, :), res(:)
-      integer, allocatable :: ipiv(:)
-      integer :: n, info, it
-      n = blade%ndof
-      allocate(D_quad(n, n), res(n), q(n, 1), dq(n, 1), ipiv(n))
-      D_quad = cmplx(real(blade%K, qp) - real(w, qp)**2*real(blade%M, qp), &
-        & real(w, qp)*real(blade%beta, qp)*real(blade%K, qp), qp)
-      D_quad(blade%gamma_dof, blade%gamma_dof) = D_quad(blade%gamma_dof, blade%gamma_dof) + &
-        & cmplx(damper%stiffness(gamma), kind=qp)
-      D = cmplx(D_quad, kind=wp)
-      q = 0
-      q(blade%exc_dof, 1) = F_E
-      LU = D
-      call zgesv(n, 1, LU, n, ipiv, q, n, info)
-      do it = 1, 2
-        res = -matmul(D_quad, cmplx(q(:, 1), kind=qp))
-        res(blade%exc_dof) = res(blade%exc_dof) + F_E
-        dq(:, 1) = cmplx(res, kind=wp)
-        LU = D
-        call zgesv(n, 1, LU, n, ipiv, dq, n, info)
-        q = q + dq
-      end do
-      amp = abs(q(blade%gamma_dof, 1))
-    end function dense_gamma
 
     !> Peak frequency [Hz] of |q_g| for the blade with K + kt on gamma, by dense solves and
     !> golden section.
@@ -322,7 +274,7 @@ contains
       best_w = 0
       do n = 0, 400
         c = 2*pi*analysis%f_min + n*h
-        Fc = dense_gamma(1e-3_wp*damper%gamma_b, 1.0_wp, c)
+        Fc = dense_gamma(blade, damper, 1e-3_wp*damper%gamma_b, 1.0_wp, c)
         if (Fc > best) then
           best = Fc
           best_w = c
@@ -332,17 +284,17 @@ contains
       b = best_w + h
       c = b - (b - a)*0.618033988749895_wp
       d = a + (b - a)*0.618033988749895_wp
-      Fc = dense_gamma(1e-3_wp*damper%gamma_b, 1.0_wp, c)
-      Fd = dense_gamma(1e-3_wp*damper%gamma_b, 1.0_wp, d)
+      Fc = dense_gamma(blade, damper, 1e-3_wp*damper%gamma_b, 1.0_wp, c)
+      Fd = dense_gamma(blade, damper, 1e-3_wp*damper%gamma_b, 1.0_wp, d)
       do it = 1, 80
         if (Fc > Fd) then
           b = d; d = c; Fd = Fc
           c = b - (b - a)*0.618033988749895_wp
-          Fc = dense_gamma(1e-3_wp*damper%gamma_b, 1.0_wp, c)
+          Fc = dense_gamma(blade, damper, 1e-3_wp*damper%gamma_b, 1.0_wp, c)
         else
           a = c; c = d; Fc = Fd
           d = a + (b - a)*0.618033988749895_wp
-          Fd = dense_gamma(1e-3_wp*damper%gamma_b, 1.0_wp, d)
+          Fd = dense_gamma(blade, damper, 1e-3_wp*damper%gamma_b, 1.0_wp, d)
         end if
       end do
       f = 0.25_wp*(a + b + c + d)/(2*pi)

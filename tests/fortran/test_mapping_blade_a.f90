@@ -12,6 +12,7 @@ module test_mapping_blade_a
   use udmap_eigen_start, only: direct_eigen_start
   use udmap_model, only: model_type, analysis_type, point_type, new_model, set_damper, &
     & limit_force, backbone, backbone_curve, response, REGIME_STUCK, REGIME_PARTIAL_SLIP
+  use fixtures, only: blade_a_beam_params, layer_force
   use testing, only: test_suite, check_close, check_true, check_no_error, unittest_type, &
     & new_unittest
   implicit none
@@ -41,10 +42,7 @@ contains
     complex(wp) :: k, lambda
     integer :: i, j
 
-    params = beam_params_type(E=170e9_wp, rho=8200.0_wp, zeta=0.002_wp, neck_L=0.020_wp, &
-      & neck_h=0.008_wp, neck_b=0.020_wp, platform_L=0.010_wp, platform_m=0.021_wp, &
-      & platform_J=1.4e-6_wp, airfoil_L=0.120_wp, airfoil_h=0.004_wp, airfoil_b=0.030_wp, &
-      & neck_elements=8, airfoil_elements=24)
+    params = blade_a_beam_params()
     call new_beam_blade(blade, params, error)
     call check_no_error(suite, "blade", error)
     call new_asymmetric_damper(damper, blade_a_damper_params(), error)
@@ -65,7 +63,7 @@ contains
     do i = 1, size(points)
       w = 2*pi*points(i)%f_res
       k = damper%stiffness(points(i)%gamma_P)
-      call layer_force(points(i)%gamma_P, k, w, F, dF)
+      call layer_force(blade, points(i)%gamma_P, k, w, F, dF, error)
       call check_close(suite, "F(f_res) = F_E", F, points(i)%F_E, 1e-10_wp)
       call check_close(suite, "dF/domega = 0", dF*w/F, 0.0_wp, 0.0_wp, 1e-8_wp)
       do j = 0, 12
@@ -160,20 +158,6 @@ contains
 
   contains
 
-    !> F(omega) = gamma/|g~| and dF/d omega of the layer gamma (stiffness k).
-    subroutine layer_force(gamma, kk, wk, Fk, dFk)
-      real(wp), intent(in) :: gamma, wk
-      complex(wp), intent(in) :: kk
-      real(wp), intent(out) :: Fk, dFk
-      type(receptances_type) :: r
-      complex(wp) :: g, dg
-      call blade%receptances(wk, r, error, derivatives=.true.)
-      g = r%gE/(1 + kk*r%gg)
-      dg = r%dgE/(1 + kk*r%gg) - r%gE*kk*r%dgg/(1 + kk*r%gg)**2
-      Fk = gamma/abs(g)
-      dFk = -Fk*real(dg*conjg(g), wp)/abs(g)**2
-    end subroutine layer_force
-
     !> min over the band of F(omega) for the layer gamma: 4000 samples, then golden section.
     real(wp) function band_min_force(gamma) result(Fmin)
       real(wp), intent(in) :: gamma
@@ -185,24 +169,24 @@ contains
       w0 = 2*pi*analysis%f_min
       h = 2*pi*(analysis%f_max - analysis%f_min)/4000
       do n = 0, 4000
-        call layer_force(gamma, kk, w0 + n*h, vals(n), dummy)
+        call layer_force(blade, gamma, kk, w0 + n*h, vals(n), dummy, error)
       end do
       best = minloc(vals, 1) - 1
       a = w0 + max(best - 1, 0)*h
       b = w0 + min(best + 1, 4000)*h
       c = b - (b - a)*gr
       d = a + (b - a)*gr
-      call layer_force(gamma, kk, c, Fc, dummy)
-      call layer_force(gamma, kk, d, Fd, dummy)
+      call layer_force(blade, gamma, kk, c, Fc, dummy, error)
+      call layer_force(blade, gamma, kk, d, Fd, dummy, error)
       do it = 1, 100
         if (Fc < Fd) then
           b = d; d = c; Fd = Fc
           c = b - (b - a)*gr
-          call layer_force(gamma, kk, c, Fc, dummy)
+          call layer_force(blade, gamma, kk, c, Fc, dummy, error)
         else
           a = c; c = d; Fc = Fd
           d = a + (b - a)*gr
-          call layer_force(gamma, kk, d, Fd, dummy)
+          call layer_force(blade, gamma, kk, d, Fd, dummy, error)
         end if
       end do
       Fmin = min(minval(vals), Fc, Fd)

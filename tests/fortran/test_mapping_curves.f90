@@ -12,6 +12,7 @@ module test_mapping_curves
   use udmap_model, only: model_type, analysis_type, point_type, curve_type, new_model, &
     & backbone, response_curves, BRANCH_LOWER, BRANCH_UPPER, BRANCH_TURNING, EIGEN_DIRECT, &
     & EIGEN_MODAL
+  use fixtures, only: blade_a_beam_params, dense_gamma
   use testing, only: test_suite, check_close, check_true, check_no_error, check_error, &
     & unittest_type, new_unittest
   implicit none
@@ -51,10 +52,7 @@ contains
     real(wp) :: worst, x1, y1, x2, y2, longest, band, lnrange, gmin, gmax
     integer :: i, j, n, top
 
-    params = beam_params_type(E=170e9_wp, rho=8200.0_wp, zeta=0.002_wp, neck_L=0.020_wp, &
-      & neck_h=0.008_wp, neck_b=0.020_wp, platform_L=0.010_wp, platform_m=0.021_wp, &
-      & platform_J=1.4e-6_wp, airfoil_L=0.120_wp, airfoil_h=0.004_wp, airfoil_b=0.030_wp, &
-      & neck_elements=8, airfoil_elements=24)
+    params = blade_a_beam_params()
     call new_beam_blade(blade, params, error)
     call new_jenkins_damper(damper, 3000.0_wp, 1.35_wp, error)
     analysis%f_min = 150
@@ -113,9 +111,9 @@ contains
         ! every 7th point (and the edges) against a dense solve of the coupled blade
         worst = 0
         do j = 1, n, 7
-          worst = max(worst, abs(dense_gamma(c%gamma_P(j), c%F_E, 2*pi*c%f(j))/c%gamma_P(j) - 1))
+          worst = max(worst, abs(dense_gamma(blade, damper, c%gamma_P(j), c%F_E, 2*pi*c%f(j))/c%gamma_P(j) - 1))
         end do
-        worst = max(worst, abs(dense_gamma(c%gamma_P(n), c%F_E, 2*pi*c%f(n))/c%gamma_P(n) - 1))
+        worst = max(worst, abs(dense_gamma(blade, damper, c%gamma_P(n), c%F_E, 2*pi*c%f(n))/c%gamma_P(n) - 1))
         call check_close(suite, "points by dense solve", worst, 0.0_wp, 0.0_wp, 1e-9_wp)
       end associate
     end do
@@ -141,37 +139,5 @@ contains
     call response_curves(model, forces, 2, curves, error)
     call check_error(suite, "too few layers", error, UDMAP_EINPUT, "layers")
 
-  contains
-
-    !> |q_g| of the coupled blade (K + k(gamma) e_g e_g^T - w^2 M + i w beta K) q = F_E e_E by a
-    !> dense solve with two steps of refinement on quadruple-precision residuals.
-    real(wp) function dense_gamma(gamma, F_E, w) result(amp)
-      real(wp), intent(in) :: gamma, F_E, w
-      integer, parameter :: qp = selected_real_kind(30)
-      complex(wp), allocatable :: D(:, :), LU(:, :), q(:, :), dq(:, :)
-      complex(qp), allocatable :: D_quad(:, :), res(:)
-      integer, allocatable :: ipiv(:)
-      integer :: nd, info, it
-      nd = blade%ndof
-      allocate(D_quad(nd, nd), res(nd), q(nd, 1), dq(nd, 1), ipiv(nd))
-      D_quad = cmplx(real(blade%K, qp) - real(w, qp)**2*real(blade%M, qp), &
-        & real(w, qp)*real(blade%beta, qp)*real(blade%K, qp), qp)
-      D_quad(blade%gamma_dof, blade%gamma_dof) = D_quad(blade%gamma_dof, blade%gamma_dof) + &
-        & cmplx(damper%stiffness(gamma), kind=qp)
-      D = cmplx(D_quad, kind=wp)
-      q = 0
-      q(blade%exc_dof, 1) = F_E
-      LU = D
-      call zgesv(nd, 1, LU, nd, ipiv, q, nd, info)
-      do it = 1, 2
-        res = -matmul(D_quad, cmplx(q(:, 1), kind=qp))
-        res(blade%exc_dof) = res(blade%exc_dof) + F_E
-        dq(:, 1) = cmplx(res, kind=wp)
-        LU = D
-        call zgesv(nd, 1, LU, nd, ipiv, dq, nd, info)
-        q = q + dq
-      end do
-      amp = abs(q(blade%gamma_dof, 1))
-    end function dense_gamma
   end subroutine run_mapping_curves
 end module test_mapping_curves

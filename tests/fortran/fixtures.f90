@@ -1,0 +1,134 @@
+!> Shared fixtures of the Fortran test suites: blade A's beam parameters (blade_a.json; its
+!> damper is udmap_damper_params' blade_a_damper_params), the spring chain, the independent
+!> quadruple-precision references and small helpers that several suites need.
+module fixtures
+  use udmap_kinds, only: wp
+  use udmap_error, only: error_type
+  use udmap_beam, only: beam_params_type
+  use udmap_blade, only: blade_type, receptances_type
+  use udmap_damper, only: damper_type
+  use udmap_damper_tracer, only: CONTACT_SLIP_POS, CONTACT_SLIP_NEG
+  implicit none
+  private
+  public :: blade_a_beam_params, spring_chain, dense_gamma, layer_force, sign_of
+  public :: ieee_nan, ieee_inf, temp_dir
+
+contains
+
+  !> Blade A (blade_a.json): 8 neck and 24 airfoil elements, 64 DOFs, f1 = 187.119 Hz bare.
+  function blade_a_beam_params() result(p)
+    type(beam_params_type) :: p
+    p = beam_params_type(E=170e9_wp, rho=8200.0_wp, zeta=0.002_wp, &
+      & neck_L=0.020_wp, neck_h=0.008_wp, neck_b=0.020_wp, &
+      & platform_L=0.010_wp, platform_m=0.021_wp, platform_J=1.4e-6_wp, &
+      & airfoil_L=0.120_wp, airfoil_h=0.004_wp, airfoil_b=0.030_wp, &
+      & neck_elements=8, airfoil_elements=24)
+  end function blade_a_beam_params
+
+  !> The chain of unit springs (100) and masses (1 + 0.1 i): spring i joins node i-1 (the
+  !> ground for i = 1) and node i.
+  subroutine spring_chain(M, K)
+    real(wp), intent(out) :: M(:, :), K(:, :)
+    integer :: i, n
+    n = size(M, 1)
+    M = 0.0_wp
+    K = 0.0_wp
+    do i = 1, n
+      M(i,i) = 1.0_wp + 0.1_wp*i
+      K(i,i) = K(i,i) + 100.0_wp
+    end do
+    do i = 2, n
+      K(i-1,i-1) = K(i-1,i-1) + 100.0_wp
+      K(i-1,i) = K(i-1,i) - 100.0_wp
+      K(i,i-1) = K(i,i-1) - 100.0_wp
+    end do
+  end subroutine spring_chain
+
+  !> |gamma| of the layer solved directly on the dense blade matrices with the damper
+  !> stiffness k(gamma) at DOF gamma: double-precision LU refined twice with quadruple-precision
+  !> residuals (the independent reference of the layer and curve tests).
+  real(wp) function dense_gamma(blade, damper, gamma, F_E, w) result(amp)
+    type(blade_type), intent(in) :: blade
+    type(damper_type), intent(in) :: damper
+    real(wp), intent(in) :: gamma, F_E, w
+    integer, parameter :: qp = selected_real_kind(30)
+    complex(wp), allocatable :: D(:, :), LU(:, :), q(:, :), dq(:, :)
+    complex(qp), allocatable :: D_quad(:, :), res(:)
+    integer, allocatable :: ipiv(:)
+    integer :: n, info, it
+    n = blade%ndof
+    allocate(D_quad(n, n), res(n), q(n, 1), dq(n, 1), ipiv(n))
+    D_quad = cmplx(real(blade%K, qp) - real(w, qp)**2*real(blade%M, qp), &
+      & real(w, qp)*real(blade%beta, qp)*real(blade%K, qp), qp)
+    D_quad(blade%gamma_dof, blade%gamma_dof) = D_quad(blade%gamma_dof, blade%gamma_dof) + &
+      & cmplx(damper%stiffness(gamma), kind=qp)
+    D = cmplx(D_quad, kind=wp)
+    q = 0
+    q(blade%exc_dof, 1) = F_E
+    LU = D
+    call zgesv(n, 1, LU, n, ipiv, q, n, info)
+    do it = 1, 2
+      res = -matmul(D_quad, cmplx(q(:, 1), kind=qp))
+      res(blade%exc_dof) = res(blade%exc_dof) + F_E
+      dq(:, 1) = cmplx(res, kind=wp)
+      LU = D
+      call zgesv(n, 1, LU, n, ipiv, dq, n, info)
+      q = q + dq
+    end do
+    amp = abs(q(blade%gamma_dof, 1))
+  end function dense_gamma
+
+  !> F(omega) = gamma/|g~| and dF/d omega of the layer gamma (stiffness k).
+  subroutine layer_force(blade, gamma, k, w, F, dF, error)
+    type(blade_type), intent(in) :: blade
+    real(wp), intent(in) :: gamma, w
+    complex(wp), intent(in) :: k
+    real(wp), intent(out) :: F, dF
+    type(error_type), allocatable, intent(inout) :: error
+    type(receptances_type) :: r
+    complex(wp) :: g, dg
+    call blade%receptances(w, r, error, derivatives=.true.)
+    g = r%gE/(1 + k*r%gg)
+    dg = r%dgE/(1 + k*r%gg) - r%gE*k*r%dgg/(1 + k*r%gg)**2
+    F = gamma/abs(g)
+    dF = -F*real(dg*conjg(g), wp)/abs(g)**2
+  end subroutine layer_force
+
+  !> The slip direction of each of the three contacts of a topology mode (0 when not slipping).
+  pure function sign_of(mode) result(s)
+    integer, intent(in) :: mode(3)
+    integer :: s(3)
+    s = 0
+    where (mode == CONTACT_SLIP_POS) s = 1
+    where (mode == CONTACT_SLIP_NEG) s = -1
+  end function sign_of
+
+  function ieee_nan() result(x)
+    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
+    real(wp) :: x
+    x = ieee_value(x, ieee_quiet_nan)
+  end function ieee_nan
+
+  function ieee_inf() result(x)
+    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_positive_inf
+    real(wp) :: x
+    x = ieee_value(x, ieee_positive_inf)
+  end function ieee_inf
+
+  !> A fresh directory $TMPDIR/udmap_test_<name>_<random> (/tmp without TMPDIR).
+  function temp_dir(name) result(dir)
+    character(len=*), intent(in) :: name
+    character(len=:), allocatable :: dir
+    character(len=256) :: base
+    character(len=12) :: suffix
+    real(wp) :: u
+    integer :: stat
+    call get_environment_variable("TMPDIR", base, status=stat)
+    if (stat /= 0 .or. len_trim(base) == 0) base = "/tmp"
+    call random_init(.false., .true.)
+    call random_number(u)
+    write(suffix, '(i12.12)') int(u*1.0e12_wp, kind=8)
+    dir = trim(base)//"/udmap_test_"//name//"_"//suffix
+    call execute_command_line("mkdir -p "//dir)
+  end function temp_dir
+end module fixtures
