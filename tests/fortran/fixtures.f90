@@ -2,16 +2,27 @@
 !> damper is udmap_damper_params' blade_a_damper_params), the spring chain, the independent
 !> quadruple-precision references and small helpers that several suites need.
 module fixtures
-  use udmap_kinds, only: wp
+  use udmap_kinds, only: wp, pi
   use udmap_error, only: error_type
   use udmap_beam, only: beam_params_type
   use udmap_blade, only: blade_type, receptances_type
   use udmap_damper, only: damper_type
   use udmap_damper_tracer, only: CONTACT_SLIP_POS, CONTACT_SLIP_NEG
+  use udmap_model, only: analysis_type
   implicit none
   private
-  public :: blade_a_beam_params, spring_chain, dense_gamma, layer_force, sign_of
+  public :: blade_a_beam_params, spring_chain, dense_gamma, layer_force, band_min_force, sign_of
   public :: ieee_nan, ieee_inf, temp_dir
+
+  !> LAPACK (not in udmap_lapack, which holds what the kernel calls).
+  interface
+    subroutine zgesv(n, nrhs, a, lda, ipiv, b, ldb, info)
+      import :: wp
+      integer, intent(in) :: n, nrhs, lda, ldb
+      complex(wp), intent(inout) :: a(lda, *), b(ldb, *)
+      integer, intent(out) :: ipiv(*), info
+    end subroutine zgesv
+  end interface
 
 contains
 
@@ -93,6 +104,45 @@ contains
     F = gamma/abs(g)
     dF = -F*real(dg*conjg(g), wp)/abs(g)**2
   end subroutine layer_force
+
+  !> min over the band [f_min, f_max] of F(omega) for the layer gamma: 4000 samples, then
+  !> golden section around the smallest.
+  real(wp) function band_min_force(blade, damper, analysis, gamma, error) result(Fmin)
+    type(blade_type), intent(in) :: blade
+    type(damper_type), intent(in) :: damper
+    type(analysis_type), intent(in) :: analysis
+    real(wp), intent(in) :: gamma
+    type(error_type), allocatable, intent(inout) :: error
+    real(wp), parameter :: gr = 0.618033988749895_wp
+    complex(wp) :: kk
+    real(wp) :: a, b, c, d, Fc, Fd, dummy, w0, h, vals(0:4000)
+    integer :: n, best, it
+    kk = damper%stiffness(gamma)
+    w0 = 2*pi*analysis%f_min
+    h = 2*pi*(analysis%f_max - analysis%f_min)/4000
+    do n = 0, 4000
+      call layer_force(blade, gamma, kk, w0 + n*h, vals(n), dummy, error)
+    end do
+    best = minloc(vals, 1) - 1
+    a = w0 + max(best - 1, 0)*h
+    b = w0 + min(best + 1, 4000)*h
+    c = b - (b - a)*gr
+    d = a + (b - a)*gr
+    call layer_force(blade, gamma, kk, c, Fc, dummy, error)
+    call layer_force(blade, gamma, kk, d, Fd, dummy, error)
+    do it = 1, 100
+      if (Fc < Fd) then
+        b = d; d = c; Fd = Fc
+        c = b - (b - a)*gr
+        call layer_force(blade, gamma, kk, c, Fc, dummy, error)
+      else
+        a = c; c = d; Fc = Fd
+        d = a + (b - a)*gr
+        call layer_force(blade, gamma, kk, d, Fd, dummy, error)
+      end if
+    end do
+    Fmin = min(minval(vals), Fc, Fd)
+  end function band_min_force
 
   !> The slip direction of each of the three contacts of a topology mode (0 when not slipping).
   pure function sign_of(mode) result(s)

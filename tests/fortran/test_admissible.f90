@@ -16,12 +16,13 @@ module test_admissible
 
 contains
 
-  !> The unit tests of suite admissible.
+  !> Collects the unit tests of suite admissible.
   subroutine collect_admissible(testsuite)
     type(unittest_type), allocatable, intent(out) :: testsuite(:)
     testsuite = [new_unittest("admissible", run_admissible)]
   end subroutine collect_admissible
 
+  !> F_adm searched on stresses with known answers: closed forms, offsets, several crossings.
   subroutine run_admissible(suite)
     type(test_suite), intent(inout) :: suite
     integer, parameter :: QUADRATIC = 1, PROPORTIONAL = 2, OFFSET = 3, SINE = 4, UNBOUNDED = 5, &

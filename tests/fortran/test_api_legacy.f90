@@ -17,12 +17,13 @@ module test_api_legacy
 
 contains
 
-  !> The unit tests of suite api_legacy.
+  !> Collects the unit tests of suite api_legacy.
   subroutine collect_api_legacy(testsuite)
     type(unittest_type), allocatable, intent(out) :: testsuite(:)
     testsuite = [new_unittest("api_legacy", run_api_legacy)]
   end subroutine collect_api_legacy
 
+  !> The plain arrays agree with the derived-type API; every INFO code is reachable.
   subroutine run_api_legacy(suite)
     type(test_suite), intent(inout) :: suite
     real(wp), parameter :: beam_a(14) = [170e9_wp, 8200.0_wp, 0.002_wp, 0.020_wp, 0.008_wp, &

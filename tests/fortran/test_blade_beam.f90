@@ -15,12 +15,13 @@ module test_blade_beam
 
 contains
 
-  !> The unit tests of suite blade_beam.
+  !> Collects the unit tests of suite blade_beam.
   subroutine collect_blade_beam(testsuite)
     type(unittest_type), allocatable, intent(out) :: testsuite(:)
     testsuite = [new_unittest("blade_beam", run_blade_beam)]
   end subroutine collect_blade_beam
 
+  !> Blade A's layout and first frequency, the cantilever closed form, mesh convergence, bad input.
   subroutine run_blade_beam(suite)
     type(test_suite), intent(inout) :: suite
     type(beam_params_type) :: a

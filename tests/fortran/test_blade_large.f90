@@ -18,12 +18,13 @@ module test_blade_large
 
 contains
 
-  !> The unit tests of suite blade_large.
+  !> Collects the unit tests of suite blade_large.
   subroutine collect_blade_large(testsuite)
     type(unittest_type), allocatable, intent(out) :: testsuite(:)
     testsuite = [new_unittest("blade_large", run_blade_large)]
   end subroutine collect_blade_large
 
+  !> The 4112-DOF banded blade: subspace modes and series against the small blade's values.
   subroutine run_blade_large(suite)
     type(test_suite), intent(inout) :: suite
     integer, parameter :: qp = selected_real_kind(30)

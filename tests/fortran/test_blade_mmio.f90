@@ -15,12 +15,13 @@ module test_blade_mmio
 
 contains
 
-  !> The unit tests of suite blade_mmio.
+  !> Collects the unit tests of suite blade_mmio.
   subroutine collect_blade_mmio(testsuite)
     type(unittest_type), allocatable, intent(out) :: testsuite(:)
     testsuite = [new_unittest("blade_mmio", run_blade_mmio)]
   end subroutine collect_blade_mmio
 
+  !> Matrix Market files: exact round trip, accepted formats, one clear error per malformed file.
   subroutine run_blade_mmio(suite)
     type(test_suite), intent(inout) :: suite
     character(len=:), allocatable :: dir

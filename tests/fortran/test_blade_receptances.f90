@@ -21,12 +21,13 @@ module test_blade_receptances
 
 contains
 
-  !> The unit tests of suite blade_receptances.
+  !> Collects the unit tests of suite blade_receptances.
   subroutine collect_blade_receptances(testsuite)
     type(unittest_type), allocatable, intent(out) :: testsuite(:)
     testsuite = [new_unittest("blade_receptances", run_blade_receptances)]
   end subroutine collect_blade_receptances
 
+  !> Every receptance path against the quadruple-precision dense solve, and the import checks.
   subroutine run_blade_receptances(suite)
     type(test_suite), intent(inout) :: suite
     integer, parameter :: qp = selected_real_kind(30)

@@ -17,12 +17,13 @@ module test_damper_blade_a
 
 contains
 
-  !> The unit tests of suite damper_blade_a.
+  !> Collects the unit tests of suite damper_blade_a.
   subroutine collect_damper_blade_a(testsuite)
     type(unittest_type), allocatable, intent(out) :: testsuite(:)
     testsuite = [new_unittest("damper_blade_a", run_damper_blade_a)]
   end subroutine collect_damper_blade_a
 
+  !> Blade A's damper: reference numbers, statics, scaling and elongation laws, table vs loops.
   subroutine run_damper_blade_a(suite)
     type(test_suite), intent(inout) :: suite
     type(damper_type) :: d, d3, d2, ds

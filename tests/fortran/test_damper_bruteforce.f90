@@ -20,12 +20,13 @@ module test_damper_bruteforce
 
 contains
 
-  !> The unit tests of suite damper_bruteforce.
+  !> Collects the unit tests of suite damper_bruteforce.
   subroutine collect_damper_bruteforce(testsuite)
     type(unittest_type), allocatable, intent(out) :: testsuite(:)
     testsuite = [new_unittest("damper_bruteforce", run_damper_bruteforce)]
   end subroutine collect_damper_bruteforce
 
+  !> The event-driven tracer against small Newton load steps with return mapping.
   subroutine run_damper_bruteforce(suite)
     type(test_suite), intent(inout) :: suite
 

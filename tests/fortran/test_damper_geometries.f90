@@ -16,12 +16,13 @@ module test_damper_geometries
 
 contains
 
-  !> The unit tests of suite damper_geometries.
+  !> Collects the unit tests of suite damper_geometries.
   subroutine collect_damper_geometries(testsuite)
     type(unittest_type), allocatable, intent(out) :: testsuite(:)
     testsuite = [new_unittest("damper_geometries", run_damper_geometries)]
   end subroutine collect_damper_geometries
 
+  !> Friction and face angles around blade A: table vs direct loops, plateaus vs statics.
   subroutine run_damper_geometries(suite)
     type(test_suite), intent(inout) :: suite
     real(wp), parameter :: mus(6) = [0.1_wp, 0.2_wp, 0.3_wp, 0.5_wp, 0.5_wp, 1.0_wp]

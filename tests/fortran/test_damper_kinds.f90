@@ -12,12 +12,13 @@ module test_damper_kinds
 
 contains
 
-  !> The unit tests of suite damper_kinds.
+  !> Collects the unit tests of suite damper_kinds.
   subroutine collect_damper_kinds(testsuite)
     type(unittest_type), allocatable, intent(out) :: testsuite(:)
     testsuite = [new_unittest("damper_kinds", run_damper_kinds)]
   end subroutine collect_damper_kinds
 
+  !> The jenkins and table kinds: closed forms, interpolation, extrapolation and their errors.
   subroutine run_damper_kinds(suite)
     type(test_suite), intent(inout) :: suite
     type(damper_type) :: d, t

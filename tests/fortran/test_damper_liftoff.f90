@@ -14,12 +14,13 @@ module test_damper_liftoff
 
 contains
 
-  !> The unit tests of suite damper_liftoff.
+  !> Collects the unit tests of suite damper_liftoff.
   subroutine collect_damper_liftoff(testsuite)
     type(unittest_type), allocatable, intent(out) :: testsuite(:)
     testsuite = [new_unittest("damper_liftoff", run_damper_liftoff)]
   end subroutine collect_damper_liftoff
 
+  !> A pad too short to hold the damper: lift-off flagged, k traced exactly, errors raised.
   subroutine run_damper_liftoff(suite)
     type(test_suite), intent(inout) :: suite
     type(damper_type) :: d

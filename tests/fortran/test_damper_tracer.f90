@@ -16,12 +16,13 @@ module test_damper_tracer
 
 contains
 
-  !> The unit tests of suite damper_tracer.
+  !> Collects the unit tests of suite damper_tracer.
   subroutine collect_damper_tracer(testsuite)
     type(unittest_type), allocatable, intent(out) :: testsuite(:)
     testsuite = [new_unittest("damper_tracer", run_damper_tracer)]
   end subroutine collect_damper_tracer
 
+  !> Sample-by-sample replay with advance is exact however coarse the samples are.
   subroutine run_damper_tracer(suite)
     type(test_suite), intent(inout) :: suite
     type(damper_type) :: d

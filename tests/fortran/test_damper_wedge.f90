@@ -26,12 +26,13 @@ module test_damper_wedge
 
 contains
 
-  !> The unit tests of suite damper_wedge.
+  !> Collects the unit tests of suite damper_wedge.
   subroutine collect_damper_wedge(testsuite)
     type(unittest_type), allocatable, intent(out) :: testsuite(:)
     testsuite = [new_unittest("damper_wedge", run_damper_wedge)]
   end subroutine collect_damper_wedge
 
+  !> Faces that shake down slowly, neutral and self-locking wedges, and their messages.
   subroutine run_damper_wedge(suite)
     type(test_suite), intent(inout) :: suite
     real(wp), parameter :: betas(3) = [5.0_wp, 10.0_wp, 89.0_wp]

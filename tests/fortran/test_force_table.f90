@@ -16,12 +16,13 @@ module test_force_table
 
 contains
 
-  !> The unit tests of suite force_table.
+  !> Collects the unit tests of suite force_table.
   subroutine collect_force_table(testsuite)
     type(unittest_type), allocatable, intent(out) :: testsuite(:)
     testsuite = [new_unittest("force_table", run_force_table)]
   end subroutine collect_force_table
 
+  !> The force table interpolates smooth outputs, confines jumps and never mixes keys.
   subroutine run_force_table(suite)
     type(test_suite), intent(inout) :: suite
     real(wp), parameter :: tol = 1.0e-8_wp

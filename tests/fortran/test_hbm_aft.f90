@@ -19,12 +19,13 @@ module test_hbm_aft
 
 contains
 
-  !> The unit tests of suite hbm_aft.
+  !> Collects the unit tests of suite hbm_aft.
   subroutine collect_hbm_aft(testsuite)
     type(unittest_type), allocatable, intent(out) :: testsuite(:)
     testsuite = [new_unittest("hbm_aft", run_hbm_aft)]
   end subroutine collect_hbm_aft
 
+  !> Exact and sampled AFT against the Jenkins describing function and their error order.
   subroutine run_hbm_aft(suite)
     type(test_suite), intent(inout) :: suite
     type(jenkins_element_type) :: jen

@@ -24,12 +24,13 @@ module test_hbm_blade_a
 
 contains
 
-  !> The unit tests of suite hbm_blade_a.
+  !> Collects the unit tests of suite hbm_blade_a.
   subroutine collect_hbm_blade_a(testsuite)
     type(unittest_type), allocatable, intent(out) :: testsuite(:)
     testsuite = [new_unittest("hbm_blade_a", run_hbm_blade_a)]
   end subroutine collect_hbm_blade_a
 
+  !> Standard method vs backbone at H = 1, time integration vs H = 21, partial-slip history.
   subroutine run_hbm_blade_a(suite)
     type(test_suite), intent(inout) :: suite
     type(beam_params_type) :: bp

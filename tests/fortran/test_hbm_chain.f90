@@ -17,12 +17,13 @@ module test_hbm_chain
 
 contains
 
-  !> The unit tests of suite hbm_chain.
+  !> Collects the unit tests of suite hbm_chain.
   subroutine collect_hbm_chain(testsuite)
     type(unittest_type), allocatable, intent(out) :: testsuite(:)
     testsuite = [new_unittest("hbm_chain", run_hbm_chain)]
   end subroutine collect_hbm_chain
 
+  !> Condensed and full variants agree on the 12-DOF chain, against reference peaks.
   subroutine run_hbm_chain(suite)
     type(test_suite), intent(inout) :: suite
     integer, parameter :: n = 12, gdof = 4, edof = 12

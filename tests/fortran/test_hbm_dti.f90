@@ -18,12 +18,13 @@ module test_hbm_dti
 
 contains
 
-  !> The unit tests of suite hbm_dti.
+  !> Collects the unit tests of suite hbm_dti.
   subroutine collect_hbm_dti(testsuite)
     type(unittest_type), allocatable, intent(out) :: testsuite(:)
     testsuite = [new_unittest("hbm_dti", run_hbm_dti)]
   end subroutine collect_hbm_dti
 
+  !> Newmark against the linear closed form and against the standard method converged in H.
   subroutine run_hbm_dti(suite)
     type(test_suite), intent(inout) :: suite
     integer, parameter :: n = 12, gdof = 4, edof = 12

@@ -18,12 +18,13 @@ module test_hbm_oscillator
 
 contains
 
-  !> The unit tests of suite hbm_oscillator.
+  !> Collects the unit tests of suite hbm_oscillator.
   subroutine collect_hbm_oscillator(testsuite)
     type(unittest_type), allocatable, intent(out) :: testsuite(:)
     testsuite = [new_unittest("hbm_oscillator", run_hbm_oscillator)]
   end subroutine collect_hbm_oscillator
 
+  !> The one-DOF Jenkins oscillator's peaks, published and closed-form, in both variants.
   subroutine run_hbm_oscillator(suite)
     type(test_suite), intent(inout) :: suite
     type(structure_type) :: st

@@ -21,12 +21,13 @@ module test_hbm_stress
 
 contains
 
-  !> The unit tests of suite hbm_stress.
+  !> Collects the unit tests of suite hbm_stress.
   subroutine collect_hbm_stress(testsuite)
     type(unittest_type), allocatable, intent(out) :: testsuite(:)
     testsuite = [new_unittest("hbm_stress", run_hbm_stress)]
   end subroutine collect_hbm_stress
 
+  !> Extreme but legal inputs give finite numbers or a clear error, never NaN or a hang.
   subroutine run_hbm_stress(suite)
     type(test_suite), intent(inout) :: suite
     type(structure_type) :: st

@@ -22,12 +22,13 @@ module test_hbm_stress_contact
 
 contains
 
-  !> The unit tests of suite hbm_stress_contact.
+  !> Collects the unit tests of suite hbm_stress_contact.
   subroutine collect_hbm_stress_contact(testsuite)
     type(unittest_type), allocatable, intent(out) :: testsuite(:)
     testsuite = [new_unittest("hbm_stress_contact", run_hbm_stress_contact)]
   end subroutine collect_hbm_stress_contact
 
+  !> Extreme asymmetric damper parameters on blade A: finite results or a clear error.
   subroutine run_hbm_stress_contact(suite)
     type(test_suite), intent(inout) :: suite
     type(beam_params_type) :: bp

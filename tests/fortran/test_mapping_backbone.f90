@@ -10,30 +10,22 @@ module test_mapping_backbone
   use udmap_eigen_start, only: direct_eigen_start, secular_root
   use udmap_model, only: model_type, analysis_type, point_type, new_model, limit_force, &
     & backbone, backbone_curve, response, REGIME_LIMIT, REGIME_STUCK, REGIME_FULL_SLIP
-  use fixtures, only: blade_a_beam_params, dense_gamma, layer_force
+  use fixtures, only: blade_a_beam_params, dense_gamma, layer_force, band_min_force
   use testing, only: test_suite, check_close, check_true, check_no_error, check_error, &
     & unittest_type, new_unittest
   implicit none
   private
   public :: collect_mapping_backbone
 
-  interface
-    subroutine zgesv(n, nrhs, a, lda, ipiv, b, ldb, info)
-      import :: wp
-      integer, intent(in) :: n, nrhs, lda, ldb
-      complex(wp), intent(inout) :: a(lda, *), b(ldb, *)
-      integer, intent(out) :: ipiv(*), info
-    end subroutine zgesv
-  end interface
-
 contains
 
-  !> The unit tests of suite mapping_backbone.
+  !> Collects the unit tests of suite mapping_backbone.
   subroutine collect_mapping_backbone(testsuite)
     type(unittest_type), allocatable, intent(out) :: testsuite(:)
     testsuite = [new_unittest("mapping_backbone", run_mapping_backbone)]
   end subroutine collect_mapping_backbone
 
+  !> Backbone points against dense solves, sampled layers, bisection and eigenvalue limits.
   subroutine run_mapping_backbone(suite)
     type(test_suite), intent(inout) :: suite
 
@@ -75,7 +67,8 @@ contains
       call check_close(suite, "dF/domega = 0", dF*w/F, 0.0_wp, 0.0_wp, 1e-8_wp)
       ! no layer above gamma_P reaches F_E anywhere in the band
       do j = 0, 12
-        fmin_layer = band_min_force(points(i)%gamma_P*(1 + 1e-8_wp)*10.0_wp**(0.25_wp*j))
+        fmin_layer = band_min_force(blade, damper, analysis, &
+          & points(i)%gamma_P*(1 + 1e-8_wp)*10.0_wp**(0.25_wp*j), error)
         call check_true(suite, "layers above stay above F_E", fmin_layer > points(i)%F_E)
       end do
       ! Sherman-Morrison against a dense solve of the coupled blade at the peak
@@ -193,41 +186,6 @@ contains
     end do
 
   contains
-
-    !> min over the band of F(omega) for the layer gamma: 4000 samples, then golden section
-    !> around the smallest.
-    real(wp) function band_min_force(gamma) result(Fmin)
-      real(wp), intent(in) :: gamma
-      complex(wp) :: kk
-      real(wp) :: a, b, c, d, Fc, Fd, dummy, w0, h
-      integer :: n, best, it
-      real(wp) :: vals(0:4000)
-      kk = damper%stiffness(gamma)
-      w0 = 2*pi*analysis%f_min
-      h = 2*pi*(analysis%f_max - analysis%f_min)/4000
-      do n = 0, 4000
-        call layer_force(blade, gamma, kk, w0 + n*h, vals(n), dummy, error)
-      end do
-      best = minloc(vals, 1) - 1
-      a = w0 + max(best - 1, 0)*h
-      b = w0 + min(best + 1, 4000)*h
-      c = b - (b - a)*0.618033988749895_wp
-      d = a + (b - a)*0.618033988749895_wp
-      call layer_force(blade, gamma, kk, c, Fc, dummy, error)
-      call layer_force(blade, gamma, kk, d, Fd, dummy, error)
-      do it = 1, 100
-        if (Fc < Fd) then
-          b = d; d = c; Fd = Fc
-          c = b - (b - a)*0.618033988749895_wp
-          call layer_force(blade, gamma, kk, c, Fc, dummy, error)
-        else
-          a = c; c = d; Fc = Fd
-          d = a + (b - a)*0.618033988749895_wp
-          call layer_force(blade, gamma, kk, d, Fd, dummy, error)
-        end if
-      end do
-      Fmin = min(minval(vals), Fc, Fd)
-    end function band_min_force
 
     !> Frequency [rad/s] of the maximum of |g~| for stiffness k: bisection on the sign of
     !> d|g~|/d omega over a bracket found by sampling.

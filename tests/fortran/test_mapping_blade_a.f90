@@ -12,7 +12,7 @@ module test_mapping_blade_a
   use udmap_eigen_start, only: direct_eigen_start
   use udmap_model, only: model_type, analysis_type, point_type, new_model, set_damper, &
     & limit_force, backbone, backbone_curve, response, REGIME_STUCK, REGIME_PARTIAL_SLIP
-  use fixtures, only: blade_a_beam_params, layer_force
+  use fixtures, only: blade_a_beam_params, layer_force, band_min_force
   use testing, only: test_suite, check_close, check_true, check_no_error, unittest_type, &
     & new_unittest
   implicit none
@@ -21,12 +21,13 @@ module test_mapping_blade_a
 
 contains
 
-  !> The unit tests of suite mapping_blade_a.
+  !> Collects the unit tests of suite mapping_blade_a.
   subroutine collect_mapping_blade_a(testsuite)
     type(unittest_type), allocatable, intent(out) :: testsuite(:)
     testsuite = [new_unittest("mapping_blade_a", run_mapping_blade_a)]
   end subroutine collect_mapping_blade_a
 
+  !> The acceptance numbers of the reference case on its backbone and mapped curves.
   subroutine run_mapping_blade_a(suite)
     type(test_suite), intent(inout) :: suite
     type(blade_type), target :: blade, blade0
@@ -68,7 +69,8 @@ contains
       call check_close(suite, "dF/domega = 0", dF*w/F, 0.0_wp, 0.0_wp, 1e-8_wp)
       do j = 0, 12
         call check_true(suite, "no layer above reaches F_E", &
-          & band_min_force(points(i)%gamma_P*(1 + 1e-8_wp)*10.0_wp**(0.25_wp*j)) > points(i)%F_E)
+          & band_min_force(blade, damper, analysis, &
+          & points(i)%gamma_P*(1 + 1e-8_wp)*10.0_wp**(0.25_wp*j), error) > points(i)%F_E)
       end do
     end do
 
@@ -156,40 +158,5 @@ contains
     call check_true(suite, "three roots at the peak frequency", size(again(1)%roots) == 3)
     call check_close(suite, "the peak is the largest", again(1)%gamma_P, points(1)%gamma_P, 1e-9_wp)
 
-  contains
-
-    !> min over the band of F(omega) for the layer gamma: 4000 samples, then golden section.
-    real(wp) function band_min_force(gamma) result(Fmin)
-      real(wp), intent(in) :: gamma
-      real(wp), parameter :: gr = 0.618033988749895_wp
-      complex(wp) :: kk
-      real(wp) :: a, b, c, d, Fc, Fd, dummy, w0, h, vals(0:4000)
-      integer :: n, best, it
-      kk = damper%stiffness(gamma)
-      w0 = 2*pi*analysis%f_min
-      h = 2*pi*(analysis%f_max - analysis%f_min)/4000
-      do n = 0, 4000
-        call layer_force(blade, gamma, kk, w0 + n*h, vals(n), dummy, error)
-      end do
-      best = minloc(vals, 1) - 1
-      a = w0 + max(best - 1, 0)*h
-      b = w0 + min(best + 1, 4000)*h
-      c = b - (b - a)*gr
-      d = a + (b - a)*gr
-      call layer_force(blade, gamma, kk, c, Fc, dummy, error)
-      call layer_force(blade, gamma, kk, d, Fd, dummy, error)
-      do it = 1, 100
-        if (Fc < Fd) then
-          b = d; d = c; Fd = Fc
-          c = b - (b - a)*gr
-          call layer_force(blade, gamma, kk, c, Fc, dummy, error)
-        else
-          a = c; c = d; Fc = Fd
-          d = a + (b - a)*gr
-          call layer_force(blade, gamma, kk, d, Fd, dummy, error)
-        end if
-      end do
-      Fmin = min(minval(vals), Fc, Fd)
-    end function band_min_force
   end subroutine run_mapping_blade_a
 end module test_mapping_blade_a

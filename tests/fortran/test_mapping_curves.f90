@@ -19,23 +19,15 @@ module test_mapping_curves
   private
   public :: collect_mapping_curves
 
-  interface
-    subroutine zgesv(n, nrhs, a, lda, ipiv, b, ldb, info)
-      import :: wp
-      integer, intent(in) :: n, nrhs, lda, ldb
-      complex(wp), intent(inout) :: a(lda, *), b(ldb, *)
-      integer, intent(out) :: ipiv(*), info
-    end subroutine zgesv
-  end interface
-
 contains
 
-  !> The unit tests of suite mapping_curves.
+  !> Collects the unit tests of suite mapping_curves.
   subroutine collect_mapping_curves(testsuite)
     type(unittest_type), allocatable, intent(out) :: testsuite(:)
     testsuite = [new_unittest("mapping_curves", run_mapping_curves)]
   end subroutine collect_mapping_curves
 
+  !> Curve points against dense solves, the path structure and the eigenvalue starts.
   subroutine run_mapping_curves(suite)
     type(test_suite), intent(inout) :: suite
 

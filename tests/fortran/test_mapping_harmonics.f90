@@ -29,12 +29,13 @@ module test_mapping_harmonics
 
 contains
 
-  !> The unit tests of suite mapping_harmonics.
+  !> Collects the unit tests of suite mapping_harmonics.
   subroutine collect_mapping_harmonics(testsuite)
     type(unittest_type), allocatable, intent(out) :: testsuite(:)
     testsuite = [new_unittest("mapping_harmonics", run_mapping_harmonics)]
   end subroutine collect_mapping_harmonics
 
+  !> Multi-harmonic layers against the standard method with the same harmonics.
   subroutine run_mapping_harmonics(suite)
     type(test_suite), intent(inout) :: suite
     type(beam_params_type) :: bp

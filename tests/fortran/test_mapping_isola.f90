@@ -19,12 +19,13 @@ module test_mapping_isola
 
 contains
 
-  !> The unit tests of suite mapping_isola.
+  !> Collects the unit tests of suite mapping_isola.
   subroutine collect_mapping_isola(testsuite)
     type(unittest_type), allocatable, intent(out) :: testsuite(:)
     testsuite = [new_unittest("mapping_isola", run_mapping_isola)]
   end subroutine collect_mapping_isola
 
+  !> Three backbone roots and a detached response curve of the one-DOF oscillator.
   subroutine run_mapping_isola(suite)
     type(test_suite), intent(inout) :: suite
     type(blade_type), target :: blade

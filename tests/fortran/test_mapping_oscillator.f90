@@ -20,12 +20,13 @@ module test_mapping_oscillator
 
 contains
 
-  !> The unit tests of suite mapping_oscillator.
+  !> Collects the unit tests of suite mapping_oscillator.
   subroutine collect_mapping_oscillator(testsuite)
     type(unittest_type), allocatable, intent(out) :: testsuite(:)
     testsuite = [new_unittest("mapping_oscillator", run_mapping_oscillator)]
   end subroutine collect_mapping_oscillator
 
+  !> The Jenkins oscillator through imported matrices: peaks, responses and curves.
   subroutine run_mapping_oscillator(suite)
     type(test_suite), intent(inout) :: suite
     type(blade_type), target :: blade

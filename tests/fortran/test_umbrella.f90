@@ -17,12 +17,13 @@ module test_umbrella
 
 contains
 
-  !> The unit tests of suite umbrella.
+  !> Collects the unit tests of suite umbrella.
   subroutine collect_umbrella(testsuite)
     type(unittest_type), allocatable, intent(out) :: testsuite(:)
     testsuite = [new_unittest("umbrella", run_umbrella)]
   end subroutine collect_umbrella
 
+  !> The version string of module udmap agrees with the C API's numeric version.
   subroutine run_umbrella(suite)
     type(test_suite), intent(inout) :: suite
     character(len=32) :: expected
