@@ -16,7 +16,7 @@ module test_admissible
 
 contains
 
-  !> Collects the unit tests of suite admissible.
+  !> The F_adm search by reverse communication (mapping/admissible.f90).
   subroutine collect_admissible(testsuite)
     type(unittest_type), allocatable, intent(out) :: testsuite(:)
     testsuite = [new_unittest("admissible", run_admissible)]

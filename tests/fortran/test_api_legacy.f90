@@ -17,7 +17,7 @@ module test_api_legacy
 
 contains
 
-  !> Collects the unit tests of suite api_legacy.
+  !> The plain-array API (kernel/src/api_legacy.f90).
   subroutine collect_api_legacy(testsuite)
     type(unittest_type), allocatable, intent(out) :: testsuite(:)
     testsuite = [new_unittest("api_legacy", run_api_legacy)]

@@ -15,7 +15,7 @@ module test_blade_beam
 
 contains
 
-  !> Collects the unit tests of suite blade_beam.
+  !> The built-in beam blade (PHYSICS.md 1.1).
   subroutine collect_blade_beam(testsuite)
     type(unittest_type), allocatable, intent(out) :: testsuite(:)
     testsuite = [new_unittest("blade_beam", run_blade_beam)]

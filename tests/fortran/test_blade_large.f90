@@ -18,7 +18,7 @@ module test_blade_large
 
 contains
 
-  !> Collects the unit tests of suite blade_large.
+  !> A large banded beam blade through the large-model path.
   subroutine collect_blade_large(testsuite)
     type(unittest_type), allocatable, intent(out) :: testsuite(:)
     testsuite = [new_unittest("blade_large", run_blade_large)]

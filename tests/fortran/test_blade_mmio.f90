@@ -15,7 +15,7 @@ module test_blade_mmio
 
 contains
 
-  !> Collects the unit tests of suite blade_mmio.
+  !> Matrix Market: round trip, formats, malformed files, imported blade files.
   subroutine collect_blade_mmio(testsuite)
     type(unittest_type), allocatable, intent(out) :: testsuite(:)
     testsuite = [new_unittest("blade_mmio", run_blade_mmio)]

@@ -21,7 +21,7 @@ module test_blade_receptances
 
 contains
 
-  !> Collects the unit tests of suite blade_receptances.
+  !> Receptances of blade A against an independent reference.
   subroutine collect_blade_receptances(testsuite)
     type(unittest_type), allocatable, intent(out) :: testsuite(:)
     testsuite = [new_unittest("blade_receptances", run_blade_receptances)]

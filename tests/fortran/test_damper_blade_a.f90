@@ -17,7 +17,7 @@ module test_damper_blade_a
 
 contains
 
-  !> Collects the unit tests of suite damper_blade_a.
+  !> The asymmetric damper of blade_a (PHYSICS.md 2.1-2.3).
   subroutine collect_damper_blade_a(testsuite)
     type(unittest_type), allocatable, intent(out) :: testsuite(:)
     testsuite = [new_unittest("damper_blade_a", run_damper_blade_a)]

@@ -20,7 +20,7 @@ module test_damper_bruteforce
 
 contains
 
-  !> Collects the unit tests of suite damper_bruteforce.
+  !> Brute force: Newton load steps against the event-driven tracer.
   subroutine collect_damper_bruteforce(testsuite)
     type(unittest_type), allocatable, intent(out) :: testsuite(:)
     testsuite = [new_unittest("damper_bruteforce", run_damper_bruteforce)]

@@ -16,7 +16,7 @@ module test_damper_geometries
 
 contains
 
-  !> Collects the unit tests of suite damper_geometries.
+  !> Asymmetric dampers other than blade_a's.
   subroutine collect_damper_geometries(testsuite)
     type(unittest_type), allocatable, intent(out) :: testsuite(:)
     testsuite = [new_unittest("damper_geometries", run_damper_geometries)]

@@ -12,7 +12,7 @@ module test_damper_kinds
 
 contains
 
-  !> Collects the unit tests of suite damper_kinds.
+  !> Damper kinds jenkins and table (PHYSICS.md 2.4).
   subroutine collect_damper_kinds(testsuite)
     type(unittest_type), allocatable, intent(out) :: testsuite(:)
     testsuite = [new_unittest("damper_kinds", run_damper_kinds)]

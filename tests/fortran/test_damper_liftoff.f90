@@ -14,7 +14,7 @@ module test_damper_liftoff
 
 contains
 
-  !> Collects the unit tests of suite damper_liftoff.
+  !> Lift-off: a flat pad too short to hold the damper.
   subroutine collect_damper_liftoff(testsuite)
     type(unittest_type), allocatable, intent(out) :: testsuite(:)
     testsuite = [new_unittest("damper_liftoff", run_damper_liftoff)]

@@ -16,7 +16,7 @@ module test_damper_tracer
 
 contains
 
-  !> Collects the unit tests of suite damper_tracer.
+  !> The contact-level tracer primitive, advance.
   subroutine collect_damper_tracer(testsuite)
     type(unittest_type), allocatable, intent(out) :: testsuite(:)
     testsuite = [new_unittest("damper_tracer", run_damper_tracer)]

@@ -26,7 +26,7 @@ module test_damper_wedge
 
 contains
 
-  !> Collects the unit tests of suite damper_wedge.
+  !> Wedge edges of the asymmetric damper (PHYSICS.md 2.1, 2.5).
   subroutine collect_damper_wedge(testsuite)
     type(unittest_type), allocatable, intent(out) :: testsuite(:)
     testsuite = [new_unittest("damper_wedge", run_damper_wedge)]

@@ -16,7 +16,7 @@ module test_force_table
 
 contains
 
-  !> Collects the unit tests of suite force_table.
+  !> The force table of the multi-harmonic mapping on known functions.
   subroutine collect_force_table(testsuite)
     type(unittest_type), allocatable, intent(out) :: testsuite(:)
     testsuite = [new_unittest("force_table", run_force_table)]

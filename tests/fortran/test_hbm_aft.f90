@@ -19,13 +19,13 @@ module test_hbm_aft
 
 contains
 
-  !> Collects the unit tests of suite hbm_aft.
+  !> Alternating frequency-time with the loading history.
   subroutine collect_hbm_aft(testsuite)
     type(unittest_type), allocatable, intent(out) :: testsuite(:)
     testsuite = [new_unittest("hbm_aft", run_hbm_aft)]
   end subroutine collect_hbm_aft
 
-  !> Exact and sampled AFT against the Jenkins describing function and their error order.
+  !> Exact and sampled AFT against the Jenkins describing function; the sampled error order.
   subroutine run_hbm_aft(suite)
     type(test_suite), intent(inout) :: suite
     type(jenkins_element_type) :: jen

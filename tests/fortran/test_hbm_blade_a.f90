@@ -24,7 +24,7 @@ module test_hbm_blade_a
 
 contains
 
-  !> Collects the unit tests of suite hbm_blade_a.
+  !> Standard method and time integration on blade A with its damper.
   subroutine collect_hbm_blade_a(testsuite)
     type(unittest_type), allocatable, intent(out) :: testsuite(:)
     testsuite = [new_unittest("hbm_blade_a", run_hbm_blade_a)]

@@ -17,7 +17,7 @@ module test_hbm_chain
 
 contains
 
-  !> Collects the unit tests of suite hbm_chain.
+  !> Standard method on a banded 12-DOF chain.
   subroutine collect_hbm_chain(testsuite)
     type(unittest_type), allocatable, intent(out) :: testsuite(:)
     testsuite = [new_unittest("hbm_chain", run_hbm_chain)]

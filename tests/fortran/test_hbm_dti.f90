@@ -18,7 +18,7 @@ module test_hbm_dti
 
 contains
 
-  !> Collects the unit tests of suite hbm_dti.
+  !> Newmark time integration to steady state (PHYSICS.md 7), three cases.
   subroutine collect_hbm_dti(testsuite)
     type(unittest_type), allocatable, intent(out) :: testsuite(:)
     testsuite = [new_unittest("hbm_dti", run_hbm_dti)]

@@ -18,7 +18,7 @@ module test_hbm_oscillator
 
 contains
 
-  !> Collects the unit tests of suite hbm_oscillator.
+  !> Standard method on the one-DOF Jenkins oscillator (PHYSICS.md 8).
   subroutine collect_hbm_oscillator(testsuite)
     type(unittest_type), allocatable, intent(out) :: testsuite(:)
     testsuite = [new_unittest("hbm_oscillator", run_hbm_oscillator)]

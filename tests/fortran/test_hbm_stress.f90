@@ -21,7 +21,7 @@ module test_hbm_stress
 
 contains
 
-  !> Collects the unit tests of suite hbm_stress.
+  !> Extreme inputs to the standard method, AFT and time integration.
   subroutine collect_hbm_stress(testsuite)
     type(unittest_type), allocatable, intent(out) :: testsuite(:)
     testsuite = [new_unittest("hbm_stress", run_hbm_stress)]

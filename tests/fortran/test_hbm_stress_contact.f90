@@ -22,7 +22,7 @@ module test_hbm_stress_contact
 
 contains
 
-  !> Collects the unit tests of suite hbm_stress_contact.
+  !> Extreme damper parameters (mu, CF, contact stiffness) on blade A.
   subroutine collect_hbm_stress_contact(testsuite)
     type(unittest_type), allocatable, intent(out) :: testsuite(:)
     testsuite = [new_unittest("hbm_stress_contact", run_hbm_stress_contact)]

@@ -19,7 +19,7 @@ module test_mapping_backbone
 
 contains
 
-  !> Collects the unit tests of suite mapping_backbone.
+  !> Backbone of blade A, rotational Jenkins damper: independent checks.
   subroutine collect_mapping_backbone(testsuite)
     type(unittest_type), allocatable, intent(out) :: testsuite(:)
     testsuite = [new_unittest("mapping_backbone", run_mapping_backbone)]

@@ -21,7 +21,7 @@ module test_mapping_blade_a
 
 contains
 
-  !> Collects the unit tests of suite mapping_blade_a.
+  !> Acceptance checks of the reference case blade_a.
   subroutine collect_mapping_blade_a(testsuite)
     type(unittest_type), allocatable, intent(out) :: testsuite(:)
     testsuite = [new_unittest("mapping_blade_a", run_mapping_blade_a)]

@@ -6,8 +6,8 @@
 module test_mapping_curves
   use udmap_kinds, only: wp, pi
   use udmap_error, only: error_type, UDMAP_EINPUT
-  use udmap_blade, only: blade_type, new_beam_blade
   use udmap_beam, only: beam_params_type
+  use udmap_blade, only: blade_type, new_beam_blade
   use udmap_damper, only: damper_type, new_jenkins_damper
   use udmap_model, only: model_type, analysis_type, point_type, curve_type, new_model, &
     & backbone, response_curves, BRANCH_LOWER, BRANCH_UPPER, BRANCH_TURNING, EIGEN_DIRECT, &
@@ -21,7 +21,7 @@ module test_mapping_curves
 
 contains
 
-  !> Collects the unit tests of suite mapping_curves.
+  !> Response curves, path structure and eigenvalue starts on blade A.
   subroutine collect_mapping_curves(testsuite)
     type(unittest_type), allocatable, intent(out) :: testsuite(:)
     testsuite = [new_unittest("mapping_curves", run_mapping_curves)]
@@ -30,6 +30,7 @@ contains
   !> Curve points against dense solves, the path structure and the eigenvalue starts.
   subroutine run_mapping_curves(suite)
     type(test_suite), intent(inout) :: suite
+    type(beam_params_type) :: params
 
     type(blade_type), target :: blade
     type(damper_type), target :: damper
@@ -38,7 +39,6 @@ contains
     type(error_type), allocatable :: error
     type(point_type), allocatable :: points(:), p_direct(:), p_modal(:)
     type(curve_type), allocatable :: curves(:)
-    type(beam_params_type) :: params
     real(wp), parameter :: forces(3) = [1.0_wp, 3.0_wp, 6.0_wp]
     integer, parameter :: layers = 40
     real(wp) :: worst, x1, y1, x2, y2, longest, band, lnrange, gmin, gmax

@@ -29,7 +29,7 @@ module test_mapping_harmonics
 
 contains
 
-  !> Collects the unit tests of suite mapping_harmonics.
+  !> Multi-harmonic layers against the standard method (PHYSICS.md 4.1).
   subroutine collect_mapping_harmonics(testsuite)
     type(unittest_type), allocatable, intent(out) :: testsuite(:)
     testsuite = [new_unittest("mapping_harmonics", run_mapping_harmonics)]

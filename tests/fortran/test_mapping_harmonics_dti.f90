@@ -22,7 +22,7 @@ module test_mapping_harmonics_dti
 
 contains
 
-  !> Collects the unit tests of suite mapping_harmonics_dti.
+  !> Automatic H against Newmark in gross slip, on blade A.
   subroutine collect_mapping_harmonics_dti(testsuite)
     type(unittest_type), allocatable, intent(out) :: testsuite(:)
     testsuite = [new_unittest("mapping_harmonics_dti", run_mapping_harmonics_dti)]

@@ -19,7 +19,7 @@ module test_mapping_isola
 
 contains
 
-  !> Collects the unit tests of suite mapping_isola.
+  !> Three backbone roots; the isola of the one-DOF oscillator.
   subroutine collect_mapping_isola(testsuite)
     type(unittest_type), allocatable, intent(out) :: testsuite(:)
     testsuite = [new_unittest("mapping_isola", run_mapping_isola)]

@@ -20,7 +20,7 @@ module test_mapping_oscillator
 
 contains
 
-  !> Collects the unit tests of suite mapping_oscillator.
+  !> Jenkins oscillator (PHYSICS.md 8) from Matrix Market files.
   subroutine collect_mapping_oscillator(testsuite)
     type(unittest_type), allocatable, intent(out) :: testsuite(:)
     testsuite = [new_unittest("mapping_oscillator", run_mapping_oscillator)]

@@ -17,7 +17,7 @@ module test_umbrella
 
 contains
 
-  !> Collects the unit tests of suite umbrella.
+  !> The umbrella module udmap.
   subroutine collect_umbrella(testsuite)
     type(unittest_type), allocatable, intent(out) :: testsuite(:)
     testsuite = [new_unittest("umbrella", run_umbrella)]

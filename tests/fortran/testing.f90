@@ -108,6 +108,7 @@ contains
     end if
   end subroutine check_error
 
+  !> A unit test named `name` that runs `test`.
   function new_unittest(name, test) result(unittest)
     character(len=*), intent(in) :: name
     procedure(test_interface) :: test
@@ -116,12 +117,12 @@ contains
     unittest%test => test
   end function new_unittest
 
+  !> A suite named `name`; `collect` returns its unit tests.
   function new_testsuite(name, collect) result(testsuite)
     character(len=*), intent(in) :: name
     procedure(collect_interface) :: collect
     type(testsuite_type) :: testsuite
-    testsuite%name = name
-    testsuite%collect => collect
+    testsuite = testsuite_type(name, collect)
   end function new_testsuite
 
   !> Runs every unit test of one suite, prints a count line per unit and for the suite, and
