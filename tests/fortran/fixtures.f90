@@ -12,7 +12,10 @@ module fixtures
   implicit none
   private
   public :: blade_a_beam_params, spring_chain, dense_gamma, layer_force, band_min_force, sign_of
-  public :: ieee_nan, ieee_inf, temp_dir
+  public :: ieee_nan, ieee_inf, temp_dir, qp, receptances_from_solution
+
+  !> The real kind of the quadruple-precision references.
+  integer, parameter :: qp = selected_real_kind(30)
 
   !> LAPACK (not in udmap_lapack, which holds what the kernel calls).
   interface
@@ -62,7 +65,6 @@ contains
     type(blade_type), intent(in) :: blade
     type(damper_type), intent(in) :: damper
     real(wp), intent(in) :: gamma, F_E, w
-    integer, parameter :: qp = selected_real_kind(30)
     complex(wp), allocatable :: D(:, :), LU(:, :), q(:, :), dq(:, :)
     complex(qp), allocatable :: D_quad(:, :), res(:)
     integer, allocatable :: ipiv(:)
@@ -88,6 +90,24 @@ contains
     end do
     amp = abs(q(blade%gamma_dof, 1))
   end function dense_gamma
+
+  !> The receptances of blade bl at omega [rad/s] from x = [q_E, q_g], the solutions for unit
+  !> forces at the excitation and the gamma DOF: gE = q_E(g), gg = q_g(g), EE = q_E(E),
+  !> sE = s^T q_E, sg = s^T q_g.
+  function receptances_from_solution(bl, omega, x) result(r)
+    type(blade_type), intent(in) :: bl
+    real(wp), intent(in) :: omega
+    complex(qp), intent(in) :: x(:, :)
+    type(receptances_type) :: r
+    complex(qp), allocatable :: s(:)
+    allocate(s(bl%ndof))
+    s = real(bl%s_K, qp) - real(omega, qp)**2*real(bl%s_M, qp)
+    r%gE = cmplx(x(bl%gamma_dof, 1), kind=wp)
+    r%gg = cmplx(x(bl%gamma_dof, 2), kind=wp)
+    r%EE = cmplx(x(bl%exc_dof, 1), kind=wp)
+    r%sE = cmplx(sum(s*x(:, 1)), kind=wp)
+    r%sg = cmplx(sum(s*x(:, 2)), kind=wp)
+  end function receptances_from_solution
 
   !> F(omega) = gamma/|g~| and dF/d omega of the layer gamma (stiffness k).
   subroutine layer_force(blade, gamma, k, w, F, dF, error)

@@ -9,7 +9,7 @@ module test_blade_large
   use udmap_error, only: error_type
   use udmap_beam, only: beam_params_type
   use udmap_blade, only: blade_type, receptances_type, new_beam_blade, layer_response
-  use fixtures, only: blade_a_beam_params
+  use fixtures, only: blade_a_beam_params, qp, receptances_from_solution
   use testing, only: test_suite, check_close, check_true, check_no_error, unittest_type, &
     & new_unittest
   implicit none
@@ -27,7 +27,6 @@ contains
   !> The 4112-DOF banded blade: subspace modes and series against the small blade's values.
   subroutine run_blade_large(suite)
     type(test_suite), intent(inout) :: suite
-    integer, parameter :: qp = selected_real_kind(30)
     type(beam_params_type) :: a
     type(blade_type) :: b
     type(error_type), allocatable :: error
@@ -99,14 +98,14 @@ contains
       complex(wp), intent(in) :: k
       type(receptances_type) :: res
       integer, parameter :: kl = 3, ku = 3, ld = 2*kl + ku + 1
-      complex(qp), allocatable :: ab(:, :), x(:, :), s(:)
+      complex(qp), allocatable :: ab(:, :), x(:, :)
       complex(qp) :: t, tmp
       real(qp) :: om, kij, mij
       integer :: n, i, j, p, kk, last, jj
       n = b%ndof
       om = real(omega, qp)
       ! General band storage with room for fill-in: ab(kl+ku+1+i-j, j) = A(i, j).
-      allocate(ab(ld, n), x(n, 2), s(n))
+      allocate(ab(ld, n), x(n, 2))
       ab = 0
       do j = 1, n
         do i = max(1, j-3), min(n, j+3)
@@ -152,12 +151,7 @@ contains
           x(j, kk) = t/ab(kl+ku+1, j)
         end do
       end do
-      s = real(b%s_K, qp) - om**2*real(b%s_M, qp)
-      res%gE = cmplx(x(b%gamma_dof, 1), kind=wp)
-      res%gg = cmplx(x(b%gamma_dof, 2), kind=wp)
-      res%EE = cmplx(x(b%exc_dof, 1), kind=wp)
-      res%sE = cmplx(sum(s*x(:, 1)), kind=wp)
-      res%sg = cmplx(sum(s*x(:, 2)), kind=wp)
+      res = receptances_from_solution(b, omega, x)
     end function reference
   end subroutine run_blade_large
 end module test_blade_large

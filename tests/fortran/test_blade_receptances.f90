@@ -12,7 +12,7 @@ module test_blade_receptances
   use udmap_beam, only: beam_params_type
   use udmap_blade, only: blade_type, receptances_type, new_beam_blade, new_matrices_blade, &
     & read_matrices_blade, export_blade, layer_response
-  use fixtures, only: blade_a_beam_params, ieee_nan, temp_dir
+  use fixtures, only: blade_a_beam_params, ieee_nan, temp_dir, qp, receptances_from_solution
   use testing, only: test_suite, check_close, check_true, check_no_error, check_error, &
     & unittest_type, new_unittest
   implicit none
@@ -30,7 +30,6 @@ contains
   !> Every receptance path against the quadruple-precision dense solve, and the import checks.
   subroutine run_blade_receptances(suite)
     type(test_suite), intent(inout) :: suite
-    integer, parameter :: qp = selected_real_kind(30)
     type(beam_params_type) :: a
     type(blade_type) :: b
     type(error_type), allocatable :: error
@@ -388,15 +387,9 @@ contains
       type(blade_type), intent(in) :: bl
       real(wp), intent(in) :: omega
       type(receptances_type) :: r
-      complex(qp), allocatable :: x(:, :), s(:)
+      complex(qp), allocatable :: x(:, :)
       call quad_solve(bl, omega, (0.0_wp, 0.0_wp), x)
-      allocate(s(bl%ndof))
-      s = real(bl%s_K, qp) - real(omega, qp)**2*real(bl%s_M, qp)
-      r%gE = cmplx(x(bl%gamma_dof, 1), kind=wp)
-      r%gg = cmplx(x(bl%gamma_dof, 2), kind=wp)
-      r%EE = cmplx(x(bl%exc_dof, 1), kind=wp)
-      r%sE = cmplx(sum(s*x(:, 1)), kind=wp)
-      r%sg = cmplx(sum(s*x(:, 2)), kind=wp)
+      r = receptances_from_solution(bl, omega, x)
     end function reference_receptances
 
     !> Layer response by the quad direct solve of (D + k e_g e_g^T) q = e_E.
