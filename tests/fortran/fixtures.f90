@@ -8,10 +8,12 @@ module fixtures
   use udmap_blade, only: blade_type, receptances_type
   use udmap_damper, only: damper_type
   use udmap_damper_tracer, only: CONTACT_SLIP_POS, CONTACT_SLIP_NEG
-  use udmap_model, only: analysis_type
+  use udmap_model, only: analysis_type, model_type, point_type, new_model, backbone
+  use testing, only: test_suite, check_no_error
   implicit none
   private
   public :: blade_a_beam_params, spring_chain, dense_gamma, layer_force, band_min_force, sign_of
+  public :: blade_a_band, blade_a_model, refined_backbone_change
   public :: ieee_nan, ieee_inf, temp_dir, qp, receptances_from_solution
 
   !> The real kind of the quadruple-precision references.
@@ -38,6 +40,56 @@ contains
       & airfoil_L=0.120_wp, airfoil_h=0.004_wp, airfoil_b=0.030_wp, &
       & neck_elements=8, airfoil_elements=24)
   end function blade_a_beam_params
+
+  !> Blade A's band for its first mode: 150 to 230 Hz.
+  subroutine blade_a_band(analysis)
+    type(analysis_type), intent(inout) :: analysis
+    analysis%f_min = 150
+    analysis%f_max = 230
+  end subroutine blade_a_band
+
+  !> The model of blade and damper over blade A's band (analysis keeps its other settings);
+  !> checks that it builds.
+  subroutine blade_a_model(suite, blade, damper, analysis, model, error)
+    type(test_suite), intent(inout) :: suite
+    type(blade_type), target, intent(in) :: blade
+    type(damper_type), target, intent(in) :: damper
+    type(analysis_type), intent(inout) :: analysis
+    type(model_type), intent(out) :: model
+    type(error_type), allocatable, intent(out) :: error
+    call blade_a_band(analysis)
+    call new_model(model, blade, damper, analysis, error)
+    call check_no_error(suite, "model", error)
+  end subroutine blade_a_model
+
+  !> The backbone of model at F_E = 1, ..., 10 N (points) and its largest relative change in
+  !> gamma_P, f_res and sigma_a when the tolerance and the grid step are halved (worst); error
+  !> is that of the refined backbone.
+  subroutine refined_backbone_change(model, blade, damper, analysis, points, worst, error)
+    type(model_type), intent(inout) :: model
+    type(blade_type), target, intent(in) :: blade
+    type(damper_type), target, intent(in) :: damper
+    type(analysis_type), intent(in) :: analysis
+    type(point_type), allocatable, intent(out) :: points(:)
+    real(wp), intent(out) :: worst
+    type(error_type), allocatable, intent(out) :: error
+    type(analysis_type) :: fine
+    type(model_type) :: model_fine
+    type(point_type), allocatable :: points_fine(:)
+    integer :: i
+    call backbone(model, [(real(i, wp), i = 1, 10)], points, error)
+    fine = analysis
+    fine%rtol = analysis%rtol/2
+    fine%grid_per_decade = 2*analysis%grid_per_decade
+    call new_model(model_fine, blade, damper, fine, error)
+    call backbone(model_fine, [(real(i, wp), i = 1, 10)], points_fine, error)
+    worst = 0
+    do i = 1, 10
+      worst = max(worst, abs(points_fine(i)%gamma_P/points(i)%gamma_P - 1), &
+        & abs(points_fine(i)%f_res/points(i)%f_res - 1), &
+        & abs(points_fine(i)%sigma_a/points(i)%sigma_a - 1))
+    end do
+  end subroutine refined_backbone_change
 
   !> The chain of unit springs (100) and masses (1 + 0.1 i): spring i joins node i-1 (the
   !> ground for i = 1) and node i.

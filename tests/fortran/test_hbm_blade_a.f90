@@ -15,7 +15,7 @@ module test_hbm_blade_a
   use udmap_aft, only: aft_workspace_type, aft_moment
   use udmap_hbm, only: hbm_settings_type, hbm_point_type, hbm_peaks, hbm_response
   use udmap_newmark, only: dti_settings_type, dti_point_type, dti_response
-  use fixtures, only: blade_a_beam_params
+  use fixtures, only: blade_a_beam_params, blade_a_band
   use testing, only: test_suite, check_close, check_true, check_no_error, unittest_type, &
     & new_unittest
   implicit none
@@ -59,8 +59,7 @@ contains
     call check_no_error(suite, "blade A", error)
     call new_asymmetric_damper(damper, blade_a_damper_params(), error)
     call check_no_error(suite, "damper", error)
-    an%f_min = 150.0_wp
-    an%f_max = 230.0_wp
+    call blade_a_band(an)
     call new_model(model, blade, damper, an, error)
     call backbone(model, FE, bb, error)
     call check_no_error(suite, "backbone", error)

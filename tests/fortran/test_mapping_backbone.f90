@@ -10,7 +10,8 @@ module test_mapping_backbone
   use udmap_eigen_start, only: direct_eigen_start, secular_root
   use udmap_model, only: model_type, analysis_type, point_type, new_model, limit_force, &
     & backbone, backbone_curve, response, REGIME_LIMIT, REGIME_STUCK, REGIME_FULL_SLIP
-  use fixtures, only: blade_a_beam_params, dense_gamma, layer_force, band_min_force
+  use fixtures, only: blade_a_beam_params, blade_a_model, refined_backbone_change, dense_gamma, &
+    & layer_force, band_min_force
   use testing, only: test_suite, check_close, check_true, check_no_error, check_error, &
     & unittest_type, new_unittest
   implicit none
@@ -34,7 +35,7 @@ contains
     type(model_type) :: model, model0, model_fine
     type(analysis_type) :: analysis, fine
     type(error_type), allocatable :: error
-    type(point_type), allocatable :: points(:), points_fine(:)
+    type(point_type), allocatable :: points(:)
     type(beam_params_type) :: params
     real(wp), parameter :: kt = 3000.0_wp, M_slip = 1.35_wp
     real(wp), allocatable :: gam(:), F_bb(:), f_res(:)
@@ -48,10 +49,7 @@ contains
     call check_no_error(suite, "blade", error)
     call new_jenkins_damper(damper, kt, M_slip, error)
     call check_no_error(suite, "damper", error)
-    analysis%f_min = 150
-    analysis%f_max = 230
-    call new_model(model, blade, damper, analysis, error)
-    call check_no_error(suite, "model", error)
+    call blade_a_model(suite, blade, damper, analysis, model, error)
     if (allocated(error)) return
     call limit_force(model, F_lim, error)
 
@@ -123,19 +121,8 @@ contains
     call check_true(suite, "stuck regime", points(1)%regime == REGIME_STUCK)
 
     ! ---- convergence: halving the tolerance and the grid step changes nothing beyond 1e-8
-    call backbone(model, [(real(i, wp), i = 1, 10)], points, error)
-    fine = analysis
-    fine%rtol = analysis%rtol/2
-    fine%grid_per_decade = 2*analysis%grid_per_decade
-    call new_model(model_fine, blade, damper, fine, error)
-    call backbone(model_fine, [(real(i, wp), i = 1, 10)], points_fine, error)
+    call refined_backbone_change(model, blade, damper, analysis, points, worst, error)
     call check_no_error(suite, "fine backbone", error)
-    worst = 0
-    do i = 1, 10
-      worst = max(worst, abs(points_fine(i)%gamma_P/points(i)%gamma_P - 1), &
-        & abs(points_fine(i)%f_res/points(i)%f_res - 1), &
-        & abs(points_fine(i)%sigma_a/points(i)%sigma_a - 1))
-    end do
     call check_close(suite, "converged defaults", worst, 0.0_wp, 0.0_wp, 1e-8_wp)
 
     ! ---- a band without the resonance is a physics error, not a band-edge answer

@@ -12,7 +12,8 @@ module test_mapping_blade_a
   use udmap_eigen_start, only: direct_eigen_start
   use udmap_model, only: model_type, analysis_type, point_type, new_model, set_damper, &
     & limit_force, backbone, backbone_curve, response, REGIME_STUCK, REGIME_PARTIAL_SLIP
-  use fixtures, only: blade_a_beam_params, layer_force, band_min_force
+  use fixtures, only: blade_a_beam_params, blade_a_model, refined_backbone_change, layer_force, &
+    & band_min_force
   use testing, only: test_suite, check_close, check_true, check_no_error, unittest_type, &
     & new_unittest
   implicit none
@@ -32,10 +33,10 @@ contains
     type(test_suite), intent(inout) :: suite
     type(blade_type), target :: blade, blade0
     type(damper_type), target :: damper, damper2
-    type(model_type) :: model, model0, model_fine
-    type(analysis_type) :: analysis, fine
+    type(model_type) :: model, model0
+    type(analysis_type) :: analysis
     type(error_type), allocatable :: error
-    type(point_type), allocatable :: points(:), again(:), points_fine(:)
+    type(point_type), allocatable :: points(:), again(:)
     type(beam_params_type) :: params
     type(asymmetric_params_type) :: dparams
     real(wp), allocatable :: gam(:), F_bb(:), f_res(:)
@@ -48,10 +49,7 @@ contains
     call check_no_error(suite, "blade", error)
     call new_asymmetric_damper(damper, blade_a_damper_params(), error)
     call check_no_error(suite, "damper", error)
-    analysis%f_min = 150
-    analysis%f_max = 230
-    call new_model(model, blade, damper, analysis, error)
-    call check_no_error(suite, "model", error)
+    call blade_a_model(suite, blade, damper, analysis, model, error)
     if (allocated(error)) return
     call limit_force(model, F_lim, error)
     call check_close(suite, "F_lim = 2 Delta_M/(pi |phi_E/phi_g|)", F_lim, 2*(damper%M_max - &
@@ -100,18 +98,7 @@ contains
     call check_close(suite, "stuck root", again(1)%gamma_P, 0.5_wp*damper%gamma_s, 1e-12_wp)
 
     ! converged defaults: halving the tolerance and the grid step
-    call backbone(model, [(real(i, wp), i = 1, 10)], points, error)
-    fine = analysis
-    fine%rtol = analysis%rtol/2
-    fine%grid_per_decade = 2*analysis%grid_per_decade
-    call new_model(model_fine, blade, damper, fine, error)
-    call backbone(model_fine, [(real(i, wp), i = 1, 10)], points_fine, error)
-    worst = 0
-    do i = 1, 10
-      worst = max(worst, abs(points_fine(i)%gamma_P/points(i)%gamma_P - 1), &
-        & abs(points_fine(i)%f_res/points(i)%f_res - 1), &
-        & abs(points_fine(i)%sigma_a/points(i)%sigma_a - 1))
-    end do
+    call refined_backbone_change(model, blade, damper, analysis, points, worst, error)
     call check_close(suite, "converged defaults", worst, 0.0_wp, 0.0_wp, 1e-8_wp)
 
     ! a new damper object with the same parameters through set_damper: same answers

@@ -12,7 +12,7 @@ module test_mapping_curves
   use udmap_model, only: model_type, analysis_type, point_type, curve_type, new_model, &
     & backbone, response_curves, BRANCH_LOWER, BRANCH_UPPER, BRANCH_TURNING, EIGEN_DIRECT, &
     & EIGEN_MODAL
-  use fixtures, only: blade_a_beam_params, dense_gamma
+  use fixtures, only: blade_a_beam_params, blade_a_model, dense_gamma
   use testing, only: test_suite, check_close, check_true, check_no_error, check_error, &
     & unittest_type, new_unittest
   implicit none
@@ -47,10 +47,7 @@ contains
     params = blade_a_beam_params()
     call new_beam_blade(blade, params, error)
     call new_jenkins_damper(damper, 3000.0_wp, 1.35_wp, error)
-    analysis%f_min = 150
-    analysis%f_max = 230
-    call new_model(model, blade, damper, analysis, error)
-    call check_no_error(suite, "model", error)
+    call blade_a_model(suite, blade, damper, analysis, model, error)
     if (allocated(error)) return
 
     call backbone(model, forces, points, error)

@@ -20,7 +20,7 @@ module test_mapping_harmonics
   use udmap_hbm, only: hbm_settings_type, hbm_point_type, hbm_peaks, hbm_response
   use udmap_harmonic_layer, only: harmonic_state_type, harmonic_resize, harmonic_solve
   use udmap_model_data, only: model_type
-  use fixtures, only: blade_a_beam_params
+  use fixtures, only: blade_a_beam_params, blade_a_band
   use testing, only: test_suite, check_close, check_true, check_no_error, check_error, &
     & unittest_type, new_unittest
   implicit none
@@ -65,8 +65,7 @@ contains
     call structure_from_blade(st, blade, error)
     call new_contact_element(el, blade_a_damper_params(), error)
     call check_no_error(suite, "contact element", error)
-    an%f_min = 150.0_wp
-    an%f_max = 230.0_wp
+    call blade_a_band(an)
 
     ! H = 1 is the single-harmonic method: the same numbers, bit for bit
     call new_model(model, blade, damper, an, error)

@@ -13,7 +13,7 @@ module test_mapping_harmonics_dti
   use udmap_linear_structure, only: structure_type, structure_from_blade
   use udmap_contact_element, only: contact_element_type, new_contact_element
   use udmap_newmark, only: dti_settings_type, dti_point_type, dti_peak
-  use fixtures, only: blade_a_beam_params
+  use fixtures, only: blade_a_beam_params, blade_a_band
   use testing, only: test_suite, check_close, check_true, check_no_error, unittest_type, &
     & new_unittest
   implicit none
@@ -52,8 +52,7 @@ contains
     call check_no_error(suite, "damper", error)
     call structure_from_blade(st, blade, error)
     call new_contact_element(el, blade_a_damper_params(), error)
-    an%f_min = 150.0_wp
-    an%f_max = 230.0_wp
+    call blade_a_band(an)
     call new_model(model, blade, damper, an, error)
     call backbone(model, FE, p1, error)
     an%harmonics = 0
