@@ -5,15 +5,16 @@ module fixtures
   use udmap_kinds, only: wp, pi
   use udmap_error, only: error_type
   use udmap_beam, only: beam_params_type
-  use udmap_blade, only: blade_type, receptances_type
-  use udmap_damper, only: damper_type
+  use udmap_blade, only: blade_type, receptances_type, new_beam_blade
+  use udmap_damper, only: damper_type, new_asymmetric_damper
+  use udmap_damper_params, only: blade_a_damper_params
   use udmap_damper_tracer, only: CONTACT_SLIP_POS, CONTACT_SLIP_NEG
   use udmap_model, only: analysis_type, model_type, point_type, new_model, backbone
   use testing, only: test_suite, check_no_error
   implicit none
   private
   public :: blade_a_beam_params, spring_chain, dense_gamma, layer_force, band_min_force, sign_of
-  public :: blade_a_band, blade_a_model, refined_backbone_change
+  public :: blade_a_with_damper, blade_a_band, blade_a_model, refined_backbone_change
   public :: ieee_nan, ieee_inf, temp_dir, qp, receptances_from_solution
 
   !> The real kind of the quadruple-precision references.
@@ -40,6 +41,18 @@ contains
       & airfoil_L=0.120_wp, airfoil_h=0.004_wp, airfoil_b=0.030_wp, &
       & neck_elements=8, airfoil_elements=24)
   end function blade_a_beam_params
+
+  !> Blade A and its asymmetric damper; checks that each builds.
+  subroutine blade_a_with_damper(suite, blade, damper, error)
+    type(test_suite), intent(inout) :: suite
+    type(blade_type), intent(out) :: blade
+    type(damper_type), intent(out) :: damper
+    type(error_type), allocatable, intent(out) :: error
+    call new_beam_blade(blade, blade_a_beam_params(), error)
+    call check_no_error(suite, "blade A", error)
+    call new_asymmetric_damper(damper, blade_a_damper_params(), error)
+    call check_no_error(suite, "damper", error)
+  end subroutine blade_a_with_damper
 
   !> Blade A's band for its first mode: 150 to 230 Hz.
   subroutine blade_a_band(analysis)

@@ -5,9 +5,8 @@
 module test_hbm_blade_a
   use udmap_kinds, only: wp, pi
   use udmap_error, only: error_type
-  use udmap_beam, only: beam_params_type
-  use udmap_blade, only: blade_type, new_beam_blade
-  use udmap_damper, only: damper_type, new_asymmetric_damper
+  use udmap_blade, only: blade_type
+  use udmap_damper, only: damper_type
   use udmap_damper_params, only: blade_a_damper_params
   use udmap_model, only: model_type, analysis_type, point_type, new_model, backbone
   use udmap_linear_structure, only: structure_type, structure_from_blade
@@ -15,7 +14,7 @@ module test_hbm_blade_a
   use udmap_aft, only: aft_workspace_type, aft_moment
   use udmap_hbm, only: hbm_settings_type, hbm_point_type, hbm_peaks, hbm_response
   use udmap_newmark, only: dti_settings_type, dti_point_type, dti_response
-  use fixtures, only: blade_a_beam_params, blade_a_band
+  use fixtures, only: blade_a_with_damper, blade_a_band
   use testing, only: test_suite, check_close, check_true, check_no_error, unittest_type, &
     & new_unittest
   implicit none
@@ -33,7 +32,6 @@ contains
   !> Standard method vs backbone at H = 1, time integration vs H = 21, partial-slip history.
   subroutine run_hbm_blade_a(suite)
     type(test_suite), intent(inout) :: suite
-    type(beam_params_type) :: bp
     type(blade_type), target :: blade
     type(damper_type), target :: damper
     type(model_type) :: model
@@ -54,11 +52,7 @@ contains
     integer :: i, v
     character(len=24) :: tag
 
-    bp = blade_a_beam_params()
-    call new_beam_blade(blade, bp, error)
-    call check_no_error(suite, "blade A", error)
-    call new_asymmetric_damper(damper, blade_a_damper_params(), error)
-    call check_no_error(suite, "damper", error)
+    call blade_a_with_damper(suite, blade, damper, error)
     call blade_a_band(an)
     call new_model(model, blade, damper, an, error)
     call backbone(model, FE, bb, error)

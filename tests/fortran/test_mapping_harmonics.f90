@@ -7,9 +7,8 @@
 module test_mapping_harmonics
   use udmap_kinds, only: wp, pi
   use udmap_error, only: error_type, UDMAP_EINPUT
-  use udmap_beam, only: beam_params_type
-  use udmap_blade, only: blade_type, new_beam_blade
-  use udmap_damper, only: damper_type, new_asymmetric_damper, new_jenkins_damper, &
+  use udmap_blade, only: blade_type
+  use udmap_damper, only: damper_type, new_jenkins_damper, &
     & new_table_damper
   use udmap_damper_params, only: blade_a_damper_params
   use udmap_model, only: model_type, analysis_type, point_type, new_model, backbone, response, &
@@ -20,7 +19,7 @@ module test_mapping_harmonics
   use udmap_hbm, only: hbm_settings_type, hbm_point_type, hbm_peaks, hbm_response
   use udmap_harmonic_layer, only: harmonic_state_type, harmonic_resize, harmonic_solve
   use udmap_model_data, only: model_type
-  use fixtures, only: blade_a_beam_params, blade_a_band
+  use fixtures, only: blade_a_with_damper, blade_a_band
   use testing, only: test_suite, check_close, check_true, check_no_error, check_error, &
     & unittest_type, new_unittest
   implicit none
@@ -38,7 +37,6 @@ contains
   !> Multi-harmonic layers against the standard method with the same harmonics.
   subroutine run_mapping_harmonics(suite)
     type(test_suite), intent(inout) :: suite
-    type(beam_params_type) :: bp
     type(blade_type), target :: blade
     type(damper_type), target :: damper, jdamper, tdamper
     type(model_type) :: model
@@ -57,11 +55,7 @@ contains
     integer :: i, k, H
     character(len=48) :: tag
 
-    bp = blade_a_beam_params()
-    call new_beam_blade(blade, bp, error)
-    call check_no_error(suite, "blade A", error)
-    call new_asymmetric_damper(damper, blade_a_damper_params(), error)
-    call check_no_error(suite, "damper", error)
+    call blade_a_with_damper(suite, blade, damper, error)
     call structure_from_blade(st, blade, error)
     call new_contact_element(el, blade_a_damper_params(), error)
     call check_no_error(suite, "contact element", error)
