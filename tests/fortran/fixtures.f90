@@ -5,7 +5,7 @@ module fixtures
   use udmap_kinds, only: wp, pi
   use udmap_error, only: error_type
   use udmap_beam, only: beam_params_type
-  use udmap_blade, only: blade_type, receptances_type, new_beam_blade
+  use udmap_blade, only: blade_type, receptances_type, new_beam_blade, new_matrices_blade
   use udmap_damper, only: damper_type, new_asymmetric_damper
   use udmap_damper_params, only: blade_a_damper_params
   use udmap_damper_tracer, only: CONTACT_SLIP_POS, CONTACT_SLIP_NEG
@@ -14,7 +14,7 @@ module fixtures
   implicit none
   private
   public :: blade_a_beam_params, spring_chain, dense_gamma, layer_force, band_min_force, sign_of
-  public :: blade_a_with_damper, blade_a_band, blade_a_model, refined_backbone_change
+  public :: one_dof_blade, blade_a_with_damper, blade_a_band, blade_a_model, refined_backbone_change
   public :: ieee_nan, ieee_inf, temp_dir, qp, receptances_from_solution
 
   !> The real kind of the quadruple-precision references.
@@ -41,6 +41,19 @@ contains
       & airfoil_L=0.120_wp, airfoil_h=0.004_wp, airfoil_b=0.030_wp, &
       & neck_elements=8, airfoil_elements=24)
   end function blade_a_beam_params
+
+  !> The one-DOF oscillator of PHYSICS.md 8 as a matrices blade: m = 1, k = 1, the explicit
+  !> damping c_visc, excitation at the gamma DOF.
+  subroutine one_dof_blade(blade, c_visc, error)
+    type(blade_type), intent(out) :: blade
+    real(wp), intent(in) :: c_visc
+    type(error_type), allocatable, intent(out) :: error
+    real(wp) :: M(1, 1), K(1, 1), C(1, 1)
+    M = 1
+    K = 1
+    C = c_visc
+    call new_matrices_blade(blade, M, K, 1, 1, 0.0_wp, error, C=C)
+  end subroutine one_dof_blade
 
   !> Blade A and its asymmetric damper; checks that each builds.
   subroutine blade_a_with_damper(suite, blade, damper, error)

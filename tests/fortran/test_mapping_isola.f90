@@ -7,10 +7,11 @@
 module test_mapping_isola
   use udmap_kinds, only: wp, pi
   use udmap_error, only: error_type
-  use udmap_blade, only: blade_type, new_matrices_blade
+  use udmap_blade, only: blade_type
   use udmap_damper, only: damper_type, new_table_damper
   use udmap_model, only: model_type, analysis_type, point_type, curve_type, new_model, &
     & backbone, backbone_curve, response, response_curves, BRANCH_TURNING
+  use fixtures, only: one_dof_blade
   use testing, only: test_suite, check_close, check_true, check_no_error, unittest_type, &
     & new_unittest
   implicit none
@@ -35,15 +36,12 @@ contains
     type(error_type), allocatable :: error
     type(point_type), allocatable :: points(:), resp(:)
     type(curve_type), allocatable :: curves(:)
-    real(wp) :: M(1, 1), K(1, 1), C(1, 1), worst, fmid
+    real(wp) :: worst, fmid
     real(wp), allocatable :: g(:), kre(:), kim(:)
     integer :: i, n, first, last
     real(wp), parameter :: F = 0.1_wp
 
-    M = 1
-    K = 1
-    C = 0.01_wp
-    call new_matrices_blade(blade, M, K, 1, 1, 0.0_wp, error, C=C)
+    call one_dof_blade(blade, 0.01_wp, error)
     n = 161
     g = [1e-4_wp, (1e-3_wp*10.0_wp**(5*real(i, wp)/(n - 2)), i = 0, n - 2)]
     kre = spread(0.25_wp, 1, n)

@@ -7,11 +7,12 @@
 module test_mapping_oscillator
   use udmap_kinds, only: wp, pi
   use udmap_error, only: error_type, UDMAP_EINPUT
-  use udmap_blade, only: blade_type, new_matrices_blade
+  use udmap_blade, only: blade_type
   use udmap_damper, only: damper_type, new_jenkins_damper
   use udmap_model, only: model_type, analysis_type, point_type, curve_type, new_model, &
     & limit_force, backbone, backbone_curve, response, response_curves, REGIME_FULL_SLIP, &
     & REGIME_LIMIT, REGIME_STUCK, BRANCH_TURNING
+  use fixtures, only: one_dof_blade
   use testing, only: test_suite, check_close, check_true, check_no_error, check_error, &
     & unittest_type, new_unittest
   implicit none
@@ -36,17 +37,14 @@ contains
     type(error_type), allocatable :: error
     type(point_type), allocatable :: points(:)
     type(curve_type), allocatable :: curves(:)
-    real(wp) :: M(1, 1), K(1, 1), C(1, 1), F_lim, F_bb(2), f_res(2), worst, omega
+    real(wp) :: F_lim, F_bb(2), f_res(2), worst, omega
     real(wp), parameter :: c_visc = 0.01_wp, kt = 0.25_wp, slip = 0.2_wp
     ! PHYSICS.md 8: F, amplitude, omega [rad/s]
     real(wp), parameter :: published(3, 3) = reshape([0.05_wp, 0.946956_wp, 1.106824_wp, &
       & 0.1_wp, 1.214018_wp, 1.083677_wp, 0.3_wp, 7.279801_wp, 1.007341_wp], [3, 3])
     integer :: i, j
 
-    M = 1
-    K = 1
-    C = c_visc
-    call new_matrices_blade(blade, M, K, 1, 1, 0.0_wp, error, C=C)
+    call one_dof_blade(blade, c_visc, error)
     call check_no_error(suite, "blade", error)
     call new_jenkins_damper(damper, kt, slip, error)
     call check_no_error(suite, "damper", error)
