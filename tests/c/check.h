@@ -24,7 +24,9 @@ static inline void check(int ok, const char *name) {
 }
 
 /* |a - b| <= rtol |b| */
-static inline int close_to(double a, double b, double rtol) { return fabs(a - b) <= rtol * fabs(b); }
+static inline int close_to(double a, double b, double rtol) {
+  return fabs(a - b) <= rtol * fabs(b);
+}
 
 /* check() of |actual - expected| <= rtol |expected|, printing both values when it fails. */
 static inline void check_close(double actual, double expected, double rtol, const char *name) {
