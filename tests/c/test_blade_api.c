@@ -9,39 +9,8 @@
 #include <string.h>
 #include <unistd.h>
 
+#include "check.h"
 #include "udmap.h"
-
-static int failures = 0, passes = 0;
-
-static void check(int ok, const char *name) {
-  if (ok) {
-    passes++;
-  } else {
-    failures++;
-    printf("FAIL %s\n", name);
-  }
-}
-
-static void check_close(double actual, double expected, double rtol, const char *name) {
-  int ok = fabs(actual - expected) <= rtol * fabs(expected);
-  if (!ok) printf("  got %.17g expected %.17g\n", actual, expected);
-  check(ok, name);
-}
-
-/* status 2 and a message containing needle */
-static void check_error(udmap_error err, int status, const char *needle, const char *name) {
-  char msg[1024];
-  udmap_get_error(err, msg, sizeof msg);
-  int ok = status == UDMAP_EINPUT && udmap_check_error(err) == UDMAP_EINPUT && strstr(msg, needle);
-  if (!ok) printf("  status %d, message '%s', expected '%s'\n", status, msg, needle);
-  check(ok, name);
-}
-
-static udmap_beam_params blade_a(void) {
-  udmap_beam_params p = {170e9, 8200.0, 0.002, 0.020, 0.008, 0.020, 0.010, 0.021,
-                         1.4e-6, 0.120, 0.004, 0.030, 8, 24};
-  return p;
-}
 
 static void write_file(const char *path, const char *text) {
   FILE *f = fopen(path, "w");
@@ -52,7 +21,7 @@ static void write_file(const char *path, const char *text) {
 int main(void) {
   udmap_error err = udmap_new_error();
   udmap_blade blade = NULL, copy = NULL, bad = NULL;
-  udmap_beam_params p = blade_a();
+  udmap_beam_params p = blade_a_beam_params();
   int status, ndof = 0, has_stress = 0;
 
   status = udmap_new_blade_beam(err, &p, &blade);
@@ -121,20 +90,20 @@ int main(void) {
   udmap_delete_blade(&copy);
 
   /* Bad beam parameters: status 2, the field named, no handle. */
-  p = blade_a();
+  p = blade_a_beam_params();
   p.neck_L = -0.02;
   status = udmap_new_blade_beam(err, &p, &bad);
   check_error(err, status, "blade.neck.L must be a positive finite number", "negative neck length");
   check(bad == NULL, "no handle after an error");
-  p = blade_a();
+  p = blade_a_beam_params();
   p.E = NAN;
   status = udmap_new_blade_beam(err, &p, &bad);
   check_error(err, status, "blade.E", "NaN Young's modulus");
-  p = blade_a();
+  p = blade_a_beam_params();
   p.airfoil_elements = 25;
   status = udmap_new_blade_beam(err, &p, &bad);
   check_error(err, status, "blade.airfoil.elements must be an even integer", "odd airfoil elements");
-  p = blade_a();
+  p = blade_a_beam_params();
   p.zeta = -1;
   status = udmap_new_blade_beam(err, &p, &bad);
   check_error(err, status, "blade.zeta", "negative zeta");
@@ -192,6 +161,5 @@ int main(void) {
   char cmd[600];
   snprintf(cmd, sizeof cmd, "rm -rf %s", dir);
   if (system(cmd) != 0) printf("note: could not remove %s\n", dir);
-  printf("%d passed, %d failed\n", passes, failures);
-  return failures ? 1 : 0;
+  return check_finish();
 }

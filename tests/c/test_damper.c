@@ -3,27 +3,15 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "check.h"
 #include "udmap.h"
-
-static int failures = 0;
-
-static void check(int ok, const char *what) {
-  if (!ok) {
-    printf("FAIL %s\n", what);
-    failures++;
-  }
-}
-
-static int close_to(double a, double b, double rtol) { return fabs(a - b) <= rtol * fabs(b); }
 
 int main(void) {
   udmap_error err = udmap_new_error();
   udmap_damper d = NULL, j = NULL, t = NULL;
   udmap_damper_info info;
   char msg[512];
-  const udmap_asymmetric_params p = {900.0, 0.3, 0.026, 0.006, 45.0, 45.0,
-                                     -6.724e-3, -1.724e-3, -1.068e-3, 3.932e-3,
-                                     3.268e-3, 1.768e-3, 60e6, 40e6, 80e6, 50e6};
+  const udmap_asymmetric_params p = blade_a_damper_params();
 
   check(udmap_new_damper_asymmetric(err, &p, &d) == UDMAP_OK && d != NULL, "create blade_a");
   check(udmap_damper_get_info(err, d, &info) == UDMAP_OK, "get info");
@@ -98,7 +86,5 @@ int main(void) {
   udmap_delete_damper(&t); /* NULL is fine */
   check(d == NULL && t == NULL, "delete sets NULL");
   udmap_delete_error(&err);
-  if (failures) printf("%d failures\n", failures);
-  else printf("all passed\n");
-  return failures != 0;
+  return check_finish();
 }

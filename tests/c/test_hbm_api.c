@@ -7,39 +7,14 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "check.h"
 #include "udmap.h"
-
-static int failures = 0, passes = 0;
-
-static void check(int ok, const char *name) {
-  if (ok) {
-    passes++;
-  } else {
-    failures++;
-    printf("FAIL %s\n", name);
-  }
-}
-
-static void check_close(double actual, double expected, double rtol, const char *name) {
-  int ok = fabs(actual - expected) <= rtol * fabs(expected);
-  if (!ok) printf("  got %.17g expected %.17g\n", actual, expected);
-  check(ok, name);
-}
-
-static void check_error(udmap_error err, int status, const char *needle, const char *name) {
-  char msg[1024];
-  udmap_get_error(err, msg, sizeof msg);
-  int ok = status == UDMAP_EINPUT && udmap_check_error(err) == UDMAP_EINPUT && strstr(msg, needle);
-  if (!ok) printf("  status %d, message '%s', expected '%s'\n", status, msg, needle);
-  check(ok, name);
-}
 
 int main(void) {
   udmap_error err = udmap_new_error();
   udmap_blade blade = NULL;
   udmap_contact jen = NULL, bad = NULL;
-  udmap_beam_params p = {170e9, 8200.0, 0.002, 0.020, 0.008, 0.020, 0.010, 0.021,
-                         1.4e-6, 0.120, 0.004, 0.030, 8, 24};
+  udmap_beam_params p = blade_a_beam_params();
   udmap_hbm_settings s, full;
   udmap_hbm_point pc, pf, p9;
   udmap_dti_settings ds;
@@ -119,6 +94,5 @@ int main(void) {
   check(jen == NULL, "delete twice");
   udmap_delete_blade(&blade);
   udmap_delete_error(&err);
-  printf("%d passed, %d failed\n", passes, failures);
-  return failures != 0;
+  return check_finish();
 }

@@ -7,16 +7,8 @@
 #include <math.h>
 #include <stdio.h>
 
+#include "check.h"
 #include "udmap.h"
-
-static int failures = 0;
-
-static void check(int ok, const char *what) {
-  if (!ok) {
-    printf("FAIL %s\n", what);
-    failures++;
-  }
-}
 
 int main(void) {
   udmap_error err = udmap_new_error();
@@ -27,12 +19,9 @@ int main(void) {
   udmap_point pts[2];
   int n = -1, jump[2] = {-1, -1};
   double gamma_c = 0, km[2], kp[2], kr[2], ki[2], g[2], F_lim = 0, F_bb = 0;
-  const udmap_asymmetric_params pa = {900.0, 0.3, 0.026, 0.006, 45.0, 45.0,
-                                      -6.724e-3, -1.724e-3, -1.068e-3, 3.932e-3,
-                                      3.268e-3, 1.768e-3, 60e6, 40e6, 80e6, 50e6};
+  const udmap_asymmetric_params pa = blade_a_damper_params();
   udmap_asymmetric_params p = pa;
-  const udmap_beam_params bp = {170e9, 8200.0, 0.002, 0.020, 0.008, 0.020, 0.010, 0.021,
-                                1.4e-6, 0.120, 0.004, 0.030, 8, 24};
+  const udmap_beam_params bp = blade_a_beam_params();
   const double F[2] = {3.5, 4.5};
 
   p.mu = 0.3639798354357481;
@@ -81,7 +70,5 @@ int main(void) {
   udmap_delete_damper(&a);
   udmap_delete_blade(&blade);
   udmap_delete_error(&err);
-  if (failures) printf("%d failures\n", failures);
-  else printf("all passed\n");
-  return failures != 0;
+  return check_finish();
 }

@@ -10,25 +10,10 @@
 #include <string.h>
 #include <unistd.h>
 
+#include "check.h"
 #include "udmap.h"
 
-static int failures = 0, passes = 0;
 static const double KT = 0.25, SLIP = 0.2, CV = 0.01;
-
-static void check(int ok, const char *name) {
-  if (ok) {
-    passes++;
-  } else {
-    failures++;
-    printf("FAIL %s\n", name);
-  }
-}
-
-static void check_close(double actual, double expected, double rtol, const char *name) {
-  int ok = fabs(actual - expected) <= rtol * fabs(expected);
-  if (!ok) printf("  got %.17g expected %.17g\n", actual, expected);
-  check(ok, name);
-}
 
 static double complex jenkins(double a) {
   double a_s = SLIP / KT, beta;
@@ -197,6 +182,5 @@ int main(void) {
   unlink(pK);
   unlink(pC);
   rmdir(dir);
-  printf("%d passed, %d failed\n", passes, failures);
-  return failures ? 1 : 0;
+  return check_finish();
 }

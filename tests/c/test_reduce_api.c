@@ -9,6 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "check.h"
 #include "udmap.h"
 
 void dsygv_(const int *itype, const char *jobz, const char *uplo, const int *n, double *a,
@@ -16,23 +17,6 @@ void dsygv_(const int *itype, const char *jobz, const char *uplo, const int *n, 
             int *info, size_t, size_t);
 void dgesv_(const int *n, const int *nrhs, double *a, const int *lda, int *ipiv, double *b,
             const int *ldb, int *info);
-
-static int failures = 0, passes = 0;
-
-static void check(int ok, const char *name) {
-  if (ok) {
-    passes++;
-  } else {
-    failures++;
-    printf("FAIL %s\n", name);
-  }
-}
-
-static void check_close(double actual, double expected, double rtol, const char *name) {
-  int ok = fabs(actual - expected) <= rtol * fabs(expected);
-  if (!ok) printf("  got %.17g expected %.17g\n", actual, expected);
-  check(ok, name);
-}
 
 #define NX 2
 #define NY 12
@@ -263,6 +247,5 @@ int main(void) {
   udmap_delete_error(&err);
   free(T); free(Kt); free(Mt); free(KT); free(MT); free(A); free(B); free(w); free(work);
   free(Mr_); free(Kr_); free(sr); free(fr);
-  printf("%d passed, %d failed\n", passes, failures);
-  return failures != 0;
+  return check_finish();
 }

@@ -1,8 +1,9 @@
 !> The plain-array API (kernel/src/api_legacy.f90): the Jenkins describing function of
 !> PHYSICS.md 2.4 through UDMAP_TABLE_ARRAYS; blade A through UDMAP_BACKBONE_ARRAYS,
 !> UDMAP_RESPONSE_ARRAYS and UDMAP_CURVE_ARRAYS against the derived-type API; every INFO code.
-program test_api_legacy
-  use testing, only: test_suite, check_close, check_true, check_no_error, finish
+module test_api_legacy
+  use testing, only: test_suite, check_close, check_true, check_no_error, unittest_type, &
+    & new_unittest
   use udmap, only: wp, error_type, beam_params_type, blade_type, new_beam_blade, &
     & asymmetric_params_type, damper_type, new_asymmetric_damper, analysis_type, model_type, &
     & point_type, curve_type, new_model, limit_force, backbone, response, response_curves, &
@@ -11,7 +12,9 @@ program test_api_legacy
     & UDMAP_EPHYSICS
   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
   implicit none
-  type(test_suite) :: suite
+  private
+  public :: collect_api_legacy
+
   real(wp), parameter :: beam_a(14) = [170e9_wp, 8200.0_wp, 0.002_wp, 0.020_wp, 0.008_wp, &
     & 0.020_wp, 0.010_wp, 0.021_wp, 1.4e-6_wp, 0.120_wp, 0.004_wp, 0.030_wp, 8.0_wp, 24.0_wp]
   real(wp), parameter :: damper_a(16) = [900.0_wp, 0.3_wp, 0.026_wp, 0.006_wp, 45.0_wp, &
@@ -20,15 +23,20 @@ program test_api_legacy
   real(wp), parameter :: band(2) = [150.0_wp, 230.0_wp]
   real(wp), parameter :: forces(3) = [1.0_wp, 2.0_wp, 5.0_wp]
 
-  call version_numbers()
-  call jenkins_table()
-  call blade_a_against_module_api()
-  call info_codes()
-  call finish(suite)
-
 contains
 
-  subroutine version_numbers()
+  !> The plain-array API (kernel/src/api_legacy.f90).
+  subroutine collect_api_legacy(testsuite)
+    type(unittest_type), allocatable, intent(out) :: testsuite(:)
+    testsuite = [new_unittest("version_numbers", version_numbers), &
+      & new_unittest("jenkins_table", jenkins_table), &
+      & new_unittest("blade_a_against_module_api", blade_a_against_module_api), &
+      & new_unittest("info_codes", info_codes)]
+  end subroutine collect_api_legacy
+
+  !> The version numbers of the plain-array API are the module's.
+  subroutine version_numbers(suite)
+    type(test_suite), intent(inout) :: suite
     integer :: major, minor, patch
     call udmap_version_numbers(major, minor, patch)
     call check_true(suite, "version numbers", major == udmap_version_major .and. &
@@ -36,7 +44,8 @@ contains
   end subroutine version_numbers
 
   !> PHYSICS.md 2.4: kt = 2, M_slip = 3 at a = 1.6, 2, 5 (six digits given); a = 1 is stuck.
-  subroutine jenkins_table()
+  subroutine jenkins_table(suite)
+    type(test_suite), intent(inout) :: suite
     real(wp) :: gamma(4), k_re(4), k_im(4), base(6)
     integer :: info
     gamma = [1.0_wp, 1.6_wp, 2.0_wp, 5.0_wp]
@@ -57,7 +66,8 @@ contains
   end subroutine jenkins_table
 
   !> The arrays give what the derived-type API gives for the same blade and damper.
-  subroutine blade_a_against_module_api()
+  subroutine blade_a_against_module_api(suite)
+    type(test_suite), intent(inout) :: suite
     type(beam_params_type) :: bp
     type(asymmetric_params_type) :: ap
     type(analysis_type) :: analysis
@@ -143,7 +153,8 @@ contains
   end subroutine blade_a_against_module_api
 
   !> INFO = -i names the argument; 3 for a physics failure; outputs zero.
-  subroutine info_codes()
+  subroutine info_codes(suite)
+    type(test_suite), intent(inout) :: suite
     real(wp) :: beam(14), damper(16), gamma_P(3), f_res(3), sigma_a(3), u_E(3), F_lim
     real(wp) :: k_re(1), k_im(1), base(6), nan
     integer :: regime(3), info
@@ -253,4 +264,4 @@ contains
     call check_true(suite, "zeta = 0 above F_lim: REGIME = 4, zeros", all(regime(2:3) == 4) &
       & .and. all(gamma_P(2:3) == 0) .and. all(sigma_a(2:3) == 0))
   end subroutine info_codes
-end program test_api_legacy
+end module test_api_legacy

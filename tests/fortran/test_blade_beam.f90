@@ -1,41 +1,37 @@
 !> The built-in beam blade (PHYSICS.md 1.1): blade A's DOF layout and bare first frequency, the
 !> airfoil as a clamped cantilever (closed form), convergence under mesh refinement (O(h^4) for
 !> cubic Hermite elements) and validation of every parameter.
-program test_blade_beam
+module test_blade_beam
   use udmap_kinds, only: wp, pi
   use udmap_error, only: error_type, UDMAP_EINPUT
   use udmap_beam, only: beam_params_type
   use udmap_blade, only: blade_type, new_beam_blade, new_matrices_blade
-  use testing, only: test_suite, check_close, check_true, check_no_error, check_error, finish
+  use fixtures, only: blade_a_beam_params, ieee_nan, ieee_inf
+  use testing, only: test_suite, check_close, check_true, check_no_error, check_error, &
+    & unittest_type, new_unittest
   implicit none
-  type(test_suite) :: suite
-  type(beam_params_type) :: a
-
-  a = blade_a()
-  call layout_and_first_frequency()
-  call cantilever_airfoil()
-  call mesh_convergence()
-  call bad_parameters()
-  call finish(suite)
+  private
+  public :: collect_blade_beam
 
 contains
 
-  !> blade_a.json
-  function blade_a() result(p)
-    type(beam_params_type) :: p
-    p = beam_params_type(E=170e9_wp, rho=8200.0_wp, zeta=0.002_wp, &
-      & neck_L=0.020_wp, neck_h=0.008_wp, neck_b=0.020_wp, &
-      & platform_L=0.010_wp, platform_m=0.021_wp, platform_J=1.4e-6_wp, &
-      & airfoil_L=0.120_wp, airfoil_h=0.004_wp, airfoil_b=0.030_wp, &
-      & neck_elements=8, airfoil_elements=24)
-  end function blade_a
+  !> The built-in beam blade (PHYSICS.md 1.1).
+  subroutine collect_blade_beam(testsuite)
+    type(unittest_type), allocatable, intent(out) :: testsuite(:)
+    testsuite = [new_unittest("layout_and_first_frequency", layout_and_first_frequency), &
+      & new_unittest("cantilever_airfoil", cantilever_airfoil), &
+      & new_unittest("mesh_convergence", mesh_convergence), &
+      & new_unittest("bad_parameters", bad_parameters)]
+  end subroutine collect_blade_beam
 
-  subroutine layout_and_first_frequency()
+  !> Blade A's DOF layout, band storage and bare first frequency (187.119057 Hz).
+  subroutine layout_and_first_frequency(suite)
+    type(test_suite), intent(inout) :: suite
     type(blade_type) :: b
     type(error_type), allocatable :: error
     real(wp) :: f(3), q(64)
     integer :: i, j
-    call new_beam_blade(b, a, error)
+    call new_beam_blade(b, blade_a_beam_params(), error)
     call check_no_error(suite, "blade A builds", error)
     if (allocated(error)) return
     call check_true(suite, "blade A has 64 DOFs", b%ndof == 64)
@@ -94,10 +90,13 @@ contains
 
   !> Platform DOFs held fixed: the airfoil alone is a clamped cantilever. The reduced problem
   !> keeps the rows and columns of the airfoil nodes (DOFs 17..64) of blade A's K and M.
-  subroutine cantilever_airfoil()
+  subroutine cantilever_airfoil(suite)
+    type(test_suite), intent(inout) :: suite
+    type(beam_params_type) :: a
     type(blade_type) :: b, c
     type(error_type), allocatable :: error
     real(wp) :: f1, ei, ra, exact
+    a = blade_a_beam_params()
     call new_beam_blade(b, a, error)
     if (allocated(error)) return
     call new_matrices_blade(c, b%M(17:64, 17:64), b%K(17:64, 17:64), 1, 2, 0.0_wp, error)
@@ -119,14 +118,15 @@ contains
   !> f1 of blade A with 2, 4, 8, 16 airfoil elements against 2048 elements (large banded model):
   !> frequencies decrease monotonically (nested conforming meshes) and the error falls by ~16
   !> per halving (O(h^4)); 24 elements are within 1e-7 of the fine mesh.
-  subroutine mesh_convergence()
+  subroutine mesh_convergence(suite)
+    type(test_suite), intent(inout) :: suite
     type(blade_type) :: b
     type(error_type), allocatable :: error
     type(beam_params_type) :: p
     real(wp) :: f(5), fine
     integer :: k
     integer, parameter :: ne(5) = [2, 4, 8, 16, 24]
-    p = a
+    p = blade_a_beam_params()
     p%airfoil_elements = 2048
     call new_beam_blade(b, p, error)
     call check_no_error(suite, "2048-element airfoil builds", error)
@@ -148,11 +148,14 @@ contains
     call check_close(suite, "24 elements within 1e-7 of 2048", f(5), fine, 1.0e-7_wp)
   end subroutine mesh_convergence
 
-  subroutine bad_parameters()
+  !> Every beam parameter is validated with a message naming the field.
+  subroutine bad_parameters(suite)
+    type(test_suite), intent(inout) :: suite
+    type(beam_params_type) :: a, p
     type(blade_type) :: b
     type(error_type), allocatable :: error
-    type(beam_params_type) :: p
     real(wp) :: nan
+    a = blade_a_beam_params()
     nan = ieee_nan()
     p = a; p%neck_L = -0.02_wp
     call new_beam_blade(b, p, error)
@@ -210,16 +213,4 @@ contains
     call check_true(suite, "coarsest beam: 6 DOFs, gamma 2, E 3", b%ndof == 6 .and. b%gamma_dof == 2 &
       & .and. b%exc_dof == 3)
   end subroutine bad_parameters
-
-  function ieee_inf() result(x)
-    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_positive_inf
-    real(wp) :: x
-    x = ieee_value(x, ieee_positive_inf)
-  end function ieee_inf
-
-  function ieee_nan() result(x)
-    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
-    real(wp) :: x
-    x = ieee_value(x, ieee_quiet_nan)
-  end function ieee_nan
-end program test_blade_beam
+end module test_blade_beam

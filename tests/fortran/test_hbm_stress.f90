@@ -4,7 +4,7 @@
 !> stiffness ratios kt/k 1e-3..1e3; slip moments over 12 decades; forces below, at and above
 !> the limit force F_lim = 2 Delta_M/pi (zeta = 0); a band without resonance; amplitudes
 !> 1e-12..1 rad in the AFT; non-finite inputs.
-program test_hbm_stress
+module test_hbm_stress
   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_positive_inf
   use udmap_kinds, only: wp, pi
   use udmap_error, only: error_type, UDMAP_EINPUT, UDMAP_EPHYSICS, UDMAP_ENUMERIC
@@ -13,124 +13,135 @@ program test_hbm_stress
   use udmap_aft, only: aft_workspace_type, aft_moment
   use udmap_hbm, only: hbm_settings_type, hbm_point_type, hbm_peak, hbm_response
   use udmap_newmark, only: dti_settings_type, dti_point_type, dti_response
-  use testing, only: test_suite, check_true, check_error, finish
+  use fixtures, only: ieee_nan
+  use testing, only: test_suite, check_true, check_error, unittest_type, new_unittest
   implicit none
-  type(test_suite) :: suite
-  type(structure_type) :: st
-  type(jenkins_element_type) :: jen
-  type(error_type), allocatable :: error
-  type(aft_workspace_type) :: ws
-  type(hbm_settings_type) :: set
-  type(hbm_point_type) :: pt
-  type(dti_settings_type) :: dset
-  type(dti_point_type) :: dp
-  real(wp), parameter :: zetas(3) = [0.0_wp, 1.0e-5_wp, 5.0e-3_wp]
-  real(wp), parameter :: ratios(4) = [1.0e-3_wp, 1.0_wp, 30.0_wp, 1.0e3_wp]
-  real(wp), parameter :: slips(3) = [1.0e-10_wp, 1.0e-2_wp, 1.0e2_wp]
-  real(wp), parameter :: frac(4) = [0.3_wp, 0.99_wp, 1.0_wp, 1.5_wp]
-  real(wp) :: M0, gmax, Flim, F, f_lo, f_hi, kt
-  complex(wp) :: M(3), G(3)
-  integer :: iz, ir, is, jf, ig, nok, nerr
-  character(len=80) :: tag
-  logical :: fine
+  private
+  public :: collect_hbm_stress
 
-  nok = 0
-  nerr = 0
-  ! AFT over amplitudes 1e-12..1 rad and slip limits over 12 decades
-  do ir = 1, size(ratios)
-    do is = 1, size(slips)
-      call new_jenkins_element(jen, ratios(ir), slips(is), error)
-      do ig = -12, 0, 2
-        G = [cmplx(10.0_wp**ig, 0.0_wp, wp), (0.0_wp, 0.0_wp), cmplx(0.0_wp, 0.3_wp*10.0_wp**ig, wp)]
-        call aft_moment(jen, ws, 0.0_wp, G, 0, 1, 8, 1.0e-12_wp, M0, M, error, gmax)
-        write(tag, '(a, 2es9.1, i4)') "aft kt, M_slip, log gamma", ratios(ir), slips(is), ig
-        call check_true(suite, trim(tag)//" finite", .not.allocated(error) .and. &
-          & all(abs(M) <= huge(1.0_wp)) .and. abs(M0) <= huge(1.0_wp) .and. gmax > 0.0_wp)
-        ! passivity: the first harmonic never generates energy
-        call check_true(suite, trim(tag)//" dissipative", aimag(M(1)*conjg(G(1))) >= &
-          & -1.0e-12_wp*abs(M(1))*abs(G(1)))
-      end do
-    end do
-  end do
-  call new_jenkins_element(jen, 1.0_wp, 1.0_wp, error)
-  G = [cmplx(ieee_value(1.0_wp, ieee_positive_inf), 0.0_wp, wp), (0.0_wp, 0.0_wp), &
-    & (0.0_wp, 0.0_wp)]
-  call aft_moment(jen, ws, 0.0_wp, G, 0, 1, 8, 1.0e-12_wp, M0, M, error)
-  call check_error(suite, "aft infinite amplitude", error, UDMAP_EINPUT, "not finite")
+contains
 
-  ! standard method and time integration over damping, stiffness ratio, slip limit and force
-  set%ds_max = 0.3_wp
-  dset%steps_per_period = 64
-  dset%max_periods = 4000
-  do iz = 1, size(zetas)
-    call new_structure(st, reshape([1.0_wp], [1,1]), reshape([1.0_wp], [1,1]), &
-      & reshape([2.0_wp*zetas(iz)], [1,1]), 1, 1, error)
+  !> Extreme inputs to the standard method, AFT and time integration.
+  subroutine collect_hbm_stress(testsuite)
+    type(unittest_type), allocatable, intent(out) :: testsuite(:)
+    testsuite = [new_unittest("hbm_stress", run_hbm_stress)]
+  end subroutine collect_hbm_stress
+
+  !> Extreme but legal inputs give finite numbers or a clear error, never NaN or a hang.
+  subroutine run_hbm_stress(suite)
+    type(test_suite), intent(inout) :: suite
+    type(structure_type) :: st
+    type(jenkins_element_type) :: jen
+    type(error_type), allocatable :: error
+    type(aft_workspace_type) :: ws
+    type(hbm_settings_type) :: set
+    type(hbm_point_type) :: pt
+    type(dti_settings_type) :: dset
+    type(dti_point_type) :: dp
+    real(wp), parameter :: zetas(3) = [0.0_wp, 1.0e-5_wp, 5.0e-3_wp]
+    real(wp), parameter :: ratios(4) = [1.0e-3_wp, 1.0_wp, 30.0_wp, 1.0e3_wp]
+    real(wp), parameter :: slips(3) = [1.0e-10_wp, 1.0e-2_wp, 1.0e2_wp]
+    real(wp), parameter :: frac(4) = [0.3_wp, 0.99_wp, 1.0_wp, 1.5_wp]
+    real(wp) :: M0, gmax, Flim, F, f_lo, f_hi, kt
+    complex(wp) :: M(3), G(3)
+    integer :: iz, ir, is, jf, ig, nok, nerr
+    character(len=80) :: tag
+    logical :: fine
+
+    nok = 0
+    nerr = 0
+    ! AFT over amplitudes 1e-12..1 rad and slip limits over 12 decades
     do ir = 1, size(ratios)
-      kt = ratios(ir)
-      f_lo = 0.5_wp/(2.0_wp*pi)
-      f_hi = 2.0_wp*sqrt(1.0_wp + kt)/(2.0_wp*pi)
       do is = 1, size(slips)
-        call new_jenkins_element(jen, kt, slips(is), error)
-        Flim = 4.0_wp*slips(is)/pi
-        do jf = 1, size(frac)
-          F = frac(jf)*Flim
-          write(tag, '(a, es8.1, a, es8.1, a, es8.1, a, f5.2)') "zeta", zetas(iz), " kt", kt, &
-            & " M_slip", slips(is), " F/F_lim", frac(jf)
-          call hbm_peak(st, jen, f_lo, f_hi, F, set, pt, error)
-          call account(trim(tag)//" hbm", pt%gamma_P, pt%f_res)
-          ! time integration at the stuck resonance frequency, a few hundred periods at most
-          call dti_response(st, jen, sqrt(1.0_wp + kt)/(2.0_wp*pi)*1.01_wp, F, dset, dp, error)
-          call account(trim(tag)//" dti", dp%gamma_1, dp%f)
+        call new_jenkins_element(jen, ratios(ir), slips(is), error)
+        do ig = -12, 0, 2
+          G = [cmplx(10.0_wp**ig, 0.0_wp, wp), (0.0_wp, 0.0_wp), cmplx(0.0_wp, 0.3_wp*10.0_wp**ig, wp)]
+          call aft_moment(jen, ws, 0.0_wp, G, 0, 1, 8, 1.0e-12_wp, M0, M, error, gmax)
+          write(tag, '(a, 2es9.1, i4)') "aft kt, M_slip, log gamma", ratios(ir), slips(is), ig
+          call check_true(suite, trim(tag)//" finite", .not.allocated(error) .and. &
+            & all(abs(M) <= huge(1.0_wp)) .and. abs(M0) <= huge(1.0_wp) .and. gmax > 0.0_wp)
+          ! passivity: the first harmonic never generates energy
+          call check_true(suite, trim(tag)//" dissipative", aimag(M(1)*conjg(G(1))) >= &
+            & -1.0e-12_wp*abs(M(1))*abs(G(1)))
         end do
       end do
     end do
-  end do
-  call check_true(suite, "some calls succeed", nok > 0)
+    call new_jenkins_element(jen, 1.0_wp, 1.0_wp, error)
+    G = [cmplx(ieee_value(1.0_wp, ieee_positive_inf), 0.0_wp, wp), (0.0_wp, 0.0_wp), &
+      & (0.0_wp, 0.0_wp)]
+    call aft_moment(jen, ws, 0.0_wp, G, 0, 1, 8, 1.0e-12_wp, M0, M, error)
+    call check_error(suite, "aft infinite amplitude", error, UDMAP_EINPUT, "not finite")
 
-  ! a band without resonance; non-finite and invalid inputs
-  call new_structure(st, reshape([1.0_wp], [1,1]), reshape([1.0_wp], [1,1]), &
-    & reshape([0.01_wp], [1,1]), 1, 1, error)
-  call new_jenkins_element(jen, 0.25_wp, 0.2_wp, error)
-  call hbm_peak(st, jen, 2.0_wp, 3.0_wp, 0.1_wp, set, pt, error)
-  call check_error(suite, "band without resonance", error, UDMAP_EPHYSICS, "no resonance")
-  call hbm_peak(st, jen, 0.1_wp, 0.3_wp, ieee_nan(), set, pt, error)
-  call check_error(suite, "NaN force", error, UDMAP_EINPUT, "F_E")
-  call hbm_peak(st, jen, 0.3_wp, 0.1_wp, 0.1_wp, set, pt, error)
-  call check_error(suite, "inverted band", error, UDMAP_EINPUT, "f_min")
-  call dti_response(st, jen, ieee_nan(), 0.1_wp, dset, dp, error)
-  call check_error(suite, "NaN frequency", error, UDMAP_EINPUT, "frequency")
-  call new_jenkins_element(jen, -1.0_wp, 0.2_wp, error)
-  call check_error(suite, "negative kt", error, UDMAP_EINPUT, "kt")
-  call new_structure(st, reshape([1.0_wp], [1,1]), reshape([ieee_nan()], [1,1]), &
-    & reshape([0.01_wp], [1,1]), 1, 1, error)
-  call check_error(suite, "NaN stiffness", error, UDMAP_EINPUT, "non-finite")
-  ! near-singular: a nearly massless, nearly rigid-body DOF pair
-  call new_structure(st, reshape([1.0_wp, 0.0_wp, 0.0_wp, 1.0e-12_wp], [2,2]), &
-    & reshape([1.0_wp + 1.0e-9_wp, -1.0_wp, -1.0_wp, 1.0_wp], [2,2]), &
-    & reshape([1.0e-3_wp, 0.0_wp, 0.0_wp, 0.0_wp], [2,2]), 1, 2, error)
-  call new_jenkins_element(jen, 1.0e-6_wp, 1.0e-6_wp, error)
-  call hbm_peak(st, jen, 1.0e-6_wp, 1.0e-2_wp, 1.0e-6_wp, set, pt, error)
-  call account("near-singular hbm", pt%gamma_P, pt%f_res)
-  call finish(suite)
-contains
-  !> A call either succeeded with finite, non-negative outputs, or failed with a message.
-  subroutine account(name, a, b)
-    character(len=*), intent(in) :: name
-    real(wp), intent(in) :: a, b
-    if (allocated(error)) then
-      fine = (error%stat == UDMAP_EINPUT .or. error%stat == UDMAP_EPHYSICS .or. &
-        & error%stat == UDMAP_ENUMERIC) .and. len_trim(error%message) > 0
-      nerr = nerr + 1
-      deallocate(error)
-    else
-      fine = a >= 0.0_wp .and. a <= huge(1.0_wp) .and. b >= 0.0_wp .and. b <= huge(1.0_wp)
-      nok = nok + 1
-    end if
-    call check_true(suite, name, fine)
-  end subroutine account
-  function ieee_nan() result(x)
-    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
-    real(wp) :: x
-    x = ieee_value(1.0_wp, ieee_quiet_nan)
-  end function ieee_nan
-end program test_hbm_stress
+    ! standard method and time integration over damping, stiffness ratio, slip limit and force
+    set%ds_max = 0.3_wp
+    dset%steps_per_period = 64
+    dset%max_periods = 4000
+    do iz = 1, size(zetas)
+      call new_structure(st, reshape([1.0_wp], [1,1]), reshape([1.0_wp], [1,1]), &
+        & reshape([2.0_wp*zetas(iz)], [1,1]), 1, 1, error)
+      do ir = 1, size(ratios)
+        kt = ratios(ir)
+        f_lo = 0.5_wp/(2.0_wp*pi)
+        f_hi = 2.0_wp*sqrt(1.0_wp + kt)/(2.0_wp*pi)
+        do is = 1, size(slips)
+          call new_jenkins_element(jen, kt, slips(is), error)
+          Flim = 4.0_wp*slips(is)/pi
+          do jf = 1, size(frac)
+            F = frac(jf)*Flim
+            write(tag, '(a, es8.1, a, es8.1, a, es8.1, a, f5.2)') "zeta", zetas(iz), " kt", kt, &
+              & " M_slip", slips(is), " F/F_lim", frac(jf)
+            call hbm_peak(st, jen, f_lo, f_hi, F, set, pt, error)
+            call account(trim(tag)//" hbm", pt%gamma_P, pt%f_res)
+            ! time integration at the stuck resonance frequency, a few hundred periods at most
+            call dti_response(st, jen, sqrt(1.0_wp + kt)/(2.0_wp*pi)*1.01_wp, F, dset, dp, error)
+            call account(trim(tag)//" dti", dp%gamma_1, dp%f)
+          end do
+        end do
+      end do
+    end do
+    call check_true(suite, "some calls succeed", nok > 0)
+
+    ! a band without resonance; non-finite and invalid inputs
+    call new_structure(st, reshape([1.0_wp], [1,1]), reshape([1.0_wp], [1,1]), &
+      & reshape([0.01_wp], [1,1]), 1, 1, error)
+    call new_jenkins_element(jen, 0.25_wp, 0.2_wp, error)
+    call hbm_peak(st, jen, 2.0_wp, 3.0_wp, 0.1_wp, set, pt, error)
+    call check_error(suite, "band without resonance", error, UDMAP_EPHYSICS, "no resonance")
+    call hbm_peak(st, jen, 0.1_wp, 0.3_wp, ieee_nan(), set, pt, error)
+    call check_error(suite, "NaN force", error, UDMAP_EINPUT, "F_E")
+    call hbm_peak(st, jen, 0.3_wp, 0.1_wp, 0.1_wp, set, pt, error)
+    call check_error(suite, "inverted band", error, UDMAP_EINPUT, "f_min")
+    call dti_response(st, jen, ieee_nan(), 0.1_wp, dset, dp, error)
+    call check_error(suite, "NaN frequency", error, UDMAP_EINPUT, "frequency")
+    call new_jenkins_element(jen, -1.0_wp, 0.2_wp, error)
+    call check_error(suite, "negative kt", error, UDMAP_EINPUT, "kt")
+    call new_structure(st, reshape([1.0_wp], [1,1]), reshape([ieee_nan()], [1,1]), &
+      & reshape([0.01_wp], [1,1]), 1, 1, error)
+    call check_error(suite, "NaN stiffness", error, UDMAP_EINPUT, "non-finite")
+    ! near-singular: a nearly massless, nearly rigid-body DOF pair
+    call new_structure(st, reshape([1.0_wp, 0.0_wp, 0.0_wp, 1.0e-12_wp], [2,2]), &
+      & reshape([1.0_wp + 1.0e-9_wp, -1.0_wp, -1.0_wp, 1.0_wp], [2,2]), &
+      & reshape([1.0e-3_wp, 0.0_wp, 0.0_wp, 0.0_wp], [2,2]), 1, 2, error)
+    call new_jenkins_element(jen, 1.0e-6_wp, 1.0e-6_wp, error)
+    call hbm_peak(st, jen, 1.0e-6_wp, 1.0e-2_wp, 1.0e-6_wp, set, pt, error)
+    call account("near-singular hbm", pt%gamma_P, pt%f_res)
+
+  contains
+
+    !> A call either succeeded with finite, non-negative outputs, or failed with a message.
+    subroutine account(name, a, b)
+      character(len=*), intent(in) :: name
+      real(wp), intent(in) :: a, b
+      if (allocated(error)) then
+        fine = (error%stat == UDMAP_EINPUT .or. error%stat == UDMAP_EPHYSICS .or. &
+          & error%stat == UDMAP_ENUMERIC) .and. len_trim(error%message) > 0
+        nerr = nerr + 1
+        deallocate(error)
+      else
+        fine = a >= 0.0_wp .and. a <= huge(1.0_wp) .and. b >= 0.0_wp .and. b <= huge(1.0_wp)
+        nok = nok + 1
+      end if
+      call check_true(suite, name, fine)
+    end subroutine account
+  end subroutine run_hbm_stress
+end module test_hbm_stress

@@ -2,7 +2,7 @@
 !> blade A over extreme but legal damper parameters (mu 1e-4..2, CF 1e-3..1e5 N, contact
 !> stiffnesses scaled by 1e-3..1e3), amplitudes 1e-12..1 rad in the AFT, zeta 0 and 1e-5, and
 !> forces around the limit force: every call returns finite numbers or a clear error.
-program test_hbm_stress_contact
+module test_hbm_stress_contact
   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
   use udmap_kinds, only: wp
   use udmap_error, only: error_type, UDMAP_EINPUT, UDMAP_EPHYSICS, UDMAP_ENUMERIC
@@ -14,110 +14,123 @@ program test_hbm_stress_contact
   use udmap_aft, only: aft_workspace_type, aft_moment
   use udmap_hbm, only: hbm_settings_type, hbm_point_type, hbm_peak
   use udmap_newmark, only: dti_settings_type, dti_point_type, dti_response
-  use testing, only: test_suite, check_true, check_error, finish
+  use fixtures, only: blade_a_beam_params
+  use testing, only: test_suite, check_true, check_error, unittest_type, new_unittest
   implicit none
-  type(test_suite) :: suite
-  type(beam_params_type) :: bp
-  type(blade_type) :: blade
-  type(structure_type) :: st
-  type(asymmetric_params_type) :: par
-  type(contact_element_type) :: el
-  type(error_type), allocatable :: error
-  type(aft_workspace_type) :: ws
-  type(hbm_settings_type) :: set
-  type(hbm_point_type) :: pt
-  type(dti_settings_type) :: dset
-  type(dti_point_type) :: dp
-  real(wp), parameter :: mus(3) = [1.0e-4_wp, 0.3_wp, 2.0_wp]
-  real(wp), parameter :: CFs(3) = [1.0e-3_wp, 900.0_wp, 1.0e5_wp]
-  real(wp), parameter :: kscale(3) = [1.0e-3_wp, 1.0_wp, 1.0e3_wp]
-  real(wp), parameter :: zetas(2) = [0.0_wp, 1.0e-5_wp]
-  real(wp), parameter :: fracs(3) = [0.99_wp, 1.0_wp, 1.01_wp]
-  real(wp) :: M0, gmax, Flim
-  complex(wp) :: G(3), M(3)
-  integer :: im, ic, ik, ig, iz, jf
-  character(len=96) :: tag
+  private
+  public :: collect_hbm_stress_contact
 
-  bp = beam_params_type(E=170e9_wp, rho=8200.0_wp, zeta=0.002_wp, neck_L=0.020_wp, &
-    & neck_h=0.008_wp, neck_b=0.020_wp, platform_L=0.010_wp, platform_m=0.021_wp, &
-    & platform_J=1.4e-6_wp, airfoil_L=0.120_wp, airfoil_h=0.004_wp, airfoil_b=0.030_wp, &
-    & neck_elements=8, airfoil_elements=24)
-  call new_beam_blade(blade, bp, error)
-  call structure_from_blade(st, blade, error)
-  set%ds_max = 0.3_wp
-  dset%steps_per_period = 64
-  dset%max_periods = 300
-  dset%min_periods = 5
+contains
 
-  ! damper parameter sweep: AFT over amplitudes, then the standard method on blade A
-  do im = 1, size(mus)
-    do ic = 1, size(CFs)
-      do ik = 1, size(kscale)
-        par = blade_a_damper_params()
-        par%mu = mus(im)
-        par%CF = CFs(ic)
-        par%kn_flat = par%kn_flat*kscale(ik)
-        par%kt_flat = par%kt_flat*kscale(ik)
-        par%kn_curved = par%kn_curved*kscale(ik)
-        par%kt_curved = par%kt_curved*kscale(ik)
-        write(tag, '(a, es8.1, a, es8.1, a, es8.1)') "mu", mus(im), " CF", CFs(ic), " k x", &
-          & kscale(ik)
-        call new_contact_element(el, par, error)
-        call account(trim(tag)//" element", el%k_stuck, 1.0_wp)
-        if (el%k_stuck <= 0.0_wp) cycle
-        do ig = -12, 0, 3
-          G = [cmplx(10.0_wp**ig, 0.0_wp, wp), (0.0_wp, 0.0_wp), &
-            & cmplx(0.0_wp, 0.2_wp*10.0_wp**ig, wp)]
-          call aft_moment(el, ws, 0.0_wp, G, 0, 1, 8, 1.0e-12_wp, M0, M, error, gmax)
-          call account(trim(tag)//" aft", abs(M(1)) + abs(M(3)) + abs(M0), gmax)
-        end do
-        ! force scaled with the slip moments, about mu CF times a lever arm of a few mm
-        call hbm_peak(st, el, 150.0_wp, 230.0_wp, 1.0e-2_wp*par%mu*par%CF, set, pt, error)
-        call account(trim(tag)//" hbm", pt%gamma_P, pt%f_res)
-      end do
-    end do
-  end do
+  !> Extreme damper parameters (mu, CF, contact stiffness) on blade A.
+  subroutine collect_hbm_stress_contact(testsuite)
+    type(unittest_type), allocatable, intent(out) :: testsuite(:)
+    testsuite = [new_unittest("hbm_stress_contact", run_hbm_stress_contact)]
+  end subroutine collect_hbm_stress_contact
 
-  ! blade A damping 0 and 1e-5, forces just below, at and above the limit force
-  do iz = 1, size(zetas)
-    bp%zeta = zetas(iz)
+  !> Extreme asymmetric damper parameters on blade A: finite results or a clear error.
+  subroutine run_hbm_stress_contact(suite)
+    type(test_suite), intent(inout) :: suite
+    type(beam_params_type) :: bp
+    type(blade_type) :: blade
+    type(structure_type) :: st
+    type(asymmetric_params_type) :: par
+    type(contact_element_type) :: el
+    type(error_type), allocatable :: error
+    type(aft_workspace_type) :: ws
+    type(hbm_settings_type) :: set
+    type(hbm_point_type) :: pt
+    type(dti_settings_type) :: dset
+    type(dti_point_type) :: dp
+    real(wp), parameter :: mus(3) = [1.0e-4_wp, 0.3_wp, 2.0_wp]
+    real(wp), parameter :: CFs(3) = [1.0e-3_wp, 900.0_wp, 1.0e5_wp]
+    real(wp), parameter :: kscale(3) = [1.0e-3_wp, 1.0_wp, 1.0e3_wp]
+    real(wp), parameter :: zetas(2) = [0.0_wp, 1.0e-5_wp]
+    real(wp), parameter :: fracs(3) = [0.99_wp, 1.0_wp, 1.01_wp]
+    real(wp) :: M0, gmax, Flim
+    complex(wp) :: G(3), M(3)
+    integer :: im, ic, ik, ig, iz, jf
+    character(len=96) :: tag
+
+    bp = blade_a_beam_params()
     call new_beam_blade(blade, bp, error)
     call structure_from_blade(st, blade, error)
-    call new_contact_element(el, blade_a_damper_params(), error)
-    ! F_lim of blade A's damper (measured by the backbone): 21.677 N
-    Flim = 21.677454956969921_wp
-    do jf = 1, 3
-      write(tag, '(a, es8.1, a, f6.3)') "zeta", zetas(iz), " F/F_lim", fracs(jf)
-      call hbm_peak(st, el, 150.0_wp, 230.0_wp, Flim*fracs(jf), set, pt, &
-        & error)
-      call account(trim(tag)//" hbm", pt%gamma_P, pt%f_res)
-      call dti_response(st, el, 190.0_wp, Flim*fracs(jf), dset, dp, error)
-      call account(trim(tag)//" dti", dp%gamma_1, dp%f)
-    end do
-  end do
+    set%ds_max = 0.3_wp
+    dset%steps_per_period = 64
+    dset%max_periods = 300
+    dset%min_periods = 5
 
-  ! invalid damper parameters are rejected with the field's name
-  par = blade_a_damper_params()
-  par%mu = -1.0_wp
-  call new_contact_element(el, par, error)
-  call check_error(suite, "negative mu", error, UDMAP_EINPUT, "mu")
-  par = blade_a_damper_params()
-  par%CF = ieee_value(1.0_wp, ieee_quiet_nan)
-  call new_contact_element(el, par, error)
-  call check_error(suite, "NaN CF", error, UDMAP_EINPUT, "CF")
-  call finish(suite)
-contains
-  subroutine account(name, a, b)
-    character(len=*), intent(in) :: name
-    real(wp), intent(in) :: a, b
-    logical :: fine
-    if (allocated(error)) then
-      fine = (error%stat == UDMAP_EINPUT .or. error%stat == UDMAP_EPHYSICS .or. &
-        & error%stat == UDMAP_ENUMERIC) .and. len_trim(error%message) > 0
-      deallocate(error)
-    else
-      fine = a >= 0.0_wp .and. a <= huge(1.0_wp) .and. b >= 0.0_wp .and. b <= huge(1.0_wp)
-    end if
-    call check_true(suite, name, fine)
-  end subroutine account
-end program test_hbm_stress_contact
+    ! damper parameter sweep: AFT over amplitudes, then the standard method on blade A
+    do im = 1, size(mus)
+      do ic = 1, size(CFs)
+        do ik = 1, size(kscale)
+          par = blade_a_damper_params()
+          par%mu = mus(im)
+          par%CF = CFs(ic)
+          par%kn_flat = par%kn_flat*kscale(ik)
+          par%kt_flat = par%kt_flat*kscale(ik)
+          par%kn_curved = par%kn_curved*kscale(ik)
+          par%kt_curved = par%kt_curved*kscale(ik)
+          write(tag, '(a, es8.1, a, es8.1, a, es8.1)') "mu", mus(im), " CF", CFs(ic), " k x", &
+            & kscale(ik)
+          call new_contact_element(el, par, error)
+          call account(trim(tag)//" element", el%k_stuck, 1.0_wp)
+          if (el%k_stuck <= 0.0_wp) cycle
+          do ig = -12, 0, 3
+            G = [cmplx(10.0_wp**ig, 0.0_wp, wp), (0.0_wp, 0.0_wp), &
+              & cmplx(0.0_wp, 0.2_wp*10.0_wp**ig, wp)]
+            call aft_moment(el, ws, 0.0_wp, G, 0, 1, 8, 1.0e-12_wp, M0, M, error, gmax)
+            call account(trim(tag)//" aft", abs(M(1)) + abs(M(3)) + abs(M0), gmax)
+          end do
+          ! force scaled with the slip moments, about mu CF times a lever arm of a few mm
+          call hbm_peak(st, el, 150.0_wp, 230.0_wp, 1.0e-2_wp*par%mu*par%CF, set, pt, error)
+          call account(trim(tag)//" hbm", pt%gamma_P, pt%f_res)
+        end do
+      end do
+    end do
+
+    ! blade A damping 0 and 1e-5, forces just below, at and above the limit force
+    do iz = 1, size(zetas)
+      bp%zeta = zetas(iz)
+      call new_beam_blade(blade, bp, error)
+      call structure_from_blade(st, blade, error)
+      call new_contact_element(el, blade_a_damper_params(), error)
+      ! F_lim of blade A's damper (measured by the backbone): 21.677 N
+      Flim = 21.677454956969921_wp
+      do jf = 1, 3
+        write(tag, '(a, es8.1, a, f6.3)') "zeta", zetas(iz), " F/F_lim", fracs(jf)
+        call hbm_peak(st, el, 150.0_wp, 230.0_wp, Flim*fracs(jf), set, pt, &
+          & error)
+        call account(trim(tag)//" hbm", pt%gamma_P, pt%f_res)
+        call dti_response(st, el, 190.0_wp, Flim*fracs(jf), dset, dp, error)
+        call account(trim(tag)//" dti", dp%gamma_1, dp%f)
+      end do
+    end do
+
+    ! invalid damper parameters are rejected with the field's name
+    par = blade_a_damper_params()
+    par%mu = -1.0_wp
+    call new_contact_element(el, par, error)
+    call check_error(suite, "negative mu", error, UDMAP_EINPUT, "mu")
+    par = blade_a_damper_params()
+    par%CF = ieee_value(1.0_wp, ieee_quiet_nan)
+    call new_contact_element(el, par, error)
+    call check_error(suite, "NaN CF", error, UDMAP_EINPUT, "CF")
+
+  contains
+
+    subroutine account(name, a, b)
+      character(len=*), intent(in) :: name
+      real(wp), intent(in) :: a, b
+      logical :: fine
+      if (allocated(error)) then
+        fine = (error%stat == UDMAP_EINPUT .or. error%stat == UDMAP_EPHYSICS .or. &
+          & error%stat == UDMAP_ENUMERIC) .and. len_trim(error%message) > 0
+        deallocate(error)
+      else
+        fine = a >= 0.0_wp .and. a <= huge(1.0_wp) .and. b >= 0.0_wp .and. b <= huge(1.0_wp)
+      end if
+      call check_true(suite, name, fine)
+    end subroutine account
+  end subroutine run_hbm_stress_contact
+end module test_hbm_stress_contact

@@ -2,7 +2,7 @@
 !> on blade A in gross slip, at the time integration's peak: gamma_P and sigma_a within 0.5 %,
 !> f_res within 0.05 Hz (the single-harmonic method is 2-9 % off there). F_E = 5 and 10 N here;
 !> 2 N (slower to reach its steady state) is measured in bench/bench_harmonics.py.
-program test_mapping_harmonics_dti
+module test_mapping_harmonics_dti
   use udmap_kinds, only: wp
   use udmap_error, only: error_type
   use udmap_beam, only: beam_params_type
@@ -13,54 +13,65 @@ program test_mapping_harmonics_dti
   use udmap_linear_structure, only: structure_type, structure_from_blade
   use udmap_contact_element, only: contact_element_type, new_contact_element
   use udmap_newmark, only: dti_settings_type, dti_point_type, dti_peak
-  use testing, only: test_suite, check_close, check_true, check_no_error, finish
+  use fixtures, only: blade_a_beam_params, blade_a_band
+  use testing, only: test_suite, check_close, check_true, check_no_error, unittest_type, &
+    & new_unittest
   implicit none
-  type(test_suite) :: suite
-  type(beam_params_type) :: bp
-  type(blade_type), target :: blade
-  type(damper_type), target :: damper
-  type(model_type) :: model
-  type(analysis_type) :: an
-  type(point_type), allocatable :: pa(:), p1(:)
-  type(error_type), allocatable :: error
-  type(structure_type) :: st
-  type(contact_element_type) :: el
-  type(dti_settings_type) :: dset
-  type(dti_point_type) :: dp
-  real(wp), parameter :: FE(2) = [5.0_wp, 10.0_wp]
-  integer :: i
-  character(len=16) :: tag
+  private
+  public :: collect_mapping_harmonics_dti
 
-  bp = beam_params_type(E=170e9_wp, rho=8200.0_wp, zeta=0.002_wp, neck_L=0.020_wp, &
-    & neck_h=0.008_wp, neck_b=0.020_wp, platform_L=0.010_wp, platform_m=0.021_wp, &
-    & platform_J=1.4e-6_wp, airfoil_L=0.120_wp, airfoil_h=0.004_wp, airfoil_b=0.030_wp, &
-    & neck_elements=8, airfoil_elements=24)
-  call new_beam_blade(blade, bp, error)
-  call new_asymmetric_damper(damper, blade_a_damper_params(), error)
-  call check_no_error(suite, "damper", error)
-  call structure_from_blade(st, blade, error)
-  call new_contact_element(el, blade_a_damper_params(), error)
-  an%f_min = 150.0_wp
-  an%f_max = 230.0_wp
-  call new_model(model, blade, damper, an, error)
-  call backbone(model, FE, p1, error)
-  an%harmonics = 0
-  call new_model(model, blade, damper, an, error)
-  call backbone(model, FE, pa, error)
-  call check_no_error(suite, "backbone auto", error)
-  if (.not.allocated(pa)) call finish(suite)
-  ! 256 steps per period: the Newmark error is below 0.1 % there (test_hbm_blade_a)
-  dset%steps_per_period = 256
-  do i = 1, size(FE)
-    write(tag, '(a, f4.1, a)') "F_E =", FE(i), " N"
-    call dti_peak(st, el, an%f_min, an%f_max, FE(i), dset, dp, error, f_center=pa(i)%f_res)
-    call check_no_error(suite, "dti "//trim(tag), error)
-    call check_close(suite, "auto gamma_P vs dti "//trim(tag), pa(i)%gamma_P, dp%gamma_1, 5e-3_wp)
-    call check_close(suite, "auto sigma_a vs dti "//trim(tag), pa(i)%sigma_a, dp%sigma_1, 5e-3_wp)
-    call check_true(suite, "auto f_res vs dti within 0.05 Hz "//trim(tag), &
-      & abs(pa(i)%f_res - dp%f) <= 0.05_wp)
-    call check_true(suite, "H = 1 is off by more than 1 % "//trim(tag), &
-      & abs(p1(i)%gamma_P/dp%gamma_1 - 1) > 1e-2_wp)
-  end do
-  call finish(suite)
-end program test_mapping_harmonics_dti
+contains
+
+  !> Automatic H against Newmark in gross slip, on blade A.
+  subroutine collect_mapping_harmonics_dti(testsuite)
+    type(unittest_type), allocatable, intent(out) :: testsuite(:)
+    testsuite = [new_unittest("mapping_harmonics_dti", run_mapping_harmonics_dti)]
+  end subroutine collect_mapping_harmonics_dti
+
+  !> Automatic H against the time integration's peak in gross slip, within 0.5 %.
+  subroutine run_mapping_harmonics_dti(suite)
+    type(test_suite), intent(inout) :: suite
+    type(beam_params_type) :: bp
+    type(blade_type), target :: blade
+    type(damper_type), target :: damper
+    type(model_type) :: model
+    type(analysis_type) :: an
+    type(point_type), allocatable :: pa(:), p1(:)
+    type(error_type), allocatable :: error
+    type(structure_type) :: st
+    type(contact_element_type) :: el
+    type(dti_settings_type) :: dset
+    type(dti_point_type) :: dp
+    real(wp), parameter :: FE(2) = [5.0_wp, 10.0_wp]
+    integer :: i
+    character(len=16) :: tag
+
+    bp = blade_a_beam_params()
+    call new_beam_blade(blade, bp, error)
+    call new_asymmetric_damper(damper, blade_a_damper_params(), error)
+    call check_no_error(suite, "damper", error)
+    call structure_from_blade(st, blade, error)
+    call new_contact_element(el, blade_a_damper_params(), error)
+    call blade_a_band(an)
+    call new_model(model, blade, damper, an, error)
+    call backbone(model, FE, p1, error)
+    an%harmonics = 0
+    call new_model(model, blade, damper, an, error)
+    call backbone(model, FE, pa, error)
+    call check_no_error(suite, "backbone auto", error)
+    if (.not.allocated(pa)) return
+    ! 256 steps per period: the Newmark error is below 0.1 % there (test_hbm_blade_a)
+    dset%steps_per_period = 256
+    do i = 1, size(FE)
+      write(tag, '(a, f4.1, a)') "F_E =", FE(i), " N"
+      call dti_peak(st, el, an%f_min, an%f_max, FE(i), dset, dp, error, f_center=pa(i)%f_res)
+      call check_no_error(suite, "dti "//trim(tag), error)
+      call check_close(suite, "auto gamma_P vs dti "//trim(tag), pa(i)%gamma_P, dp%gamma_1, 5e-3_wp)
+      call check_close(suite, "auto sigma_a vs dti "//trim(tag), pa(i)%sigma_a, dp%sigma_1, 5e-3_wp)
+      call check_true(suite, "auto f_res vs dti within 0.05 Hz "//trim(tag), &
+        & abs(pa(i)%f_res - dp%f) <= 0.05_wp)
+      call check_true(suite, "H = 1 is off by more than 1 % "//trim(tag), &
+        & abs(p1(i)%gamma_P/dp%gamma_1 - 1) > 1e-2_wp)
+    end do
+  end subroutine run_mapping_harmonics_dti
+end module test_mapping_harmonics_dti
