@@ -23,20 +23,20 @@
 !> naming the parameter. The plain-array procedures (udmap_backbone_arrays, ...) are here too,
 !> with explicit interfaces, for programs that mix both styles.
 module udmap
-  use udmap_kinds, only: wp
-  use udmap_error, only: error_type, fatal_error, UDMAP_OK, UDMAP_EINPUT, UDMAP_EPHYSICS, UDMAP_ENUMERIC
-  use udmap_version_info, only: udmap_version_string, udmap_version_major, &
+  use udmap_core_kinds, only: wp
+  use udmap_core_error, only: error_type, fatal_error, UDMAP_OK, UDMAP_EINPUT, UDMAP_EPHYSICS, UDMAP_ENUMERIC
+  use udmap_core_version, only: udmap_version_string, udmap_version_major, &
     & udmap_version_minor, udmap_version_patch
-  use udmap_beam, only: beam_params_type
-  use udmap_blade, only: blade_type, new_beam_blade, new_matrices_blade, read_matrices_blade, &
-    & export_blade
-  use udmap_damper, only: damper_type, asymmetric_params_type, new_asymmetric_damper, &
+  use udmap_blade_beam, only: beam_params_type
+  use udmap_blade_type, only: blade_type, new_beam_blade, new_matrices_blade
+  use udmap_blade_io_matrices, only: read_matrices_blade, export_blade
+  use udmap_damper_type, only: damper_type, asymmetric_params_type, new_asymmetric_damper, &
     & new_jenkins_damper, new_table_damper
-  use udmap_model, only: analysis_type, point_type, curve_type, model_type, new_model, &
+  use udmap_mapping_model, only: analysis_type, point_type, curve_type, model_type, new_model, &
     & limit_force, backbone_curve, backbone, response, response_curves, set_harmonics, &
     & admissible_force, REGIME_STUCK, REGIME_PARTIAL_SLIP, REGIME_FULL_SLIP, REGIME_LIMIT, &
     & BRANCH_LOWER, BRANCH_UPPER, BRANCH_TURNING
-  use udmap_api_legacy, only: udmap_version_numbers, udmap_table_arrays, &
+  use udmap_api_legacy_arrays, only: udmap_version_numbers, udmap_table_arrays, &
     & udmap_backbone_arrays, udmap_response_arrays, udmap_curve_arrays
   implicit none
   private

@@ -2,16 +2,17 @@
 !> complex solve of D(omega) q = e written here, in quadruple precision (Gaussian elimination
 !> with partial pivoting), so that the reference is exact for the stored double-precision
 !> matrices. (A double-precision solve is not: near resonance it is off by ~1e-9, see the
-!> module documentation of udmap_modes.) Covered: every evaluation path (series, all modes,
+!> module documentation of udmap_blade_modes.) Covered: every evaluation path (series, all modes,
 !> large-model path, explicit C), derivatives against central differences, the Sherman-Morrison
 !> layer response against a direct solve with the damper stiffness, the Matrix Market round
 !> trip and the input errors of imported matrices.
 program test_blade_receptances
-  use udmap_kinds, only: wp, pi
-  use udmap_error, only: error_type, UDMAP_EINPUT
-  use udmap_beam, only: beam_params_type
-  use udmap_blade, only: blade_type, receptances_type, new_beam_blade, new_matrices_blade, &
-    & read_matrices_blade, export_blade, layer_response
+  use udmap_core_kinds, only: wp, pi
+  use udmap_core_error, only: error_type, UDMAP_EINPUT
+  use udmap_blade_beam, only: beam_params_type
+  use udmap_blade_type, only: blade_type, receptances_type, new_beam_blade, new_matrices_blade, &
+    & layer_response
+  use udmap_blade_io_matrices, only: read_matrices_blade, export_blade
   use testing, only: test_suite, check_close, check_true, check_no_error, check_error, finish
   implicit none
   integer, parameter :: qp = selected_real_kind(30)

@@ -10,9 +10,9 @@
 !> - the neutral wedge mu = tan(beta): an error naming mu and the angle where the loops for mu
 !>   just below and just above tan(beta) differ, the limit where they agree.
 program test_damper_wedge
-  use udmap_kinds, only: wp, pi
-  use udmap_error, only: error_type, UDMAP_EPHYSICS
-  use udmap_damper, only: damper_type, asymmetric_params_type, new_asymmetric_damper
+  use udmap_core_kinds, only: wp, pi
+  use udmap_core_error, only: error_type, UDMAP_EPHYSICS
+  use udmap_damper_type, only: damper_type, asymmetric_params_type, new_asymmetric_damper
   use udmap_damper_params, only: blade_a_damper_params
   use udmap_damper_tracer, only: damper_geometry_type, damper_state_type, new_damper_geometry, &
     & trace_gamma, contact_forces, restoring_moment

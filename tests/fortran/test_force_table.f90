@@ -1,13 +1,13 @@
 !> The force table (kernel/src/mapping/force_table.f90) on known functions of u = ln F_E, driven
-!> as udmap_harmonic_mapping drives it: a smooth function is interpolated to the tolerance
+!> as udmap_mapping_harmonic_mapping drives it: a smooth function is interpolated to the tolerance
 !> wherever a panel was verified, the first force of a level-0 panel is not tabulated, a jump
 !> is confined to exact leaves of the deepest level, and points of another structure or
 !> another H are never mixed into a panel.
 program test_force_table
   use, intrinsic :: iso_fortran_env, only: int64
   use testing, only: test_suite, check_true, finish
-  use udmap_kinds, only: wp
-  use udmap_force_table, only: force_table_type, table_reset, table_lookup, table_first_visit, &
+  use udmap_core_kinds, only: wp
+  use udmap_mapping_harmonic_force_table, only: force_table_type, table_reset, table_lookup, table_first_visit, &
     & table_panel, table_has_node, table_add_node, table_judge, node_force, TABLE_MISSING, &
     & TABLE_VERIFIED, TABLE_EXACT, TABLE_SPLIT, LEVEL_MAX
   implicit none

@@ -1,7 +1,7 @@
 !> Minimal assertion helpers for the Fortran test programs.
 module testing
-  use udmap_kinds, only: wp
-  use udmap_error, only: error_type
+  use udmap_core_kinds, only: wp
+  use udmap_core_error, only: error_type
   implicit none
   private
   public :: test_suite, check_close, check_true, check_no_error, check_error, finish

@@ -2,8 +2,8 @@
 !> k_re and k_im separately, constant below the first row, and beyond the last row the
 !> extrapolation with a plateau moment difference delta_M if one is given.
 module udmap_damper_measured
-  use udmap_kinds, only: wp, pi
-  use udmap_error, only: error_type, fatal_error, UDMAP_EINPUT
+  use udmap_core_kinds, only: wp, pi
+  use udmap_core_error, only: error_type, fatal_error, UDMAP_EINPUT
   implicit none
   private
   public :: measured_table_type, new_measured_table, measured_stiffness, &

@@ -20,8 +20,8 @@
 !> tracer locates exactly (an event coincidence, not a tolerance), and both one-sided values
 !> come from the two intervals' loops. Checking each interval end costs one loop evaluation.
 module udmap_damper_stiffness_table
-  use udmap_kinds, only: wp, pi
-  use udmap_error, only: error_type, fatal_error, UDMAP_ENUMERIC, UDMAP_EPHYSICS
+  use udmap_core_kinds, only: wp, pi
+  use udmap_core_error, only: error_type, fatal_error, UDMAP_ENUMERIC, UDMAP_EPHYSICS
   use udmap_damper_tracer, only: damper_geometry_type, validity_type
   use udmap_damper_loops, only: loop_type, ramp_type, base_cycle_type, loop_workspace_type, &
     & steady_loop, trace_base_cycle, loop_stiffness, loop_k_re, loop_energy, &

@@ -11,8 +11,8 @@
 !> p (the loop amplitude when the targets are +-p). Between topology changes all events are affine
 !> in p; `validity_type` collects the exact range of p over which the event sequence holds.
 module udmap_damper_tracer
-  use udmap_kinds, only: wp
-  use udmap_error, only: error_type, fatal_error, UDMAP_EPHYSICS, UDMAP_ENUMERIC
+  use udmap_core_kinds, only: wp
+  use udmap_core_error, only: error_type, fatal_error, UDMAP_EPHYSICS, UDMAP_ENUMERIC
   use udmap_damper_params, only: asymmetric_params_type, check_asymmetric_params
   implicit none
   private

@@ -7,7 +7,7 @@
 !> from the last node at or below gamma_s (below it the damper is stuck, k is constant and F_bb
 !> is exactly linear) up to wherever the requested forces need it. Each node is one layer peak
 !> search started from the eigenvalue, which is tracked from node to node with the secular
-!> equation (udmap_eigen_start). The nodes only bracket roots and start searches, so their
+!> equation (udmap_mapping_eigen_start). The nodes only bracket roots and start searches, so their
 !> peaks are located to table_rtol; every result is refined to rtol.
 !>
 !> Roots of F_bb = F_E are bracketed on the grid, all of them, and refined by safeguarded
@@ -28,12 +28,12 @@
 !> The peak frequency matters beyond rtol: the response curve is tangent to F_E there, and a
 !> frequency error delta tilts it by delta/zeta^2 in d ln F/d ln omega. The layer peak search
 !> returns its last (superlinear) secant estimate, which is good to far better than rtol.
-module udmap_backbone
-  use udmap_kinds, only: wp, pi
-  use udmap_error, only: error_type, fatal_error, UDMAP_EINPUT, UDMAP_EPHYSICS, UDMAP_ENUMERIC
-  use udmap_layer, only: layer_peak_type, layer_peak, PEAK_OK, PEAK_BELOW_BAND
-  use udmap_eigen_start, only: secular_root, direct_eigen_start
-  use udmap_model_data, only: model_type, point_type, backbone_eval_type, limit_force_or_huge, &
+module udmap_mapping_backbone
+  use udmap_core_kinds, only: wp, pi
+  use udmap_core_error, only: error_type, fatal_error, UDMAP_EINPUT, UDMAP_EPHYSICS, UDMAP_ENUMERIC
+  use udmap_mapping_layer, only: layer_peak_type, layer_peak, PEAK_OK, PEAK_BELOW_BAND
+  use udmap_mapping_eigen_start, only: secular_root, direct_eigen_start
+  use udmap_mapping_model_data, only: model_type, point_type, backbone_eval_type, limit_force_or_huge, &
     & fill_point, check_forces, damper_fingerprint, limit_force_backbone, EIGEN_AUTO, &
     & EIGEN_DIRECT, REGIME_LIMIT
   implicit none
@@ -796,4 +796,4 @@ contains
       points(i)%jump = jump
     end do
   end subroutine backbone
-end module udmap_backbone
+end module udmap_mapping_backbone

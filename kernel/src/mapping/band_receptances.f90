@@ -11,10 +11,10 @@
 !> 1e-13 of each receptance's largest value in the band (1e-11 for the derivatives). An
 !> evaluation then costs two or three dozen complex operations instead of the blade's modal
 !> sum and series. With an explicit C matrix the modal form is not exact and this is off.
-module udmap_band_receptances
-  use udmap_kinds, only: wp
-  use udmap_error, only: error_type
-  use udmap_blade, only: blade_type, receptances_type
+module udmap_mapping_band_receptances
+  use udmap_core_kinds, only: wp
+  use udmap_core_error, only: error_type
+  use udmap_blade_type, only: blade_type, receptances_type
   implicit none
   private
   public :: band_receptances_type, new_band_receptances, band_eval
@@ -186,4 +186,4 @@ contains
     r%dsE = dv(4)
     r%dsg = dv(5)
   end subroutine band_eval
-end module udmap_band_receptances
+end module udmap_mapping_band_receptances

@@ -27,12 +27,12 @@
 !> from the direct value (later tables, e.g. after set_damper, bracket it from the bare modes);
 !> EIGEN_DIRECT runs the direct solver for every layer (slow; for checks); EIGEN_MODAL never
 !> runs it.
-module udmap_eigen_start
-  use udmap_kinds, only: wp
-  use udmap_error, only: error_type, fatal_error, UDMAP_EINPUT, UDMAP_ENUMERIC
-  use udmap_blade, only: blade_type, receptances_type
-  use udmap_root_finding, only: brent_type, brent_start, brent_next, brent_update
-  use udmap_lapack, only: zggev, zgbtrf, zgbtrs
+module udmap_mapping_eigen_start
+  use udmap_core_kinds, only: wp
+  use udmap_core_error, only: error_type, fatal_error, UDMAP_EINPUT, UDMAP_ENUMERIC
+  use udmap_blade_type, only: blade_type, receptances_type
+  use udmap_core_root_finding, only: brent_type, brent_start, brent_next, brent_update
+  use udmap_core_lapack, only: zggev, zgbtrf, zgbtrs
   implicit none
   private
   public :: secular_type, new_secular, secular_root, direct_eigen_start, secular_modes
@@ -479,4 +479,4 @@ contains
       & "(ndof = "//trim(buf)//"; use the modal start)", UDMAP_EINPUT)
 #endif
   end subroutine band_eigen
-end module udmap_eigen_start
+end module udmap_mapping_eigen_start

@@ -13,12 +13,12 @@
 !> psi = -(d ln|g~|/d omega)/(omega |g~|^2), by secant steps from the start until a sign change
 !> brackets it and Brent's method after that: from an eigenvalue start this takes 3 to 5
 !> receptance evaluations to rtol = 1e-12.
-module udmap_layer
-  use udmap_kinds, only: wp
-  use udmap_error, only: error_type, fatal_error, UDMAP_ENUMERIC, UDMAP_EPHYSICS
-  use udmap_blade, only: blade_type, receptances_type
-  use udmap_root_finding, only: brent_type, brent_start, brent_next, brent_update
-  use udmap_band_receptances, only: band_receptances_type, band_eval
+module udmap_mapping_layer
+  use udmap_core_kinds, only: wp
+  use udmap_core_error, only: error_type, fatal_error, UDMAP_ENUMERIC, UDMAP_EPHYSICS
+  use udmap_blade_type, only: blade_type, receptances_type
+  use udmap_core_root_finding, only: brent_type, brent_start, brent_next, brent_update
+  use udmap_mapping_band_receptances, only: band_receptances_type, band_eval
   implicit none
   private
   public :: bare_type, layer_peak_type, bare_receptances, log_slope, layer_peak, &
@@ -33,7 +33,7 @@ module udmap_layer
   integer, parameter :: PEAK_ABOVE_BAND = 2
 
   !> The bare blade as seen by the mapping: the blade it borrows, the fast interpolant of its
-  !> receptances over the band (udmap_band_receptances, when active) and a count of receptance
+  !> receptances over the band (udmap_mapping_band_receptances, when active) and a count of receptance
   !> evaluations (the unit of cost of everything here).
   type :: bare_type
     type(blade_type), pointer :: blade => null()
@@ -325,4 +325,4 @@ contains
     omega = brent%b
     call bare_receptances(bare, omega, r, error, .false.)
   end subroutine layer_crossing
-end module udmap_layer
+end module udmap_mapping_layer

@@ -13,16 +13,16 @@
 !>   call admissible_force(model, F_lim, sigma_all, rtol, F_adm, error)  ! a design's F_adm
 !>
 !> analysis%harmonics = 1 (default) is the paper's single-harmonic method; H > 1 or 0 (auto)
-!> takes the multi-harmonic layers of PHYSICS.md 4.1 (udmap_harmonic_mapping) in backbone,
+!> takes the multi-harmonic layers of PHYSICS.md 4.1 (udmap_mapping_harmonic_mapping) in backbone,
 !> response and response_curves.
-module udmap_model
-  use udmap_model_data, only: analysis_type, point_type, curve_type, model_type, new_model, &
+module udmap_mapping_model
+  use udmap_mapping_model_data, only: analysis_type, point_type, curve_type, model_type, new_model, &
     & set_damper, limit_force, limit_force_backbone, EIGEN_AUTO, EIGEN_DIRECT, EIGEN_MODAL, REGIME_STUCK, REGIME_PARTIAL_SLIP, &
     & REGIME_FULL_SLIP, REGIME_LIMIT, BRANCH_LOWER, BRANCH_UPPER, BRANCH_TURNING
-  use udmap_backbone, only: backbone_curve
-  use udmap_harmonic_mapping, only: backbone, response, response_curves, harmonics_near_modes, &
+  use udmap_mapping_backbone, only: backbone_curve
+  use udmap_mapping_harmonic_mapping, only: backbone, response, response_curves, harmonics_near_modes, &
     & set_harmonics
-  use udmap_admissible, only: admissible_force
+  use udmap_mapping_admissible, only: admissible_force
   implicit none
   private
   public :: analysis_type, point_type, curve_type, model_type
@@ -32,4 +32,4 @@ module udmap_model
   public :: EIGEN_AUTO, EIGEN_DIRECT, EIGEN_MODAL
   public :: REGIME_STUCK, REGIME_PARTIAL_SLIP, REGIME_FULL_SLIP, REGIME_LIMIT
   public :: BRANCH_LOWER, BRANCH_UPPER, BRANCH_TURNING
-end module udmap_model
+end module udmap_mapping_model

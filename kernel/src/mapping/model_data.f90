@@ -1,16 +1,16 @@
 !> The coupled blade-damper model of the mapping (PHYSICS.md 3-5): its settings, its result
-!> types, its caches, and the limit force. The algorithms live in udmap_backbone,
-!> udmap_response and udmap_curves; udmap_model gathers everything for users.
-module udmap_model_data
-  use udmap_kinds, only: wp, pi
-  use udmap_error, only: error_type, fatal_error, UDMAP_EINPUT
-  use udmap_blade, only: blade_type, receptances_type, layer_response
-  use udmap_damper, only: damper_type
-  use udmap_layer, only: bare_type, layer_peak_type
-  use udmap_eigen_start, only: secular_type, new_secular
-  use udmap_band_receptances, only: new_band_receptances
-  use udmap_harmonic_layer, only: harmonic_workspace_type, HARMONICS_MAX
-  use udmap_force_table, only: force_table_type
+!> types, its caches, and the limit force. The algorithms live in udmap_mapping_backbone,
+!> udmap_mapping_response and udmap_mapping_curves; udmap_model gathers everything for users.
+module udmap_mapping_model_data
+  use udmap_core_kinds, only: wp, pi
+  use udmap_core_error, only: error_type, fatal_error, UDMAP_EINPUT
+  use udmap_blade_type, only: blade_type, receptances_type, layer_response
+  use udmap_damper_type, only: damper_type
+  use udmap_mapping_layer, only: bare_type, layer_peak_type
+  use udmap_mapping_eigen_start, only: secular_type, new_secular
+  use udmap_mapping_band_receptances, only: new_band_receptances
+  use udmap_mapping_harmonic_layer, only: harmonic_workspace_type, HARMONICS_MAX
+  use udmap_mapping_harmonic_force_table, only: force_table_type
   implicit none
   private
   public :: analysis_type, point_type, curve_type, model_type, backbone_table_type, &
@@ -65,7 +65,7 @@ module udmap_model_data
     !> bracketing only: every crossing is then refined with exact receptances).
     integer :: sweep_points = 400
     !> Evaluate the bare receptances in the band through the checked interpolant of
-    !> udmap_band_receptances (off: the blade's own evaluation every time).
+    !> udmap_mapping_band_receptances (off: the blade's own evaluation every time).
     logical :: band_interpolation = .true.
     !> Harmonics of the platform rotation (PHYSICS.md 4.1): 1 the single-harmonic method,
     !> H > 1 harmonics 0..H in multi-harmonic layers, 0 automatic (raised until the outputs
@@ -183,7 +183,7 @@ module udmap_model_data
     !> Contact element and scratch of the multi-harmonic layers (PHYSICS.md 4.1).
     type(harmonic_workspace_type) :: harm
     !> Backbone points at H /= 1 after a change of F_E alone: interpolated in a verified table
-    !> of exact points where one holds F_E (udmap_force_table), when force_table is set.
+    !> of exact points where one holds F_E (udmap_mapping_harmonic_force_table), when force_table is set.
     logical :: force_table = .false.
     type(force_table_type) :: ftable
   end type model_type
@@ -428,4 +428,4 @@ contains
       end if
     end do
   end subroutine check_forces
-end module udmap_model_data
+end module udmap_mapping_model_data
