@@ -7,7 +7,8 @@ program bench_table
   use udmap_core_error, only: error_type
   use udmap_damper_type, only: damper_type, asymmetric_params_type, new_asymmetric_damper
   use udmap_damper_params, only: blade_a_damper_params
-  use udmap_damper_tracer, only: damper_geometry_type, new_damper_geometry
+  use udmap_damper_tracer_core, only: damper_geometry_type
+  use udmap_damper_tracer, only: new_damper_geometry
   use udmap_damper_loops, only: ramp_type, base_cycle_type, loop_type, loop_workspace_type, &
     & trace_ramp, trace_base_cycle, steady_loop, loop_stiffness
   implicit none

@@ -5,7 +5,8 @@ program test_damper_blade_a
   use udmap_core_error, only: error_type
   use udmap_damper_type, only: damper_type, asymmetric_params_type, new_asymmetric_damper
   use udmap_damper_params, only: blade_a_damper_params
-  use udmap_damper_tracer, only: full_slip_moment, CONTACT_SLIP_POS, CONTACT_SLIP_NEG
+  use udmap_damper_tracer, only: full_slip_moment
+  use udmap_damper_tracer_core, only: CONTACT_SLIP_POS, CONTACT_SLIP_NEG
   use udmap_damper_loops, only: loop_type, loop_workspace_type, ramp_type, cf_only_ramp, &
     & steady_loop, loop_stiffness
   use testing, only: test_suite, check_close, check_true, check_no_error, finish

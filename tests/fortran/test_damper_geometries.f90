@@ -6,7 +6,8 @@ program test_damper_geometries
   use udmap_core_error, only: error_type
   use udmap_damper_type, only: damper_type, asymmetric_params_type, new_asymmetric_damper
   use udmap_damper_params, only: blade_a_damper_params
-  use udmap_damper_tracer, only: full_slip_moment, CONTACT_SLIP_POS, CONTACT_SLIP_NEG
+  use udmap_damper_tracer, only: full_slip_moment
+  use udmap_damper_tracer_core, only: CONTACT_SLIP_POS, CONTACT_SLIP_NEG
   use testing, only: test_suite, check_close, check_true, check_no_error, finish
   implicit none
   type(test_suite) :: suite

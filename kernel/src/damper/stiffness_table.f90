@@ -22,7 +22,7 @@
 module udmap_damper_stiffness_table
   use udmap_core_kinds, only: wp, pi
   use udmap_core_error, only: error_type, fatal_error, UDMAP_ENUMERIC, UDMAP_EPHYSICS
-  use udmap_damper_tracer, only: damper_geometry_type, validity_type
+  use udmap_damper_tracer_core, only: damper_geometry_type, validity_type
   use udmap_damper_loops, only: loop_type, ramp_type, base_cycle_type, loop_workspace_type, &
     & steady_loop, trace_base_cycle, loop_stiffness, loop_k_re, loop_energy, &
     & elongated_stiffness

@@ -5,7 +5,8 @@ module udmap_damper_type
   use udmap_core_kinds, only: wp, pi
   use udmap_core_error, only: error_type, fatal_error, UDMAP_EINPUT, UDMAP_EPHYSICS
   use udmap_damper_params, only: asymmetric_params_type
-  use udmap_damper_tracer, only: damper_geometry_type, new_damper_geometry
+  use udmap_damper_tracer_core, only: damper_geometry_type
+  use udmap_damper_tracer, only: new_damper_geometry
   use udmap_damper_loops, only: ramp_type, loop_type, loop_workspace_type, trace_ramp, &
     & cf_only_ramp, steady_loop, loop_moment, loop_stiffness
   use udmap_damper_stiffness_table, only: stiffness_table_type, build_stiffness_table, &

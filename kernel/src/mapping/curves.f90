@@ -19,7 +19,8 @@ module udmap_mapping_curves
   use udmap_mapping_model_data, only: model_type, point_type, curve_type, check_forces, &
     & BRANCH_LOWER, BRANCH_UPPER, BRANCH_TURNING
   use udmap_mapping_model_data, only: backbone_eval_type
-  use udmap_mapping_backbone, only: backbone, cover_table, eval_backbone
+  use udmap_mapping_backbone, only: backbone
+  use udmap_mapping_backbone_table, only: cover_table, eval_backbone
   use udmap_mapping_response, only: response_roots
   implicit none
   private

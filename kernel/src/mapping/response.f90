@@ -14,7 +14,7 @@ module udmap_mapping_response
   use udmap_core_root_finding, only: brent_type, brent_start, brent_next, brent_update
   use udmap_mapping_model_data, only: model_type, point_type, limit_force_or_huge, fill_point, &
     & check_forces, limit_force_backbone
-  use udmap_mapping_backbone, only: ensure_table, grid_gamma, max_decades, j_limit, j_rising
+  use udmap_mapping_backbone_table, only: ensure_table, grid_gamma, max_decades, j_limit, j_rising
   implicit none
   private
   public :: response, response_roots

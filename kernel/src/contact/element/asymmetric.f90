@@ -8,9 +8,10 @@ module udmap_contact_element_asymmetric
   use udmap_core_kinds, only: wp
   use udmap_core_error, only: error_type
   use udmap_damper_params, only: asymmetric_params_type
-  use udmap_damper_tracer, only: damper_geometry_type, damper_state_type, branch_record_type, &
-    & new_damper_geometry, virgin_state, ramp_CF, trace_gamma, restoring_moment, &
-    & reset_record, record_start, contact_forces, CONTACT_OPEN
+  use udmap_damper_tracer_core, only: damper_geometry_type, damper_state_type, &
+    & branch_record_type, contact_forces, CONTACT_OPEN
+  use udmap_damper_tracer, only: new_damper_geometry, virgin_state, ramp_CF, trace_gamma, &
+    & restoring_moment, reset_record, record_start
   use udmap_contact_element, only: hysteretic_element_type, event_list_type
   use udmap_contact_aft_moment, only: aft_workspace_type, aft_moment
   implicit none
