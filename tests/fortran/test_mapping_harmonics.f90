@@ -18,7 +18,8 @@ program test_mapping_harmonics
   use udmap_contact_element_asymmetric, only: contact_element_type, new_contact_element
   use udmap_contact_element_jenkins, only: jenkins_element_type, new_jenkins_element
   use udmap_baseline_hbm, only: hbm_settings_type, hbm_point_type, hbm_peaks, hbm_response
-  use udmap_mapping_harmonic_layer, only: harmonic_state_type, harmonic_resize, harmonic_solve
+  use udmap_mapping_harmonic_types, only: harmonic_state_type
+  use udmap_mapping_harmonic_layer, only: harmonic_resize, harmonic_solve
   use udmap_mapping_model_data, only: model_type
   use testing, only: test_suite, check_close, check_true, check_no_error, check_error, finish
   implicit none

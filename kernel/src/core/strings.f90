@@ -3,7 +3,7 @@ module udmap_core_strings
   use udmap_core_kinds, only: wp
   implicit none
   private
-  public :: itoa, ftoa
+  public :: itoa, ftoa, indexed_name
 
 contains
 
@@ -24,4 +24,12 @@ contains
     write(buf, '(g0.10)') x
     s = trim(adjustl(buf))
   end function ftoa
+
+  !> name[i-1]: entry i of an array as the C API and Python index it (0-based).
+  pure function indexed_name(name, i) result(s)
+    character(len=*), intent(in) :: name
+    integer, intent(in) :: i
+    character(len=:), allocatable :: s
+    s = name//"["//itoa(i - 1)//"]"
+  end function indexed_name
 end module udmap_core_strings

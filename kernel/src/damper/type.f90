@@ -4,6 +4,7 @@
 module udmap_damper_type
   use udmap_core_kinds, only: wp, pi
   use udmap_core_error, only: error_type, fatal_error, UDMAP_EINPUT, UDMAP_EPHYSICS
+  use udmap_core_strings, only: indexed_name
   use udmap_damper_params, only: asymmetric_params_type
   use udmap_damper_tracer_core, only: damper_geometry_type
   use udmap_damper_tracer, only: new_damper_geometry
@@ -19,6 +20,7 @@ module udmap_damper_type
   private
   public :: asymmetric_params_type, damper_type
   public :: new_asymmetric_damper, new_jenkins_damper, new_table_damper
+  public :: stiffness_table, check_amplitudes
 
   !> Damper kinds (case file "kind": "asymmetric", "jenkins", "table").
   integer, parameter, public :: DAMPER_ASYMMETRIC = 1, DAMPER_JENKINS = 2, DAMPER_TABLE = 3
@@ -421,4 +423,50 @@ contains
       k = self%stiffness(gamma)
     end if
   end function stiffness_exact
+
+  !> The damper's complex stiffness k(gamma) = k_Re + i k_Im [N m/rad] (PHYSICS.md 2.2) at the
+  !> amplitudes gamma [rad]: the table of the damper, with the amplitudes checked
+  !> (check_amplitudes).
+  subroutine stiffness_table(damper, gamma, k, error)
+    type(damper_type), intent(in) :: damper
+    real(wp), intent(in) :: gamma(:)
+    complex(wp), intent(out) :: k(:)
+    type(error_type), allocatable, intent(out) :: error
+    k = 0
+    if (damper%kind == 0) then
+      call fatal_error(error, "stiffness_table: the damper has not been created", UDMAP_EINPUT)
+      return
+    end if
+    if (size(k) /= size(gamma)) then
+      call fatal_error(error, "stiffness_table: k must have the size of gamma", UDMAP_EINPUT)
+      return
+    end if
+    call check_amplitudes(damper, gamma, error)
+    if (allocated(error)) return
+    k = damper%stiffness(gamma)
+  end subroutine stiffness_table
+
+  !> Amplitudes at which k(gamma) may be evaluated: positive and finite, and within a measured
+  !> table that has no delta_M (such a table ends at its last row, gamma_max). The one check of
+  !> the Fortran, C and Python faces; entries are named as C and Python index them.
+  subroutine check_amplitudes(damper, gamma, error)
+    type(damper_type), intent(in) :: damper
+    real(wp), intent(in) :: gamma(:)
+    type(error_type), allocatable, intent(out) :: error
+    character(len=16) :: buf
+    integer :: i
+    do i = 1, size(gamma)
+      if (.not. (gamma(i) > 0 .and. gamma(i) <= huge(1.0_wp))) then
+        call fatal_error(error, "damper stiffness: amplitude '"//indexed_name("gamma", i)// &
+          & "' must be a positive finite number [rad]", UDMAP_EINPUT)
+        return
+      else if (damper%kind == DAMPER_TABLE .and. gamma(i) > damper%gamma_max) then
+        write(buf, '(es12.5)') damper%gamma_max
+        call fatal_error(error, "damper stiffness: amplitude '"//indexed_name("gamma", i)// &
+          & "' lies beyond the table's last row "//trim(buf)//" rad and the table has no "// &
+          & "'delta_M'", UDMAP_EINPUT)
+        return
+      end if
+    end do
+  end subroutine check_amplitudes
 end module udmap_damper_type

@@ -17,8 +17,7 @@ module udmap_mapping_curves
   use udmap_blade_type, only: receptances_type, layer_response
   use udmap_mapping_layer, only: layer_amplitude, layer_crossing, bare_receptances
   use udmap_mapping_model_data, only: model_type, point_type, curve_type, check_forces, &
-    & BRANCH_LOWER, BRANCH_UPPER, BRANCH_TURNING
-  use udmap_mapping_model_data, only: backbone_eval_type
+    & BRANCH_LOWER, BRANCH_UPPER, BRANCH_TURNING, backbone_eval_type
   use udmap_mapping_backbone, only: backbone
   use udmap_mapping_backbone_table, only: cover_table, eval_backbone
   use udmap_mapping_response, only: response_roots

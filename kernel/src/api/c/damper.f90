@@ -6,10 +6,9 @@ module udmap_api_c_damper
     & c_int, c_double
   use udmap_core_kinds, only: wp, pi
   use udmap_core_error, only: error_type, fatal_error, UDMAP_EINPUT
-  use udmap_api_c_support, only: set_error, clear_error, check_handle, check_input, take_handle, &
-    & indexed_name
+  use udmap_api_c_support, only: set_error, clear_error, check_handle, check_input, take_handle
   use udmap_damper_type, only: damper_type, asymmetric_params_type, new_asymmetric_damper, &
-    & new_jenkins_damper, new_table_damper, DAMPER_TABLE
+    & new_jenkins_damper, new_table_damper, check_amplitudes
   implicit none
   private
   public :: udmap_asymmetric_params, udmap_damper_info, damper_from_handle, asymmetric_from_c
@@ -175,7 +174,7 @@ contains
     integer :: i
     call clear_error(herr)
     call damper_from_handle(hdamper, d, "damper", error)
-    if (.not. allocated(error)) call check_amplitudes(d, n, gamma, error)
+    if (.not. allocated(error)) call check_c_amplitudes(d, n, gamma, error)
     if (.not. allocated(error)) then
       do i = 1, n
         if (derivative) then
@@ -232,28 +231,15 @@ contains
 
   ! ------------------------------------------------------------------ internals
 
-  !> Amplitudes must be positive and finite, and within a table that has no delta_M.
-  subroutine check_amplitudes(d, n, gamma, error)
+  !> n >= 0 and the amplitudes of the damper's check (udmap_damper_type's check_amplitudes).
+  subroutine check_c_amplitudes(d, n, gamma, error)
     type(damper_type), intent(in) :: d
     integer(c_int), intent(in) :: n
     real(c_double), intent(in) :: gamma(*)
     type(error_type), allocatable, intent(out) :: error
-    character(len=16) :: buf
-    integer :: i
     call check_input(n >= 0, "damper stiffness: 'n' must not be negative", error)
-    do i = 1, n
-      if (allocated(error)) return
-      if (.not. (gamma(i) > 0 .and. gamma(i) <= huge(1.0_c_double))) then
-        call fatal_error(error, "damper stiffness: amplitude '"//indexed_name("gamma", i)// &
-          & "' must be a positive finite number [rad]", UDMAP_EINPUT)
-      else if (d%kind == DAMPER_TABLE .and. gamma(i) > d%gamma_max) then
-        write(buf, '(es12.5)') d%gamma_max
-        call fatal_error(error, "damper stiffness: amplitude '"//indexed_name("gamma", i)// &
-          & "' lies beyond the table's last row "//trim(buf)//" rad and the table has no "// &
-          & "'delta_M'", UDMAP_EINPUT)
-      end if
-    end do
-  end subroutine check_amplitudes
+    if (.not. allocated(error)) call check_amplitudes(d, gamma(1:n), error)
+  end subroutine check_c_amplitudes
 
   !> int udmap_damper_jump_count(error, damper, int *n): the number of jumps of k(gamma)
   !> (PHYSICS.md 2.5; 0 without lift-off).

@@ -6,6 +6,7 @@ module udmap_api_c_support
   use, intrinsic :: iso_c_binding, only: c_ptr, c_null_ptr, c_associated, c_f_pointer, c_int, &
     & c_double, c_char, c_null_char, c_size_t
   use udmap_core_error, only: error_type, fatal_error, UDMAP_OK, UDMAP_EINPUT
+  use udmap_core_strings, only: indexed_name
   implicit none
   private
   public :: c_error_type, set_error, clear_error, error_from_handle
@@ -91,16 +92,6 @@ contains
     if (allocated(error)) return
     if (.not.ok) call fatal_error(error, message, UDMAP_EINPUT)
   end subroutine check_input
-
-  !> "name[i]" with the 0-based C index of Fortran entry `i`, to name an array entry.
-  pure function indexed_name(name, i) result(s)
-    character(len=*), intent(in) :: name
-    integer, intent(in) :: i
-    character(len=:), allocatable :: s
-    character(len=24) :: buf
-    write(buf, '(i0)') i - 1
-    s = name//"["//trim(buf)//"]"
-  end function indexed_name
 
   ! ------------------------------------------------------------------ handles
 

@@ -46,10 +46,9 @@ module udmap_api_legacy_arrays
   use udmap_core_kinds, only: wp
   use udmap_core_error, only: error_type, UDMAP_EINPUT
   use udmap_core_version, only: udmap_version_major, udmap_version_minor, udmap_version_patch
-  use udmap_api_c_support, only: copy_out
-  use udmap_api_c_blade, only: c_beam_params, beam_from_c
-  use udmap_api_c_damper, only: udmap_asymmetric_params, asymmetric_from_c
+  use udmap_blade_beam, only: beam_params_type
   use udmap_blade_type, only: blade_type, new_beam_blade
+  use udmap_damper_params, only: asymmetric_params_type
   use udmap_damper_type, only: damper_type, new_asymmetric_damper, new_jenkins_damper
   use udmap_mapping_model, only: analysis_type, point_type, curve_type, model_type, new_model, &
     & limit_force, backbone, response, response_curves, REGIME_LIMIT
@@ -256,10 +255,10 @@ contains
       info = -9
       return
     end if
-    call copy_out(curves(1)%f, f, int(npts))
-    call copy_out(curves(1)%gamma_P, gamma_P, int(npts))
-    call copy_out(curves(1)%sigma_a, sigma_a, int(npts))
-    call copy_out(curves(1)%branch, branch, int(npts))
+    f(1:npts) = curves(1)%f
+    gamma_P(1:npts) = curves(1)%gamma_P
+    sigma_a(1:npts) = curves(1)%sigma_a
+    branch(1:npts) = int(curves(1)%branch, c_int)
   end subroutine udmap_curve_arrays
 
   ! ------------------------------------------------------------------ helpers
@@ -389,9 +388,9 @@ contains
       return
     end if
     ! DAMPER holds the fields of udmap_asymmetric_params in order
-    call new_asymmetric_damper(damper, asymmetric_from_c(udmap_asymmetric_params(p(1), p(2), &
-      & p(3), p(4), p(5), p(6), p(7), p(8), p(9), p(10), p(11), p(12), p(13), p(14), p(15), &
-      & p(16))), error)
+    call new_asymmetric_damper(damper, asymmetric_params_type(CF=p(1), mu=p(2), pitch=p(3), &
+      & y_P=p(4), beta_L_deg=p(5), beta_R_deg=p(6), flat=reshape(p(7:10), [2, 2]), &
+      & curved=p(11:12), kn_flat=p(13), kt_flat=p(14), kn_curved=p(15), kt_curved=p(16)), error)
   end subroutine build_damper
 
   !> Blade, damper and model from the parameter arrays, and F_lim; INFO names the array
@@ -422,9 +421,10 @@ contains
       return
     end if
     ! BEAM holds the fields of udmap_beam_params in order
-    call new_beam_blade(blade, beam_from_c(c_beam_params(beam(1), beam(2), beam(3), beam(4), &
-      & beam(5), beam(6), beam(7), beam(8), beam(9), beam(10), beam(11), beam(12), &
-      & nint(beam(13)), nint(beam(14)))), error)
+    call new_beam_blade(blade, beam_params_type(E=beam(1), rho=beam(2), zeta=beam(3), &
+      & neck_L=beam(4), neck_h=beam(5), neck_b=beam(6), platform_L=beam(7), platform_m=beam(8), &
+      & platform_J=beam(9), airfoil_L=beam(10), airfoil_h=beam(11), airfoil_b=beam(12), &
+      & neck_elements=nint(beam(13)), airfoil_elements=nint(beam(14))), error)
     if (allocated(error)) then
       info = info_of(error, beam_arg)
       return

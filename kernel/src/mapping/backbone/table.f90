@@ -7,7 +7,8 @@ module udmap_mapping_backbone_table
   use udmap_core_kinds, only: wp
   use udmap_core_error, only: error_type, fatal_error, UDMAP_EINPUT, UDMAP_EPHYSICS, &
     & UDMAP_ENUMERIC
-  use udmap_mapping_layer, only: layer_peak_type, layer_peak, PEAK_OK, PEAK_BELOW_BAND
+  use udmap_mapping_caches, only: layer_peak_type, PEAK_OK, PEAK_BELOW_BAND
+  use udmap_mapping_layer, only: layer_peak
   use udmap_mapping_eigen_start, only: secular_root, direct_eigen_start
   use udmap_mapping_model_data, only: model_type, backbone_eval_type, damper_fingerprint, &
     & EIGEN_AUTO, EIGEN_DIRECT

@@ -21,11 +21,11 @@
 module udmap_mapping_harmonic_force_table
   use, intrinsic :: iso_fortran_env, only: int64
   use udmap_core_kinds, only: wp
+  use udmap_mapping_harmonic_types, only: table_node_type, force_table_type
   implicit none
   private
-  public :: force_table_type, table_reset, table_lookup, table_first_visit, table_panel, &
-    & table_has_node, table_add_node, table_judge, node_force, table_panel_harmonics, &
-    & table_set_panel_harmonics
+  public :: table_reset, table_lookup, table_first_visit, table_panel, table_has_node, &
+    & table_add_node, table_judge, node_force, table_panel_harmonics, table_set_panel_harmonics
   public :: TABLE_MISSING, TABLE_VERIFIED, TABLE_EXACT, TABLE_SPLIT, LEVEL_MAX
 
   !> Deepest level (width_0/2^10, about 3e-4 in ln F_E).
@@ -36,31 +36,6 @@ module udmap_mapping_harmonic_force_table
   integer(int64), parameter :: FINE = 2_int64**(LEVEL_MAX + 3)
 
   integer, parameter :: TABLE_MISSING = 0, TABLE_VERIFIED = 1, TABLE_EXACT = 2, TABLE_SPLIT = 3
-
-  !> An exact point: its structure (H, roots, jump, sizes), packed outputs y and check scales s.
-  type :: table_node_type
-    integer(int64) :: idx = 0
-    integer :: h = 0
-    logical :: ok = .false.
-    integer :: signature(4) = 0
-    real(wp), allocatable :: y(:), s(:)
-  end type table_node_type
-
-  type :: force_table_type
-    !> What the table was built for (damper revision and summary numbers, harmonics,
-    !> harmonic_tol); a change of any empties it.
-    real(wp) :: key(8) = -huge(1.0_wp)
-    integer :: n_node = 0, n_leaf = 0, n_visit = 0
-    !> Exact points, sorted by idx.
-    type(table_node_type), allocatable :: node(:)
-    !> Leaves [lo, hi) (node positions), their status (TABLE_VERIFIED or TABLE_EXACT) and the
-    !> harmonics of their points.
-    integer(int64), allocatable :: leaf_lo(:), leaf_hi(:)
-    integer, allocatable :: leaf_status(:), leaf_h(:)
-    !> Level-0 panels visited (their position) and the harmonics of their points (0: not set).
-    integer(int64), allocatable :: visited(:)
-    integer, allocatable :: visited_h(:)
-  end type force_table_type
 
 contains
 

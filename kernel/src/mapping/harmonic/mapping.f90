@@ -30,12 +30,14 @@ module udmap_mapping_harmonic_mapping
   use udmap_mapping_backbone, only: backbone_single => backbone, backbone_curve
   use udmap_mapping_response, only: response_single => response
   use udmap_mapping_curves, only: curves_single => response_curves
-  use udmap_mapping_harmonic_layer, only: harmonic_state_type, harmonic_outputs_type, &
-    & harmonic_setup, harmonic_resize, harmonic_outputs, HARMONICS_MAX
+  use udmap_mapping_harmonic_types, only: harmonic_state_type, harmonic_outputs_type, &
+    & HARMONICS_MAX
+  use udmap_mapping_harmonic_layer, only: harmonic_setup, harmonic_resize, harmonic_outputs
   use udmap_mapping_harmonic_search, only: harmonic_root, harmonic_peak_root, harmonic_force_root
-  use udmap_mapping_harmonic_force_table, only: table_reset, table_lookup, table_first_visit, table_panel, &
-    & table_has_node, table_add_node, table_judge, node_force, table_panel_harmonics, &
-    & table_set_panel_harmonics, TABLE_VERIFIED, TABLE_MISSING, TABLE_SPLIT, LEVEL_MAX
+  use udmap_mapping_harmonic_force_table, only: table_reset, table_lookup, table_first_visit, &
+    & table_panel, table_has_node, table_add_node, table_judge, node_force, &
+    & table_panel_harmonics, table_set_panel_harmonics, TABLE_VERIFIED, TABLE_MISSING, &
+    & TABLE_SPLIT, LEVEL_MAX
   implicit none
   private
   public :: backbone, response, response_curves, harmonics_near_modes, set_harmonics

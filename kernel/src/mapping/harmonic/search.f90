@@ -7,8 +7,8 @@ module udmap_mapping_harmonic_search
   use udmap_core_kinds, only: wp, pi
   use udmap_core_error, only: error_type, fatal_error, UDMAP_ENUMERIC, UDMAP_EPHYSICS
   use udmap_blade_type, only: blade_type
-  use udmap_mapping_harmonic_layer, only: harmonic_workspace_type, harmonic_state_type, &
-    & harmonic_solve
+  use udmap_mapping_harmonic_types, only: harmonic_workspace_type, harmonic_state_type
+  use udmap_mapping_harmonic_layer, only: harmonic_solve
   implicit none
   private
   public :: harmonic_peak, harmonic_root, harmonic_force_root, harmonic_peak_root
