@@ -9,6 +9,7 @@
 !> gamma, theta_b, theta_c, u_Rx, u_Ry, u_Rz, u_E.
 module udmap_blade_reduce_rigid_platform
   use udmap_core_kinds, only: wp
+  use udmap_core_sorting, only: bisect
   use udmap_core_error, only: error_type, fatal_error, UDMAP_EINPUT, UDMAP_EPHYSICS
   use udmap_core_strings, only: itoa
   use udmap_blade_reduce_sparse_coo, only: coo_type
@@ -39,7 +40,7 @@ contains
     real(wp), intent(in) :: node_xyz(:, :), ref_point(3), axis(3), exc_direction(3)
     type(error_type), allocatable, intent(out) :: error
     integer, parameter :: free = 0, on_platform = 1, clamped = 2, excited = 3
-    integer, allocatable :: order(:), role(:), node_of_dof(:)
+    integer, allocatable :: order(:), sorted_ids(:), role(:), node_of_dof(:)
     integer :: n, m, j, i, c, k, e_node, seen_exc(3), next
     real(wp) :: a(3), b(3), cc(3), d(3), e2(3), e3(3), r(3), g(6, 6), w(6), t(6)
     character(len=32) :: buf
@@ -82,6 +83,7 @@ contains
     end if
     ! Node ids sorted once, looked up by bisection.
     order = sorted_order(node_ids)
+    sorted_ids = node_ids(order)
     do k = 2, m
       if (node_ids(order(k)) == node_ids(order(k-1))) then
         call fatal_error(error, "node_ids: node "//itoa(node_ids(order(k)))//" is listed twice")
@@ -217,21 +219,12 @@ contains
 
     integer function find(id)
       integer, intent(in) :: id
-      integer :: lo, hi, mid
+      integer :: i
       find = 0
-      lo = 1
-      hi = m
-      do while (lo <= hi)
-        mid = (lo + hi)/2
-        if (node_ids(order(mid)) == id) then
-          find = order(mid)
-          return
-        else if (node_ids(order(mid)) < id) then
-          lo = mid + 1
-        else
-          hi = mid - 1
-        end if
-      end do
+      i = bisect(sorted_ids, id) + 1
+      if (i <= m) then
+        if (sorted_ids(i) == id) find = order(i)
+      end if
     end function find
   end subroutine new_platform_map
 
