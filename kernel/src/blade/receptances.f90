@@ -9,12 +9,7 @@ contains
 
   !> Receptances at circular frequency omega [rad/s] (see the module documentation for the
   !> method); with `derivatives`, also d/d omega. Allocation-free in the modal path.
-  module subroutine receptances(self, omega, r, error, derivatives)
-    class(blade_type), intent(in) :: self
-    real(wp), intent(in) :: omega
-    type(receptances_type), intent(out) :: r
-    type(error_type), allocatable, intent(out) :: error
-    logical, intent(in), optional :: derivatives
+  module procedure receptances
     logical :: deriv
     deriv = .false.
     if (present(derivatives)) deriv = derivatives
@@ -45,7 +40,7 @@ contains
       call fatal_error(error, "the receptances are unbounded at "//ftoa(omega/(2*pi))// &
         & " Hz (an undamped natural frequency)", UDMAP_EPHYSICS)
     end if
-  end subroutine receptances
+  end procedure receptances
 
   !> The modal sum, hot path. The seven products are accumulated in scalars (kept in registers;
   !> arrays would go through memory at every mode), then the series of the dropped modes.

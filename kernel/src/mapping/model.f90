@@ -24,11 +24,12 @@ module udmap_mapping_model
   use udmap_mapping_band_receptances, only: new_band_receptances
   use udmap_mapping_harmonic_types, only: HARMONICS_MAX
   use udmap_mapping_model_data, only: analysis_type, point_type, curve_type, model_type, &
-    & set_damper, limit_force, limit_force_backbone, EIGEN_AUTO, EIGEN_DIRECT, EIGEN_MODAL, REGIME_STUCK, REGIME_PARTIAL_SLIP, &
-    & REGIME_FULL_SLIP, REGIME_LIMIT, BRANCH_LOWER, BRANCH_UPPER, BRANCH_TURNING
+    & check_model_damper, set_damper, limit_force, limit_force_backbone, EIGEN_AUTO, &
+    & EIGEN_DIRECT, EIGEN_MODAL, REGIME_STUCK, REGIME_PARTIAL_SLIP, REGIME_FULL_SLIP, &
+    & REGIME_LIMIT, BRANCH_LOWER, BRANCH_UPPER, BRANCH_TURNING
   use udmap_mapping_backbone, only: backbone_curve
-  use udmap_mapping_harmonic_mapping, only: backbone, response, response_curves, harmonics_near_modes, &
-    & set_harmonics
+  use udmap_mapping_harmonic_mapping, only: backbone, response, response_curves, &
+    & harmonics_near_modes, set_harmonics
   use udmap_mapping_admissible, only: admissible_force
   implicit none
   private
@@ -101,11 +102,8 @@ contains
         & UDMAP_EINPUT)
       return
     end if
-    if (.not.(damper%gamma_b > 0)) then
-      call fatal_error(error, "model: the damper has no positive base-cycle amplitude gamma_b", &
-        & UDMAP_EINPUT)
-      return
-    end if
+    call check_model_damper(damper, error)
+    if (allocated(error)) return
     model%blade => blade
     model%damper => damper
     model%analysis = analysis

@@ -13,7 +13,8 @@ module udmap_mapping_model_data
   private
   public :: analysis_type, point_type, curve_type, model_type, backbone_table_type, &
     & backbone_eval_type
-  public :: set_damper, limit_force, limit_force_or_huge, regime_of, fill_point, check_forces, &
+  public :: check_model_damper, set_damper, limit_force, limit_force_or_huge, regime_of, &
+    & fill_point, check_forces, &
     & limit_force_backbone, damper_fingerprint
   public :: EIGEN_AUTO, EIGEN_DIRECT, EIGEN_MODAL
   public :: REGIME_STUCK, REGIME_PARTIAL_SLIP, REGIME_FULL_SLIP, REGIME_LIMIT
@@ -198,14 +199,19 @@ contains
       call fatal_error(error, "set_damper: the model is not built", UDMAP_EINPUT)
       return
     end if
-    if (.not.(damper%gamma_b > 0)) then
-      call fatal_error(error, "model: the damper has no positive base-cycle amplitude gamma_b", &
-        & UDMAP_EINPUT)
-      return
-    end if
+    call check_model_damper(damper, error)
+    if (allocated(error)) return
     model%damper => damper
     model%table%revision = -huge(1)
   end subroutine set_damper
+
+  !> The damper a model can take: one with a positive base-cycle amplitude gamma_b.
+  subroutine check_model_damper(damper, error)
+    type(damper_type), intent(in) :: damper
+    type(error_type), allocatable, intent(out) :: error
+    if (.not.(damper%gamma_b > 0)) call fatal_error(error, "model: the damper has no "// &
+      & "positive base-cycle amplitude gamma_b", UDMAP_EINPUT)
+  end subroutine check_model_damper
 
   !> The damper's summary numbers that the backbone table depends on besides k(gamma).
   pure function damper_fingerprint(damper) result(fp)
