@@ -41,8 +41,7 @@
 !> Every call builds the blade, the damper (tracing its loops) and the model anew and keeps
 !> nothing: pass all forces of interest in one call. Calls are independent and thread-safe as
 !> far as the kernel is (see udmap.h).
-module udmap_api_legacy_arrays
-  use, intrinsic :: iso_c_binding, only: c_double, c_int
+submodule (udmap_api_legacy_interface) udmap_api_legacy_arrays
   use udmap_core_kinds, only: wp
   use udmap_core_error, only: error_type, UDMAP_EINPUT
   use udmap_core_version, only: udmap_version_major, udmap_version_minor, udmap_version_patch
@@ -53,32 +52,16 @@ module udmap_api_legacy_arrays
   use udmap_mapping_model, only: analysis_type, point_type, curve_type, model_type, new_model, &
     & limit_force, backbone, response, response_curves, REGIME_LIMIT
   implicit none
-  private
-  public :: udmap_version_numbers, udmap_table_arrays, udmap_backbone_arrays, &
-    & udmap_response_arrays, udmap_curve_arrays
-  public :: LEGACY_NBEAM, LEGACY_NDAMPER_ASYMMETRIC, LEGACY_NDAMPER_JENKINS, &
-    & LEGACY_NANALYSIS_MIN, LEGACY_NANALYSIS_MAX, LEGACY_REGIME_UNBOUNDED
-
-  !> Length of BEAM.
-  integer, parameter :: LEGACY_NBEAM = 14
-  !> Length of DAMPER for the asymmetric damper and for the Jenkins element.
-  integer, parameter :: LEGACY_NDAMPER_ASYMMETRIC = 16, LEGACY_NDAMPER_JENKINS = 2
-  !> Allowed lengths of ANALYS.
-  integer, parameter :: LEGACY_NANALYSIS_MIN = 2, LEGACY_NANALYSIS_MAX = 7
-  !> REGIME value of a point without a finite response (zeta = 0 and F_E >= F_lim).
-  integer, parameter :: LEGACY_REGIME_UNBOUNDED = 4
 
 contains
 
   !> UDMAP_VERSION_NUMBERS(MAJOR, MINOR, PATCH): the version of the library.
   !>   MAJOR, MINOR, PATCH (output) INTEGER: e.g. 0, 1, 0 for "0.1.0".
-  subroutine udmap_version_numbers(major, minor, patch) &
-      & bind(C, name="udmap_version_numbers_")
-    integer(c_int), intent(out) :: major, minor, patch
+  module procedure udmap_version_numbers
     major = int(udmap_version_major, c_int)
     minor = int(udmap_version_minor, c_int)
     patch = int(udmap_version_patch, c_int)
-  end subroutine udmap_version_numbers
+  end procedure udmap_version_numbers
 
   !> UDMAP_TABLE_ARRAYS(DAMPER, NDAMPER, NGAMMA, GAMMA, KRE, KIM, BASE, INFO):
   !> the damper's complex stiffness k(gamma) = KRE + i KIM (PHYSICS.md 2.2) and its base cycle.
@@ -92,12 +75,7 @@ contains
   !>   7 BASE (output) DOUBLE PRECISION array, dimension (6): gamma_b [rad], gamma_s [rad],
   !>     M_max [N m], M_min [N m], k_stuck [N m/rad], lift_off (1 if a contact opens, else 0).
   !>   8 INFO (output) INTEGER: 0, -i for an invalid i-th argument, or 3, 4 (module header).
-  subroutine udmap_table_arrays(damper, ndamper, ngamma, gamma, k_re, k_im, base, info) &
-      & bind(C, name="udmap_table_arrays_")
-    integer(c_int), intent(in) :: ndamper, ngamma
-    real(c_double), intent(in) :: damper(ndamper), gamma(ngamma)
-    real(c_double), intent(out) :: k_re(ngamma), k_im(ngamma), base(6)
-    integer(c_int), intent(out) :: info
+  module procedure udmap_table_arrays
     type(damper_type) :: d
     type(error_type), allocatable :: error
     complex(wp) :: k
@@ -133,7 +111,7 @@ contains
     end do
     base = real([d%gamma_b, d%gamma_s, d%M_max, d%M_min, d%k_stuck, &
       & merge(1.0_wp, 0.0_wp, d%lift_off)], c_double)
-  end subroutine udmap_table_arrays
+  end procedure udmap_table_arrays
 
   !> UDMAP_BACKBONE_ARRAYS(BEAM, NBEAM, DAMPER, NDAMPER, ANALYS, NANALY, NFORCE, FE, GAMMAP,
   !>                       FRES, SIGMAA, UE, REGIME, FLIM, INFO):
@@ -158,18 +136,10 @@ contains
   !>     slip, 3 at or above F_lim, 4 unbounded (zeta = 0 and F_E >= F_lim: the numbers are 0).
   !>  14 FLIM (output) DOUBLE PRECISION: the limit force F_lim [N].
   !>  15 INFO (output) INTEGER: 0, -i for an invalid i-th argument, or 3, 4 (module header).
-  subroutine udmap_backbone_arrays(beam, nbeam, damper, ndamper, analysis, nanalysis, nforce, &
-      & F_E, gamma_P, f_res, sigma_a, u_E, regime, F_lim, info) &
-      & bind(C, name="udmap_backbone_arrays_")
-    integer(c_int), intent(in) :: nbeam, ndamper, nanalysis, nforce
-    real(c_double), intent(in) :: beam(nbeam), damper(ndamper), analysis(nanalysis), &
-      & F_E(nforce)
-    real(c_double), intent(out) :: gamma_P(nforce), f_res(nforce), sigma_a(nforce), &
-      & u_E(nforce), F_lim
-    integer(c_int), intent(out) :: regime(nforce), info
+  module procedure udmap_backbone_arrays
     call solve_points(beam, nbeam, damper, ndamper, analysis, nanalysis, nforce, F_E, gamma_P, &
       & f_res, sigma_a, u_E, regime, F_lim, info)
-  end subroutine udmap_backbone_arrays
+  end procedure udmap_backbone_arrays
 
   !> UDMAP_RESPONSE_ARRAYS(BEAM, NBEAM, DAMPER, NDAMPER, ANALYS, NANALY, FEXC, NFORCE, FE,
   !>                       GAMMAP, SIGMAA, UE, REGIME, FLIM, INFO):
@@ -185,19 +155,12 @@ contains
   !>  13 REGIME (output) INTEGER array, dimension (NFORCE): as in UDMAP_BACKBONE_ARRAYS.
   !>  14 FLIM (output) DOUBLE PRECISION: the limit force F_lim [N].
   !>  15 INFO (output) INTEGER: 0, -i for an invalid i-th argument, or 3, 4 (module header).
-  subroutine udmap_response_arrays(beam, nbeam, damper, ndamper, analysis, nanalysis, f_exc, &
-      & nforce, F_E, gamma_P, sigma_a, u_E, regime, F_lim, info) &
-      & bind(C, name="udmap_response_arrays_")
-    integer(c_int), intent(in) :: nbeam, ndamper, nanalysis, nforce
-    real(c_double), intent(in) :: beam(nbeam), damper(ndamper), analysis(nanalysis), f_exc, &
-      & F_E(nforce)
-    real(c_double), intent(out) :: gamma_P(nforce), sigma_a(nforce), u_E(nforce), F_lim
-    integer(c_int), intent(out) :: regime(nforce), info
+  module procedure udmap_response_arrays
     real(c_double), allocatable :: f_res(:)
     allocate(f_res(max(nforce, 0_c_int)))
     call solve_points(beam, nbeam, damper, ndamper, analysis, nanalysis, nforce, F_E, gamma_P, &
       & f_res, sigma_a, u_E, regime, F_lim, info, f_exc)
-  end subroutine udmap_response_arrays
+  end procedure udmap_response_arrays
 
   !> UDMAP_CURVE_ARRAYS(BEAM, NBEAM, DAMPER, NDAMPER, ANALYS, NANALY, FE, LAYERS, MAXPTS,
   !>                    NPTS, F, GAMMAP, SIGMAA, BRANCH, INFO):
@@ -217,13 +180,7 @@ contains
   !>  14 BRANCH (output) INTEGER array, dimension (MAXPTS): 0 below the peak frequency of the
   !>     layer, 1 above, 2 on the backbone.
   !>  15 INFO (output) INTEGER: 0, -i for an invalid i-th argument, or 3, 4 (module header).
-  subroutine udmap_curve_arrays(beam, nbeam, damper, ndamper, analysis, nanalysis, F_E, &
-      & layers, maxpts, npts, f, gamma_P, sigma_a, branch, info) &
-      & bind(C, name="udmap_curve_arrays_")
-    integer(c_int), intent(in) :: nbeam, ndamper, nanalysis, layers, maxpts
-    real(c_double), intent(in) :: beam(nbeam), damper(ndamper), analysis(nanalysis), F_E
-    integer(c_int), intent(out) :: npts, branch(maxpts), info
-    real(c_double), intent(out) :: f(maxpts), gamma_P(maxpts), sigma_a(maxpts)
+  module procedure udmap_curve_arrays
     type(blade_type), target :: blade
     type(damper_type), target :: d
     type(model_type) :: model
@@ -259,7 +216,7 @@ contains
     gamma_P(1:npts) = curves(1)%gamma_P
     sigma_a(1:npts) = curves(1)%sigma_a
     branch(1:npts) = int(curves(1)%branch, c_int)
-  end subroutine udmap_curve_arrays
+  end procedure udmap_curve_arrays
 
   ! ------------------------------------------------------------------ helpers
 
@@ -461,4 +418,4 @@ contains
     ok = abs(x) < real(huge(1), c_double)
     if (ok) ok = x == aint(x)
   end function whole
-end module udmap_api_legacy_arrays
+end submodule udmap_api_legacy_arrays

@@ -1,26 +1,35 @@
-!> Explicit interfaces of the plain-array entry points (api/legacy/arrays.f90) for Fortran
-!> 90+ callers of `use udmap`: declarations only, bound to the same symbols, so that the public
-!> module carries them without depending on the legacy implementation (which sits on the
-!> Fortran API).
+!> The plain-array API's declarations: its explicit interfaces (for Fortran 90+ callers of
+!> `use udmap`) and the lengths of its arrays. The implementation, on the Fortran API, is the
+!> submodule in api/legacy/arrays.f90, so the public module carries the interfaces without
+!> depending on it.
 module udmap_api_legacy_interface
   use, intrinsic :: iso_c_binding, only: c_double, c_int
   implicit none
   private
   public :: udmap_version_numbers, udmap_table_arrays, udmap_backbone_arrays, &
     & udmap_response_arrays, udmap_curve_arrays
+  public :: LEGACY_NBEAM, LEGACY_NDAMPER_ASYMMETRIC, LEGACY_NDAMPER_JENKINS, &
+    & LEGACY_NANALYSIS_MIN, LEGACY_NANALYSIS_MAX, LEGACY_REGIME_UNBOUNDED
+
+  !> Length of BEAM.
+  integer, parameter :: LEGACY_NBEAM = 14
+  !> Length of DAMPER for the asymmetric damper and for the Jenkins element.
+  integer, parameter :: LEGACY_NDAMPER_ASYMMETRIC = 16, LEGACY_NDAMPER_JENKINS = 2
+  !> Allowed lengths of ANALYS.
+  integer, parameter :: LEGACY_NANALYSIS_MIN = 2, LEGACY_NANALYSIS_MAX = 7
+  !> REGIME value of a point without a finite response (zeta = 0 and F_E >= F_lim).
+  integer, parameter :: LEGACY_REGIME_UNBOUNDED = 4
 
   interface
     !> UDMAP_VERSION_NUMBERS: documented at its implementation (api/legacy/arrays.f90).
-    subroutine udmap_version_numbers(major, minor, patch) &
+    module subroutine udmap_version_numbers(major, minor, patch) &
         & bind(C, name="udmap_version_numbers_")
-      import :: c_double, c_int
       integer(c_int), intent(out) :: major, minor, patch
     end subroutine udmap_version_numbers
 
     !> UDMAP_TABLE_ARRAYS: documented at its implementation (api/legacy/arrays.f90).
-    subroutine udmap_table_arrays(damper, ndamper, ngamma, gamma, k_re, k_im, base, info) &
+    module subroutine udmap_table_arrays(damper, ndamper, ngamma, gamma, k_re, k_im, base, info) &
         & bind(C, name="udmap_table_arrays_")
-      import :: c_double, c_int
       integer(c_int), intent(in) :: ndamper, ngamma
       real(c_double), intent(in) :: damper(ndamper), gamma(ngamma)
       real(c_double), intent(out) :: k_re(ngamma), k_im(ngamma), base(6)
@@ -28,10 +37,9 @@ module udmap_api_legacy_interface
     end subroutine udmap_table_arrays
 
     !> UDMAP_BACKBONE_ARRAYS: documented at its implementation (api/legacy/arrays.f90).
-    subroutine udmap_backbone_arrays(beam, nbeam, damper, ndamper, analysis, nanalysis, nforce, &
+    module subroutine udmap_backbone_arrays(beam, nbeam, damper, ndamper, analysis, nanalysis, nforce, &
         & F_E, gamma_P, f_res, sigma_a, u_E, regime, F_lim, info) &
         & bind(C, name="udmap_backbone_arrays_")
-      import :: c_double, c_int
       integer(c_int), intent(in) :: nbeam, ndamper, nanalysis, nforce
       real(c_double), intent(in) :: beam(nbeam), damper(ndamper), analysis(nanalysis), &
         & F_E(nforce)
@@ -41,10 +49,9 @@ module udmap_api_legacy_interface
     end subroutine udmap_backbone_arrays
 
     !> UDMAP_RESPONSE_ARRAYS: documented at its implementation (api/legacy/arrays.f90).
-    subroutine udmap_response_arrays(beam, nbeam, damper, ndamper, analysis, nanalysis, f_exc, &
+    module subroutine udmap_response_arrays(beam, nbeam, damper, ndamper, analysis, nanalysis, f_exc, &
         & nforce, F_E, gamma_P, sigma_a, u_E, regime, F_lim, info) &
         & bind(C, name="udmap_response_arrays_")
-      import :: c_double, c_int
       integer(c_int), intent(in) :: nbeam, ndamper, nanalysis, nforce
       real(c_double), intent(in) :: beam(nbeam), damper(ndamper), analysis(nanalysis), f_exc, &
         & F_E(nforce)
@@ -53,10 +60,9 @@ module udmap_api_legacy_interface
     end subroutine udmap_response_arrays
 
     !> UDMAP_CURVE_ARRAYS: documented at its implementation (api/legacy/arrays.f90).
-    subroutine udmap_curve_arrays(beam, nbeam, damper, ndamper, analysis, nanalysis, F_E, &
+    module subroutine udmap_curve_arrays(beam, nbeam, damper, ndamper, analysis, nanalysis, F_E, &
         & layers, maxpts, npts, f, gamma_P, sigma_a, branch, info) &
         & bind(C, name="udmap_curve_arrays_")
-      import :: c_double, c_int
       integer(c_int), intent(in) :: nbeam, ndamper, nanalysis, layers, maxpts
       real(c_double), intent(in) :: beam(nbeam), damper(ndamper), analysis(nanalysis), F_E
       integer(c_int), intent(out) :: npts, branch(maxpts), info
