@@ -1,6 +1,7 @@
 !> The caches a model keeps for the single-harmonic mapping (data only; the algorithms that fill
-!> and read them sit above): the band interpolant of the receptances (udmap_mapping_band_receptances),
-!> the bare blade as the mapping sees it and a layer's peak (udmap_mapping_layer), and the secular
+!> and read them sit above): the band interpolant of the receptances
+!> (udmap_mapping_band_receptances), the bare blade as the mapping sees it and a layer's peak
+!> (udmap_mapping_layer), and the secular
 !> equation of the eigenvalue start (udmap_mapping_eigen_start).
 module udmap_mapping_caches
   use udmap_core_kinds, only: wp
@@ -33,8 +34,8 @@ module udmap_mapping_caches
   integer, parameter :: PEAK_ABOVE_BAND = 2
 
   !> The bare blade as seen by the mapping: the blade it borrows, the fast interpolant of its
-  !> receptances over the band (udmap_mapping_band_receptances, when active) and a count of receptance
-  !> evaluations (the unit of cost of everything here).
+  !> receptances over the band (udmap_mapping_band_receptances, when active) and a count of
+  !> receptance evaluations (the unit of cost of everything here).
   type :: bare_type
     type(blade_type), pointer :: blade => null()
     type(band_receptances_type) :: band

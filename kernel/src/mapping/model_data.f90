@@ -181,7 +181,8 @@ module udmap_mapping_model_data
     !> Contact element and scratch of the multi-harmonic layers (PHYSICS.md 4.1).
     type(harmonic_workspace_type) :: harm
     !> Backbone points at H /= 1 after a change of F_E alone: interpolated in a verified table
-    !> of exact points where one holds F_E (udmap_mapping_harmonic_force_table), when force_table is set.
+    !> of exact points where one holds F_E (udmap_mapping_harmonic_force_table), when force_table is
+    !> set.
     logical :: force_table = .false.
     type(force_table_type) :: ftable
   end type model_type

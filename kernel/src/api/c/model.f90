@@ -157,8 +157,8 @@ contains
 
   !> int udmap_model_admissible_force(error, model, F_lim, sigma_all, rtol, double *F_adm):
   !> the largest F_E <= F_lim/2 whose resonant stress (sigma_a; sigma_max with more than one
-  !> harmonic) is at most sigma_all [Pa], refined to rtol (udmap_mapping_admissible); F_lim [N] as the
-  !> caller takes it (the smaller of F_lim and F_lim_backbone for the DOE).
+  !> harmonic) is at most sigma_all [Pa], refined to rtol (udmap_mapping_admissible); F_lim [N] as
+  !> the caller takes it (the smaller of F_lim and F_lim_backbone for the DOE).
   function udmap_model_admissible_force(errh, modelh, F_lim, sigma_all, rtol, F_adm) &
       & result(stat) bind(C, name="udmap_model_admissible_force")
     type(c_ptr), value :: errh, modelh
@@ -355,8 +355,8 @@ contains
   end function udmap_model_set_harmonics
 
   !> int udmap_model_set_force_table(error, model, on): with on /= 0, backbone points at
-  !> harmonics /= 1 come from the force table (udmap_mapping_harmonic_force_table; what the FMU uses after a
-  !> change of F_E alone): interpolated to harmonic_tol/1000 where a verified panel of exact
+  !> harmonics /= 1 come from the force table (udmap_mapping_harmonic_force_table; what the FMU uses
+  !> after a change of F_E alone): interpolated to harmonic_tol/1000 where a verified panel of exact
   !> points holds F_E, solved exactly elsewhere. Off (0) by default.
   function udmap_model_set_force_table(errh, modelh, on) result(stat) &
       & bind(C, name="udmap_model_set_force_table")

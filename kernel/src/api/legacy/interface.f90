@@ -37,8 +37,8 @@ module udmap_api_legacy_interface
     end subroutine udmap_table_arrays
 
     !> UDMAP_BACKBONE_ARRAYS: documented at its implementation (api/legacy/arrays.f90).
-    module subroutine udmap_backbone_arrays(beam, nbeam, damper, ndamper, analysis, nanalysis, nforce, &
-        & F_E, gamma_P, f_res, sigma_a, u_E, regime, F_lim, info) &
+    module subroutine udmap_backbone_arrays(beam, nbeam, damper, ndamper, analysis, nanalysis, &
+        & nforce, F_E, gamma_P, f_res, sigma_a, u_E, regime, F_lim, info) &
         & bind(C, name="udmap_backbone_arrays_")
       integer(c_int), intent(in) :: nbeam, ndamper, nanalysis, nforce
       real(c_double), intent(in) :: beam(nbeam), damper(ndamper), analysis(nanalysis), &
@@ -49,8 +49,8 @@ module udmap_api_legacy_interface
     end subroutine udmap_backbone_arrays
 
     !> UDMAP_RESPONSE_ARRAYS: documented at its implementation (api/legacy/arrays.f90).
-    module subroutine udmap_response_arrays(beam, nbeam, damper, ndamper, analysis, nanalysis, f_exc, &
-        & nforce, F_E, gamma_P, sigma_a, u_E, regime, F_lim, info) &
+    module subroutine udmap_response_arrays(beam, nbeam, damper, ndamper, analysis, nanalysis, &
+        & f_exc, nforce, F_E, gamma_P, sigma_a, u_E, regime, F_lim, info) &
         & bind(C, name="udmap_response_arrays_")
       integer(c_int), intent(in) :: nbeam, ndamper, nanalysis, nforce
       real(c_double), intent(in) :: beam(nbeam), damper(ndamper), analysis(nanalysis), f_exc, &

@@ -1,6 +1,6 @@
 !> Platform Centred Reduction (PHYSICS.md 1.3, paper section 2.1) of a sparse FE blade to a
-!> small dense model: the rigid platform by transformation (udmap_blade_reduce_rigid_platform), then a
-!> Craig-Bampton reduction onto the seven boundary DOFs (the platform's six rigid DOFs, gamma_P
+!> small dense model: the rigid platform by transformation (udmap_blade_reduce_rigid_platform), then
+!> a Craig-Bampton reduction onto the seven boundary DOFs (the platform's six rigid DOFs, gamma_P
 !> first, and the excitation DOF u_E last): static constraint modes Psi = -K_II^-1 K_IB, the
 !> lowest fixed-interface modes (ARPACK shift-invert on a MUMPS factorisation), and optionally
 !> blocks of residual (Krylov) vectors K_II^-1 M_II X that carry the inertia of the modes left
@@ -16,8 +16,8 @@ module udmap_blade_reduce_craig_bampton
   use udmap_blade_reduce_sparse_factor, only: sparse_factor_type, factor_analyse, factor_numeric, &
     & factor_solve, factor_free
   use udmap_blade_reduce_shift_invert, only: lowest_modes
-  use udmap_blade_reduce_rigid_platform, only: platform_map_type, new_platform_map, transform_matrix, &
-    & transform_vector, n_boundary, b_gamma, b_exc
+  use udmap_blade_reduce_rigid_platform, only: platform_map_type, new_platform_map, &
+    & transform_matrix, transform_vector, n_boundary, b_gamma, b_exc
   use udmap_core_lapack, only: dsygv
   implicit none
   private

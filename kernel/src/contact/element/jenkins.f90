@@ -1,5 +1,6 @@
 !> The rotational Jenkins element (PHYSICS.md 2.4) as a hysteretic element: spring kt in series
-!> with a slider of limit M_slip, exact along any path (the time-domain face of udmap_damper_jenkins).
+!> with a slider of limit M_slip, exact along any path (the time-domain face of
+!> udmap_damper_jenkins).
 module udmap_contact_element_jenkins
   use udmap_core_kinds, only: wp
   use udmap_core_error, only: error_type, fatal_error, UDMAP_EINPUT

@@ -6,8 +6,9 @@
 !>   R_0 = Gamma_0 + H_gg(0) (M_0 - M_ref) = 0,   R_h = Gamma_h + H_gg(h omega) M_h = 0 (h = 2..H),
 !>
 !> M_h the harmonics of the damper moment over the periodic gamma(t), traced exactly through
-!> the contact model with its loading history (udmap_contact_aft_moment, shared with the standard method), and
-!> M_ref the static moment of the loaded damper (the blade's reference state). Newton with the
+!> the contact model with its loading history (udmap_contact_aft_moment, shared with the standard
+!> method), and M_ref the static moment of the loaded damper (the blade's reference state). Newton
+!> with the
 !> damper Jacobian dM/dGamma in closed form from one trace (aft_moment_jacobian; finite
 !> differences, 2H traces, where the events change within the perturbation), reused while
 !> Newton contracts, and a backtracking line search. The force that puts the blade on the

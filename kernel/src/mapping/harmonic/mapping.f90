@@ -125,8 +125,9 @@ contains
       & model%analysis%eigen_method = EIGEN_MODAL
   end function starts_modal
 
-  !> The backbone point at p1%F_E from the force table (udmap_mapping_harmonic_force_table): interpolated
-  !> where a verified panel holds F_E, else solved exactly. Building a panel solves its points
+  !> The backbone point at p1%F_E from the force table (udmap_mapping_harmonic_force_table):
+  !> interpolated where a verified panel holds F_E, else solved exactly. Building a panel solves its
+  !> points
   !> exactly; a point that fails there only makes the panel finer (the asked force then gets
   !> its own exact solve, and its own error if any).
   subroutine table_point(model, p1, point, error)
