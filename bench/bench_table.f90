@@ -3,11 +3,12 @@
 !> and the cost of one k(gamma) evaluation. Prints a JSON array of records on stdout.
 program bench_table
   use, intrinsic :: iso_fortran_env, only: int64, output_unit
-  use udmap_kinds, only: wp
-  use udmap_error, only: error_type
-  use udmap_damper, only: damper_type, asymmetric_params_type, new_asymmetric_damper
+  use udmap_core_kinds, only: wp
+  use udmap_core_error, only: error_type
+  use udmap_damper_type, only: damper_type, asymmetric_params_type, new_asymmetric_damper
   use udmap_damper_params, only: blade_a_damper_params
-  use udmap_damper_tracer, only: damper_geometry_type, new_damper_geometry
+  use udmap_damper_tracer_core, only: damper_geometry_type
+  use udmap_damper_tracer, only: new_damper_geometry
   use udmap_damper_loops, only: ramp_type, base_cycle_type, loop_type, loop_workspace_type, &
     & trace_ramp, trace_base_cycle, steady_loop, loop_stiffness
   implicit none

@@ -4,10 +4,10 @@
 !> max of `repeats` samples. Prints a table and, with the argument --json, one JSON object per
 !> line (read by bench/bench_blade.py). Takes some ten seconds.
 program blade_receptances
-  use udmap_kinds, only: wp, pi
-  use udmap_error, only: error_type
-  use udmap_beam, only: beam_params_type
-  use udmap_blade, only: blade_type, receptances_type, new_beam_blade, new_matrices_blade, &
+  use udmap_core_kinds, only: wp, pi
+  use udmap_core_error, only: error_type
+  use udmap_blade_beam, only: beam_params_type
+  use udmap_blade_type, only: blade_type, receptances_type, new_beam_blade, new_matrices_blade, &
     & layer_response
   implicit none
   type(beam_params_type) :: a

@@ -3,16 +3,16 @@
 !> beside it. 1 N is partial slip: there the time integration from rest and the replayed
 !> history of PHYSICS.md 6 (which the layers follow) differ. One JSON object per line.
 program harmonics_dti
-  use udmap_kinds, only: wp
-  use udmap_error, only: error_type
-  use udmap_beam, only: beam_params_type
-  use udmap_blade, only: blade_type, new_beam_blade
-  use udmap_damper, only: damper_type, new_asymmetric_damper
+  use udmap_core_kinds, only: wp
+  use udmap_core_error, only: error_type
+  use udmap_blade_beam, only: beam_params_type
+  use udmap_blade_type, only: blade_type, new_beam_blade
+  use udmap_damper_type, only: damper_type, new_asymmetric_damper
   use udmap_damper_params, only: blade_a_damper_params
-  use udmap_model, only: model_type, analysis_type, point_type, new_model, backbone
-  use udmap_linear_structure, only: structure_type, structure_from_blade
-  use udmap_contact_element, only: contact_element_type, new_contact_element
-  use udmap_newmark, only: dti_settings_type, dti_point_type, dti_peak
+  use udmap_mapping_model, only: model_type, analysis_type, point_type, new_model, backbone
+  use udmap_baseline_linear_structure, only: structure_type, structure_from_blade
+  use udmap_contact_element_asymmetric, only: contact_element_type, new_contact_element
+  use udmap_baseline_newmark, only: dti_settings_type, dti_point_type, dti_peak
   implicit none
   type(beam_params_type) :: bp
   type(blade_type), target :: blade

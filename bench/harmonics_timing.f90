@@ -6,17 +6,17 @@
 !> half its moment range). One JSON object per line on stdout (bench/bench_harmonics.py).
 program harmonics_timing
   use, intrinsic :: iso_fortran_env, only: int64
-  use udmap_kinds, only: wp
-  use udmap_error, only: error_type
-  use udmap_beam, only: beam_params_type
-  use udmap_blade, only: blade_type, new_beam_blade
-  use udmap_damper, only: damper_type, new_asymmetric_damper, new_jenkins_damper
+  use udmap_core_kinds, only: wp
+  use udmap_core_error, only: error_type
+  use udmap_blade_beam, only: beam_params_type
+  use udmap_blade_type, only: blade_type, new_beam_blade
+  use udmap_damper_type, only: damper_type, new_asymmetric_damper, new_jenkins_damper
   use udmap_damper_params, only: blade_a_damper_params
-  use udmap_model, only: model_type, analysis_type, point_type, new_model, backbone
-  use udmap_linear_structure, only: structure_type, structure_from_blade
-  use udmap_contact_element, only: contact_element_type, new_contact_element
-  use udmap_hysteretic, only: jenkins_element_type, new_jenkins_element
-  use udmap_hbm, only: hbm_settings_type, hbm_point_type, hbm_peaks
+  use udmap_mapping_model, only: model_type, analysis_type, point_type, new_model, backbone
+  use udmap_baseline_linear_structure, only: structure_type, structure_from_blade
+  use udmap_contact_element_asymmetric, only: contact_element_type, new_contact_element
+  use udmap_contact_element_jenkins, only: jenkins_element_type, new_jenkins_element
+  use udmap_baseline_hbm, only: hbm_settings_type, hbm_point_type, hbm_peaks
   implicit none
   type(beam_params_type) :: bp
   type(blade_type), target :: blade

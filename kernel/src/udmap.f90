@@ -23,20 +23,20 @@
 !> naming the parameter. The plain-array procedures (udmap_backbone_arrays, ...) are here too,
 !> with explicit interfaces, for programs that mix both styles.
 module udmap
-  use udmap_kinds, only: wp
-  use udmap_error, only: error_type, fatal_error, UDMAP_OK, UDMAP_EINPUT, UDMAP_EPHYSICS, UDMAP_ENUMERIC
-  use udmap_version_info, only: udmap_version_string, udmap_version_major, &
-    & udmap_version_minor, udmap_version_patch
-  use udmap_beam, only: beam_params_type
-  use udmap_blade, only: blade_type, new_beam_blade, new_matrices_blade, read_matrices_blade, &
-    & export_blade
-  use udmap_damper, only: damper_type, asymmetric_params_type, new_asymmetric_damper, &
-    & new_jenkins_damper, new_table_damper
-  use udmap_model, only: analysis_type, point_type, curve_type, model_type, new_model, &
+  use udmap_core_kinds, only: wp
+  use udmap_core_error, only: error_type, UDMAP_OK, UDMAP_EINPUT, UDMAP_EPHYSICS, UDMAP_ENUMERIC
+  use udmap_core_version, only: udmap_version, udmap_version_major, udmap_version_minor, &
+    & udmap_version_patch
+  use udmap_blade_beam, only: beam_params_type
+  use udmap_blade_type, only: blade_type, new_beam_blade, new_matrices_blade
+  use udmap_blade_io_matrices, only: read_matrices_blade, export_blade
+  use udmap_damper_type, only: damper_type, asymmetric_params_type, new_asymmetric_damper, &
+    & new_jenkins_damper, new_table_damper, stiffness_table
+  use udmap_mapping_model, only: analysis_type, point_type, curve_type, model_type, new_model, &
     & limit_force, backbone_curve, backbone, response, response_curves, set_harmonics, &
     & admissible_force, REGIME_STUCK, REGIME_PARTIAL_SLIP, REGIME_FULL_SLIP, REGIME_LIMIT, &
     & BRANCH_LOWER, BRANCH_UPPER, BRANCH_TURNING
-  use udmap_api_legacy, only: udmap_version_numbers, udmap_table_arrays, &
+  use udmap_api_legacy_interface, only: udmap_version_numbers, udmap_table_arrays, &
     & udmap_backbone_arrays, udmap_response_arrays, udmap_curve_arrays
   implicit none
   private
@@ -54,52 +54,7 @@ module udmap
     & backbone_curve, backbone, response, response_curves, set_harmonics, admissible_force
   public :: REGIME_STUCK, REGIME_PARTIAL_SLIP, REGIME_FULL_SLIP, REGIME_LIMIT
   public :: BRANCH_LOWER, BRANCH_UPPER, BRANCH_TURNING
-  ! plain arrays (kernel/src/api_legacy.f90)
+  ! plain arrays (kernel/src/api/legacy/arrays.f90, explicit interfaces only)
   public :: udmap_version_numbers, udmap_table_arrays, udmap_backbone_arrays, &
     & udmap_response_arrays, udmap_curve_arrays
-
-contains
-
-  !> The library version as "major.minor.patch" (the version of the linked library, which
-  !> may differ from the .mod files a program was compiled against if it was swapped later).
-  pure function udmap_version() result(version)
-    character(len=:), allocatable :: version
-    version = udmap_version_string
-  end function udmap_version
-
-  !> The damper's complex stiffness k(gamma) = k_Re + i k_Im [N m/rad] (PHYSICS.md 2.2) at the
-  !> amplitudes gamma [rad]: the table of the damper, with the amplitudes checked (positive,
-  !> finite, within the range of a measured table without extrapolation).
-  subroutine stiffness_table(damper, gamma, k, error)
-    type(damper_type), intent(in) :: damper
-    real(wp), intent(in) :: gamma(:)
-    complex(wp), intent(out) :: k(:)
-    type(error_type), allocatable, intent(out) :: error
-    character(len=24) :: buf
-    integer :: i
-    k = 0
-    if (damper%kind == 0) then
-      call fatal_error(error, "stiffness_table: the damper has not been created", UDMAP_EINPUT)
-      return
-    end if
-    if (size(k) /= size(gamma)) then
-      call fatal_error(error, "stiffness_table: k must have the size of gamma", UDMAP_EINPUT)
-      return
-    end if
-    do i = 1, size(gamma)
-      if (.not.(gamma(i) > 0 .and. gamma(i) <= damper%gamma_max)) then
-        write(buf, '(es24.16)') gamma(i)
-        if (gamma(i) > damper%gamma_max .and. gamma(i) <= huge(1.0_wp)) then
-          call fatal_error(error, "stiffness_table: gamma = "//trim(adjustl(buf))//" rad lies "// &
-            & "beyond the last row of the measured table (give delta_M to extrapolate)", &
-            & UDMAP_EINPUT)
-        else
-          call fatal_error(error, "stiffness_table: gamma must be a positive finite amplitude "// &
-            & "[rad], got "//trim(adjustl(buf)), UDMAP_EINPUT)
-        end if
-        return
-      end if
-    end do
-    k = damper%stiffness(gamma)
-  end subroutine stiffness_table
 end module udmap

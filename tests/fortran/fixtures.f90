@@ -2,14 +2,14 @@
 !> damper is udmap_damper_params' blade_a_damper_params), the spring chain, the independent
 !> quadruple-precision references and small helpers that several suites need.
 module fixtures
-  use udmap_kinds, only: wp, pi
-  use udmap_error, only: error_type
-  use udmap_beam, only: beam_params_type
-  use udmap_blade, only: blade_type, receptances_type, new_beam_blade, new_matrices_blade
-  use udmap_damper, only: damper_type, new_asymmetric_damper
+  use udmap_core_kinds, only: wp, pi
+  use udmap_core_error, only: error_type
+  use udmap_blade_beam, only: beam_params_type
+  use udmap_blade_type, only: blade_type, receptances_type, new_beam_blade, new_matrices_blade
+  use udmap_damper_type, only: damper_type, new_asymmetric_damper
   use udmap_damper_params, only: blade_a_damper_params
-  use udmap_damper_tracer, only: CONTACT_SLIP_POS, CONTACT_SLIP_NEG
-  use udmap_model, only: analysis_type, model_type, point_type, new_model, backbone
+  use udmap_damper_tracer_core, only: CONTACT_SLIP_POS, CONTACT_SLIP_NEG
+  use udmap_mapping_model, only: analysis_type, model_type, point_type, new_model, backbone
   use testing, only: test_suite, check_no_error
   implicit none
   private

@@ -6,9 +6,9 @@
 module test_admissible
   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_positive_inf
   use testing, only: test_suite, check_close, check_true, check_error, unittest_type, new_unittest
-  use udmap_kinds, only: wp, pi
-  use udmap_error, only: error_type, UDMAP_EINPUT, UDMAP_EPHYSICS
-  use udmap_admissible, only: admissible_search_type, admissible_start, admissible_next, &
+  use udmap_core_kinds, only: wp, pi
+  use udmap_core_error, only: error_type, UDMAP_EINPUT, UDMAP_EPHYSICS
+  use udmap_mapping_admissible, only: admissible_search_type, admissible_start, admissible_next, &
     & admissible_update, admissible_grid, n_grid, grid_decades
   implicit none
   private

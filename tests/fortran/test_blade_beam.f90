@@ -2,10 +2,10 @@
 !> airfoil as a clamped cantilever (closed form), convergence under mesh refinement (O(h^4) for
 !> cubic Hermite elements) and validation of every parameter.
 module test_blade_beam
-  use udmap_kinds, only: wp, pi
-  use udmap_error, only: error_type, UDMAP_EINPUT
-  use udmap_beam, only: beam_params_type
-  use udmap_blade, only: blade_type, new_beam_blade, new_matrices_blade
+  use udmap_core_kinds, only: wp, pi
+  use udmap_core_error, only: error_type, UDMAP_EINPUT
+  use udmap_blade_beam, only: beam_params_type
+  use udmap_blade_type, only: blade_type, new_beam_blade, new_matrices_blade
   use fixtures, only: blade_a_beam_params, ieee_nan, ieee_inf
   use testing, only: test_suite, check_close, check_true, check_no_error, check_error, &
     & unittest_type, new_unittest

@@ -5,10 +5,10 @@
 !> A double-precision solve would not do as reference: this stiffness has eps kappa ~ 1e-3 and a
 !> plain double solve is off by ~0.7 % (that is why the kernel refines its solves).
 module test_blade_large
-  use udmap_kinds, only: wp, pi
-  use udmap_error, only: error_type
-  use udmap_beam, only: beam_params_type
-  use udmap_blade, only: blade_type, receptances_type, new_beam_blade, layer_response
+  use udmap_core_kinds, only: wp, pi
+  use udmap_core_error, only: error_type
+  use udmap_blade_beam, only: beam_params_type
+  use udmap_blade_type, only: blade_type, receptances_type, new_beam_blade, layer_response
   use fixtures, only: blade_a_beam_params, qp, receptances_from_solution
   use testing, only: test_suite, check_close, check_true, check_no_error, unittest_type, &
     & new_unittest

@@ -2,10 +2,11 @@
 !> round trip of doubles, the formats and fields accepted, and a clear error (status 2, naming
 !> the file and line) for each kind of malformed file.
 module test_blade_mmio
-  use udmap_kinds, only: wp
-  use udmap_error, only: error_type, UDMAP_EINPUT
-  use udmap_mmio, only: mtx_type, read_mtx, write_mtx, mtx_to_dense, mtx_bandwidth
-  use udmap_blade, only: blade_type, read_matrices_blade
+  use udmap_core_kinds, only: wp
+  use udmap_core_error, only: error_type, UDMAP_EINPUT
+  use udmap_blade_io_mmio, only: mtx_type, read_mtx, write_mtx, mtx_to_dense, mtx_bandwidth
+  use udmap_blade_type, only: blade_type
+  use udmap_blade_io_matrices, only: read_matrices_blade
   use fixtures, only: temp_dir
   use testing, only: test_suite, check_close, check_true, check_no_error, check_error, &
     & unittest_type, new_unittest

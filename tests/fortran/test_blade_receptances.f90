@@ -7,11 +7,12 @@
 !> layer response against a direct solve with the damper stiffness, the Matrix Market round
 !> trip and the input errors of imported matrices.
 module test_blade_receptances
-  use udmap_kinds, only: wp, pi
-  use udmap_error, only: error_type, UDMAP_EINPUT
-  use udmap_beam, only: beam_params_type
-  use udmap_blade, only: blade_type, receptances_type, new_beam_blade, new_matrices_blade, &
-    & read_matrices_blade, export_blade, layer_response
+  use udmap_core_kinds, only: wp, pi
+  use udmap_core_error, only: error_type, UDMAP_EINPUT
+  use udmap_blade_beam, only: beam_params_type
+  use udmap_blade_type, only: blade_type, receptances_type, new_beam_blade, new_matrices_blade, &
+    & layer_response
+  use udmap_blade_io_matrices, only: read_matrices_blade, export_blade
   use fixtures, only: blade_a_beam_params, ieee_nan, temp_dir, qp, receptances_from_solution
   use testing, only: test_suite, check_close, check_true, check_no_error, check_error, &
     & unittest_type, new_unittest

@@ -1,11 +1,12 @@
 !> The asymmetric damper of blade_a (PHYSICS.md 2.1-2.3): reference numbers, full-slip statics,
 !> scaling laws, the elongation law against direct loops, and the table against direct loops.
 module test_damper_blade_a
-  use udmap_kinds, only: wp, pi
-  use udmap_error, only: error_type
-  use udmap_damper, only: damper_type, asymmetric_params_type, new_asymmetric_damper
+  use udmap_core_kinds, only: wp, pi
+  use udmap_core_error, only: error_type
+  use udmap_damper_type, only: damper_type, asymmetric_params_type, new_asymmetric_damper
   use udmap_damper_params, only: blade_a_damper_params
-  use udmap_damper_tracer, only: full_slip_moment, CONTACT_SLIP_POS, CONTACT_SLIP_NEG
+  use udmap_damper_tracer, only: full_slip_moment
+  use udmap_damper_tracer_core, only: CONTACT_SLIP_POS, CONTACT_SLIP_NEG
   use udmap_damper_loops, only: loop_type, loop_workspace_type, ramp_type, cf_only_ramp, &
     & steady_loop, loop_stiffness
   use fixtures, only: sign_of

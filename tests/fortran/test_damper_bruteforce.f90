@@ -3,9 +3,9 @@
 !> from PHYSICS.md 2.1 directly (own kinematics, own linear algebra). Step refinement shows
 !> convergence to the exact values.
 module test_damper_bruteforce
-  use udmap_kinds, only: wp, pi
-  use udmap_error, only: error_type
-  use udmap_damper, only: damper_type, asymmetric_params_type, new_asymmetric_damper
+  use udmap_core_kinds, only: wp, pi
+  use udmap_core_error, only: error_type
+  use udmap_damper_type, only: damper_type, asymmetric_params_type, new_asymmetric_damper
   use udmap_damper_params, only: blade_a_damper_params
   use testing, only: test_suite, check_close, check_true, check_no_error, unittest_type, &
     & new_unittest

@@ -2,11 +2,12 @@
 !> against loops traced directly from the virgin state, below and above gamma_b, and the
 !> plateau moments against full-slip statics where both plateaus slip everywhere.
 module test_damper_geometries
-  use udmap_kinds, only: wp
-  use udmap_error, only: error_type
-  use udmap_damper, only: damper_type, asymmetric_params_type, new_asymmetric_damper
+  use udmap_core_kinds, only: wp
+  use udmap_core_error, only: error_type
+  use udmap_damper_type, only: damper_type, asymmetric_params_type, new_asymmetric_damper
   use udmap_damper_params, only: blade_a_damper_params
-  use udmap_damper_tracer, only: full_slip_moment, CONTACT_SLIP_POS, CONTACT_SLIP_NEG
+  use udmap_damper_tracer, only: full_slip_moment
+  use udmap_damper_tracer_core, only: CONTACT_SLIP_POS, CONTACT_SLIP_NEG
   use fixtures, only: sign_of
   use testing, only: test_suite, check_close, check_true, check_no_error, unittest_type, &
     & new_unittest

@@ -1,9 +1,9 @@
 !> Damper kinds "jenkins" and "table" (PHYSICS.md 2.4).
 module test_damper_kinds
   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
-  use udmap_kinds, only: wp, pi
-  use udmap_error, only: error_type, UDMAP_EINPUT
-  use udmap_damper, only: damper_type, new_jenkins_damper, new_table_damper
+  use udmap_core_kinds, only: wp, pi
+  use udmap_core_error, only: error_type, UDMAP_EINPUT
+  use udmap_damper_type, only: damper_type, new_jenkins_damper, new_table_damper
   use testing, only: test_suite, check_close, check_true, check_no_error, check_error, &
     & unittest_type, new_unittest
   implicit none

@@ -2,9 +2,9 @@
 !> flag is raised and k is still traced exactly. Input checks and physics errors.
 module test_damper_liftoff
   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
-  use udmap_kinds, only: wp
-  use udmap_error, only: error_type, UDMAP_EINPUT, UDMAP_EPHYSICS
-  use udmap_damper, only: damper_type, asymmetric_params_type, new_asymmetric_damper
+  use udmap_core_kinds, only: wp
+  use udmap_core_error, only: error_type, UDMAP_EINPUT, UDMAP_EPHYSICS
+  use udmap_damper_type, only: damper_type, asymmetric_params_type, new_asymmetric_damper
   use udmap_damper_params, only: blade_a_damper_params
   use testing, only: test_suite, check_close, check_true, check_no_error, check_error, &
     & unittest_type, new_unittest

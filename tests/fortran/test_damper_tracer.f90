@@ -1,12 +1,12 @@
 !> The contact-level primitive: replaying gamma(t) sample by sample with advance is exact,
 !> however coarse the samples (events inside a step are resolved).
 module test_damper_tracer
-  use udmap_kinds, only: wp, pi
-  use udmap_error, only: error_type, UDMAP_EINPUT
-  use udmap_damper, only: damper_type, new_asymmetric_damper
+  use udmap_core_kinds, only: wp, pi
+  use udmap_core_error, only: error_type, UDMAP_EINPUT
+  use udmap_damper_type, only: damper_type, new_asymmetric_damper
   use udmap_damper_params, only: blade_a_damper_params
-  use udmap_damper_tracer, only: damper_state_type, virgin_state, ramp_CF, advance, &
-    & restoring_moment, CONTACT_OPEN
+  use udmap_damper_tracer_core, only: damper_state_type, CONTACT_OPEN
+  use udmap_damper_tracer, only: virgin_state, ramp_CF, advance, restoring_moment
   use fixtures, only: ieee_nan
   use testing, only: test_suite, check_close, check_true, check_no_error, check_error, &
     & unittest_type, new_unittest

@@ -10,12 +10,12 @@
 !> - the neutral wedge mu = tan(beta): an error naming mu and the angle where the loops for mu
 !>   just below and just above tan(beta) differ, the limit where they agree.
 module test_damper_wedge
-  use udmap_kinds, only: wp, pi
-  use udmap_error, only: error_type, UDMAP_EPHYSICS
-  use udmap_damper, only: damper_type, asymmetric_params_type, new_asymmetric_damper
+  use udmap_core_kinds, only: wp, pi
+  use udmap_core_error, only: error_type, UDMAP_EPHYSICS
+  use udmap_damper_type, only: damper_type, asymmetric_params_type, new_asymmetric_damper
   use udmap_damper_params, only: blade_a_damper_params
-  use udmap_damper_tracer, only: damper_geometry_type, damper_state_type, new_damper_geometry, &
-    & trace_gamma, contact_forces, restoring_moment
+  use udmap_damper_tracer_core, only: damper_geometry_type, damper_state_type, contact_forces
+  use udmap_damper_tracer, only: new_damper_geometry, trace_gamma, restoring_moment
   use udmap_damper_loops, only: ramp_type, loop_type, loop_workspace_type, trace_ramp, &
     & steady_loop, loop_moment
   use testing, only: test_suite, check_close, check_true, check_no_error, check_error, &

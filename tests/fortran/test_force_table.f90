@@ -6,8 +6,9 @@
 module test_force_table
   use, intrinsic :: iso_fortran_env, only: int64
   use testing, only: test_suite, check_true, unittest_type, new_unittest
-  use udmap_kinds, only: wp
-  use udmap_force_table, only: force_table_type, table_reset, table_lookup, table_first_visit, &
+  use udmap_core_kinds, only: wp
+  use udmap_mapping_harmonic_types, only: force_table_type
+  use udmap_mapping_harmonic_force_table, only: table_reset, table_lookup, table_first_visit, &
     & table_panel, table_has_node, table_add_node, table_judge, node_force, TABLE_MISSING, &
     & TABLE_VERIFIED, TABLE_EXACT, TABLE_SPLIT, LEVEL_MAX
   implicit none

@@ -3,13 +3,13 @@
 !> 1/N^2, phase equivariance, multi-harmonic waveforms against a very fine sampled AFT, and the
 !> closed-form Jacobian (aft_moment_jacobian) against finite differences of the moments.
 module test_hbm_aft
-  use udmap_kinds, only: wp, pi
-  use udmap_error, only: error_type
-  use udmap_hysteretic, only: jenkins_element_type, new_jenkins_element
-  use udmap_aft, only: aft_workspace_type, aft_moment, aft_moment_jacobian, waveform_extrema, &
-    & waveform_value
-  use udmap_hysteretic, only: hysteretic_element_type
-  use udmap_contact_element, only: contact_element_type, new_contact_element
+  use udmap_core_kinds, only: wp, pi
+  use udmap_core_error, only: error_type
+  use udmap_contact_element_jenkins, only: jenkins_element_type, new_jenkins_element
+  use udmap_contact_aft_moment, only: aft_workspace_type, aft_moment, aft_moment_jacobian
+  use udmap_contact_aft_waveform, only: waveform_extrema, waveform_value
+  use udmap_contact_element, only: hysteretic_element_type
+  use udmap_contact_element_asymmetric, only: contact_element_type, new_contact_element
   use udmap_damper_params, only: blade_a_damper_params
   use testing, only: test_suite, check_close, check_true, check_no_error, unittest_type, &
     & new_unittest

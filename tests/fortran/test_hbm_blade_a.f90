@@ -3,17 +3,17 @@
 !> converged in H in gross slip and stuck, the single-harmonic model error, and the history
 !> dependence of partial slip that makes the time integration differ there (PHYSICS.md 7).
 module test_hbm_blade_a
-  use udmap_kinds, only: wp, pi
-  use udmap_error, only: error_type
-  use udmap_blade, only: blade_type
-  use udmap_damper, only: damper_type
+  use udmap_core_kinds, only: wp, pi
+  use udmap_core_error, only: error_type
+  use udmap_blade_type, only: blade_type
+  use udmap_damper_type, only: damper_type
   use udmap_damper_params, only: blade_a_damper_params
-  use udmap_model, only: model_type, analysis_type, point_type, new_model, backbone
-  use udmap_linear_structure, only: structure_type, structure_from_blade
-  use udmap_contact_element, only: contact_element_type, new_contact_element
-  use udmap_aft, only: aft_workspace_type, aft_moment
-  use udmap_hbm, only: hbm_settings_type, hbm_point_type, hbm_peaks, hbm_response
-  use udmap_newmark, only: dti_settings_type, dti_point_type, dti_response
+  use udmap_mapping_model, only: model_type, analysis_type, point_type, new_model, backbone
+  use udmap_baseline_linear_structure, only: structure_type, structure_from_blade
+  use udmap_contact_element_asymmetric, only: contact_element_type, new_contact_element
+  use udmap_contact_aft_moment, only: aft_workspace_type, aft_moment
+  use udmap_baseline_hbm, only: hbm_settings_type, hbm_point_type, hbm_peaks, hbm_response
+  use udmap_baseline_newmark, only: dti_settings_type, dti_point_type, dti_response
   use fixtures, only: blade_a_with_damper, blade_a_band
   use testing, only: test_suite, check_close, check_true, check_no_error, unittest_type, &
     & new_unittest

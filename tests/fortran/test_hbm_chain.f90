@@ -3,11 +3,11 @@
 !> and the H = 1 peaks, stress and u_E agree with an independent computation (numpy/scipy:
 !> dense solves for the receptances, closed-form k(a), F_bb(a) = F_E solved by Brent).
 module test_hbm_chain
-  use udmap_kinds, only: wp
-  use udmap_error, only: error_type
-  use udmap_linear_structure, only: structure_type, new_structure
-  use udmap_hysteretic, only: jenkins_element_type, new_jenkins_element
-  use udmap_hbm, only: hbm_settings_type, hbm_point_type, hbm_peak, HBM_FULL
+  use udmap_core_kinds, only: wp
+  use udmap_core_error, only: error_type
+  use udmap_baseline_linear_structure, only: structure_type, new_structure
+  use udmap_contact_element_jenkins, only: jenkins_element_type, new_jenkins_element
+  use udmap_baseline_hbm, only: hbm_settings_type, hbm_point_type, hbm_peak, HBM_FULL
   use fixtures, only: spring_chain
   use testing, only: test_suite, check_close, check_true, check_no_error, unittest_type, &
     & new_unittest

@@ -3,12 +3,12 @@
 !> Jenkins oscillator and on a banded chain (first harmonics of gamma and of the stress), the
 !> peak search, and the unbounded response above the limit force without damping.
 module test_hbm_dti
-  use udmap_kinds, only: wp, pi
-  use udmap_error, only: error_type, UDMAP_EPHYSICS
-  use udmap_linear_structure, only: structure_type, new_structure
-  use udmap_hysteretic, only: jenkins_element_type, new_jenkins_element
-  use udmap_hbm, only: hbm_settings_type, hbm_point_type, hbm_peak, hbm_response
-  use udmap_newmark, only: dti_settings_type, dti_point_type, dti_response, dti_peak
+  use udmap_core_kinds, only: wp, pi
+  use udmap_core_error, only: error_type, UDMAP_EPHYSICS
+  use udmap_baseline_linear_structure, only: structure_type, new_structure
+  use udmap_contact_element_jenkins, only: jenkins_element_type, new_jenkins_element
+  use udmap_baseline_hbm, only: hbm_settings_type, hbm_point_type, hbm_peak, hbm_response
+  use udmap_baseline_newmark, only: dti_settings_type, dti_point_type, dti_response, dti_peak
   use fixtures, only: spring_chain
   use testing, only: test_suite, check_close, check_true, check_no_error, check_error, &
     & unittest_type, new_unittest

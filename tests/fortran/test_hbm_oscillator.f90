@@ -4,12 +4,13 @@
 !> solved by Brent in double precision, outside this code); both variants, harmonic 0, exact and
 !> sampled AFT, response at a frequency, errors.
 module test_hbm_oscillator
-  use udmap_kinds, only: wp, pi
-  use udmap_error, only: error_type
-  use udmap_linear_structure, only: structure_type, new_structure
-  use udmap_hysteretic, only: jenkins_element_type, new_jenkins_element
-  use udmap_error, only: UDMAP_EINPUT, UDMAP_EPHYSICS
-  use udmap_hbm, only: hbm_settings_type, hbm_point_type, hbm_peak, hbm_response, HBM_FULL
+  use udmap_core_kinds, only: wp, pi
+  use udmap_core_error, only: error_type
+  use udmap_baseline_linear_structure, only: structure_type, new_structure
+  use udmap_contact_element_jenkins, only: jenkins_element_type, new_jenkins_element
+  use udmap_core_error, only: UDMAP_EINPUT, UDMAP_EPHYSICS
+  use udmap_baseline_hbm, only: hbm_settings_type, hbm_point_type, hbm_peak, hbm_response, &
+    & HBM_FULL
   use testing, only: test_suite, check_close, check_true, check_no_error, check_error, &
     & unittest_type, new_unittest
   implicit none

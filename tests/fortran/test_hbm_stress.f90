@@ -6,13 +6,13 @@
 !> 1e-12..1 rad in the AFT; non-finite inputs.
 module test_hbm_stress
   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_positive_inf
-  use udmap_kinds, only: wp, pi
-  use udmap_error, only: error_type, UDMAP_EINPUT, UDMAP_EPHYSICS, UDMAP_ENUMERIC
-  use udmap_linear_structure, only: structure_type, new_structure
-  use udmap_hysteretic, only: jenkins_element_type, new_jenkins_element
-  use udmap_aft, only: aft_workspace_type, aft_moment
-  use udmap_hbm, only: hbm_settings_type, hbm_point_type, hbm_peak, hbm_response
-  use udmap_newmark, only: dti_settings_type, dti_point_type, dti_response
+  use udmap_core_kinds, only: wp, pi
+  use udmap_core_error, only: error_type, UDMAP_EINPUT, UDMAP_EPHYSICS, UDMAP_ENUMERIC
+  use udmap_baseline_linear_structure, only: structure_type, new_structure
+  use udmap_contact_element_jenkins, only: jenkins_element_type, new_jenkins_element
+  use udmap_contact_aft_moment, only: aft_workspace_type, aft_moment
+  use udmap_baseline_hbm, only: hbm_settings_type, hbm_point_type, hbm_peak, hbm_response
+  use udmap_baseline_newmark, only: dti_settings_type, dti_point_type, dti_response
   use fixtures, only: ieee_nan
   use testing, only: test_suite, check_true, check_error, unittest_type, new_unittest
   implicit none

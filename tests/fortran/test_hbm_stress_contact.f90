@@ -4,16 +4,16 @@
 !> forces around the limit force: every call returns finite numbers or a clear error.
 module test_hbm_stress_contact
   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
-  use udmap_kinds, only: wp
-  use udmap_error, only: error_type, UDMAP_EINPUT, UDMAP_EPHYSICS, UDMAP_ENUMERIC
-  use udmap_beam, only: beam_params_type
-  use udmap_blade, only: blade_type, new_beam_blade
+  use udmap_core_kinds, only: wp
+  use udmap_core_error, only: error_type, UDMAP_EINPUT, UDMAP_EPHYSICS, UDMAP_ENUMERIC
+  use udmap_blade_beam, only: beam_params_type
+  use udmap_blade_type, only: blade_type, new_beam_blade
   use udmap_damper_params, only: asymmetric_params_type, blade_a_damper_params
-  use udmap_linear_structure, only: structure_type, structure_from_blade
-  use udmap_contact_element, only: contact_element_type, new_contact_element
-  use udmap_aft, only: aft_workspace_type, aft_moment
-  use udmap_hbm, only: hbm_settings_type, hbm_point_type, hbm_peak
-  use udmap_newmark, only: dti_settings_type, dti_point_type, dti_response
+  use udmap_baseline_linear_structure, only: structure_type, structure_from_blade
+  use udmap_contact_element_asymmetric, only: contact_element_type, new_contact_element
+  use udmap_contact_aft_moment, only: aft_workspace_type, aft_moment
+  use udmap_baseline_hbm, only: hbm_settings_type, hbm_point_type, hbm_peak
+  use udmap_baseline_newmark, only: dti_settings_type, dti_point_type, dti_response
   use fixtures, only: blade_a_beam_params
   use testing, only: test_suite, check_true, check_error, unittest_type, new_unittest
   implicit none

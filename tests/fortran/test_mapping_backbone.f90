@@ -2,13 +2,13 @@
 !> computations: dense complex solves of the full blade, sampled layer responses, bisection on
 !> the sign of d|g~|/d omega, LAPACK eigenvalues, closed-form limits.
 module test_mapping_backbone
-  use udmap_kinds, only: wp, pi
-  use udmap_error, only: error_type, UDMAP_EPHYSICS, UDMAP_EINPUT
-  use udmap_blade, only: blade_type, receptances_type, new_beam_blade
-  use udmap_beam, only: beam_params_type
-  use udmap_damper, only: damper_type, new_jenkins_damper
-  use udmap_eigen_start, only: direct_eigen_start, secular_root
-  use udmap_model, only: model_type, analysis_type, point_type, new_model, limit_force, &
+  use udmap_core_kinds, only: wp, pi
+  use udmap_core_error, only: error_type, UDMAP_EPHYSICS, UDMAP_EINPUT
+  use udmap_blade_type, only: blade_type, receptances_type, new_beam_blade
+  use udmap_blade_beam, only: beam_params_type
+  use udmap_damper_type, only: damper_type, new_jenkins_damper
+  use udmap_mapping_eigen_start, only: direct_eigen_start, secular_root
+  use udmap_mapping_model, only: model_type, analysis_type, point_type, new_model, limit_force, &
     & backbone, backbone_curve, response, REGIME_LIMIT, REGIME_STUCK, REGIME_FULL_SLIP
   use fixtures, only: blade_a_beam_params, blade_a_model, refined_backbone_change, dense_gamma, &
     & layer_force, band_min_force

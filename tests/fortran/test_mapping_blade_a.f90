@@ -3,14 +3,14 @@
 !> (double crossing, no layer above reaching F_E), eigenvalue start against the refined peak,
 !> stuck limit, zeta = 0 limit, converged defaults, and a set_damper round trip.
 module test_mapping_blade_a
-  use udmap_kinds, only: wp, pi
-  use udmap_error, only: error_type
-  use udmap_blade, only: blade_type, receptances_type, new_beam_blade
-  use udmap_beam, only: beam_params_type
-  use udmap_damper, only: damper_type, new_asymmetric_damper
+  use udmap_core_kinds, only: wp, pi
+  use udmap_core_error, only: error_type
+  use udmap_blade_type, only: blade_type, receptances_type, new_beam_blade
+  use udmap_blade_beam, only: beam_params_type
+  use udmap_damper_type, only: damper_type, new_asymmetric_damper
   use udmap_damper_params, only: blade_a_damper_params, asymmetric_params_type
-  use udmap_eigen_start, only: direct_eigen_start
-  use udmap_model, only: model_type, analysis_type, point_type, new_model, set_damper, &
+  use udmap_mapping_eigen_start, only: direct_eigen_start
+  use udmap_mapping_model, only: model_type, analysis_type, point_type, new_model, set_damper, &
     & limit_force, backbone, backbone_curve, response, REGIME_STUCK, REGIME_PARTIAL_SLIP
   use fixtures, only: blade_a_beam_params, blade_a_model, refined_backbone_change, layer_force, &
     & band_min_force

@@ -4,12 +4,12 @@
 !> peak, branches on each side of it), the adaptive layer placement, and the eigenvalue-start
 !> variants agreeing with each other.
 module test_mapping_curves
-  use udmap_kinds, only: wp, pi
-  use udmap_error, only: error_type, UDMAP_EINPUT
-  use udmap_beam, only: beam_params_type
-  use udmap_blade, only: blade_type, new_beam_blade
-  use udmap_damper, only: damper_type, new_jenkins_damper
-  use udmap_model, only: model_type, analysis_type, point_type, curve_type, new_model, &
+  use udmap_core_kinds, only: wp, pi
+  use udmap_core_error, only: error_type, UDMAP_EINPUT
+  use udmap_blade_beam, only: beam_params_type
+  use udmap_blade_type, only: blade_type, new_beam_blade
+  use udmap_damper_type, only: damper_type, new_jenkins_damper
+  use udmap_mapping_model, only: model_type, analysis_type, point_type, curve_type, new_model, &
     & backbone, response_curves, BRANCH_LOWER, BRANCH_UPPER, BRANCH_TURNING, EIGEN_DIRECT, &
     & EIGEN_MODAL
   use fixtures, only: blade_a_beam_params, blade_a_model, dense_gamma

@@ -5,20 +5,21 @@
 !> equals a warm one, a measured table is refused with H > 1, and auto includes the harmonics
 !> that sit near bare mode 2.
 module test_mapping_harmonics
-  use udmap_kinds, only: wp, pi
-  use udmap_error, only: error_type, UDMAP_EINPUT
-  use udmap_blade, only: blade_type
-  use udmap_damper, only: damper_type, new_jenkins_damper, &
-    & new_table_damper
+  use udmap_core_kinds, only: wp, pi
+  use udmap_core_error, only: error_type, UDMAP_EINPUT
+  use udmap_blade_type, only: blade_type
+  use udmap_damper_type, only: damper_type, new_jenkins_damper, new_table_damper
   use udmap_damper_params, only: blade_a_damper_params
-  use udmap_model, only: model_type, analysis_type, point_type, new_model, backbone, response, &
-    & harmonics_near_modes
-  use udmap_linear_structure, only: structure_type, structure_from_blade
-  use udmap_contact_element, only: contact_element_type, new_contact_element
-  use udmap_hysteretic, only: hysteretic_element_type, jenkins_element_type, new_jenkins_element
-  use udmap_hbm, only: hbm_settings_type, hbm_point_type, hbm_peaks, hbm_response
-  use udmap_harmonic_layer, only: harmonic_state_type, harmonic_resize, harmonic_solve
-  use udmap_model_data, only: model_type
+  use udmap_mapping_model, only: model_type, analysis_type, point_type, new_model, backbone, &
+    & response, harmonics_near_modes
+  use udmap_baseline_linear_structure, only: structure_type, structure_from_blade
+  use udmap_contact_element_asymmetric, only: contact_element_type, new_contact_element
+  use udmap_contact_element, only: hysteretic_element_type
+  use udmap_contact_element_jenkins, only: jenkins_element_type, new_jenkins_element
+  use udmap_baseline_hbm, only: hbm_settings_type, hbm_point_type, hbm_peaks, hbm_response
+  use udmap_mapping_harmonic_types, only: harmonic_state_type
+  use udmap_mapping_harmonic_layer, only: harmonic_resize, harmonic_solve
+  use udmap_mapping_model_data, only: model_type
   use fixtures, only: blade_a_with_damper, blade_a_band
   use testing, only: test_suite, check_close, check_true, check_no_error, check_error, &
     & unittest_type, new_unittest

@@ -3,16 +3,16 @@
 !> f_res within 0.05 Hz (the single-harmonic method is 2-9 % off there). F_E = 5 and 10 N here;
 !> 2 N (slower to reach its steady state) is measured in bench/bench_harmonics.py.
 module test_mapping_harmonics_dti
-  use udmap_kinds, only: wp
-  use udmap_error, only: error_type
-  use udmap_beam, only: beam_params_type
-  use udmap_blade, only: blade_type, new_beam_blade
-  use udmap_damper, only: damper_type, new_asymmetric_damper
+  use udmap_core_kinds, only: wp
+  use udmap_core_error, only: error_type
+  use udmap_blade_beam, only: beam_params_type
+  use udmap_blade_type, only: blade_type, new_beam_blade
+  use udmap_damper_type, only: damper_type, new_asymmetric_damper
   use udmap_damper_params, only: blade_a_damper_params
-  use udmap_model, only: model_type, analysis_type, point_type, new_model, backbone
-  use udmap_linear_structure, only: structure_type, structure_from_blade
-  use udmap_contact_element, only: contact_element_type, new_contact_element
-  use udmap_newmark, only: dti_settings_type, dti_point_type, dti_peak
+  use udmap_mapping_model, only: model_type, analysis_type, point_type, new_model, backbone
+  use udmap_baseline_linear_structure, only: structure_type, structure_from_blade
+  use udmap_contact_element_asymmetric, only: contact_element_type, new_contact_element
+  use udmap_baseline_newmark, only: dti_settings_type, dti_point_type, dti_peak
   use fixtures, only: blade_a_beam_params, blade_a_band
   use testing, only: test_suite, check_close, check_true, check_no_error, unittest_type, &
     & new_unittest

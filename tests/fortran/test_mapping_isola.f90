@@ -5,11 +5,11 @@
 !> backbone, every point on the scalar equation a |1 + k(a) H| = F |H| (H evaluated here), and
 !> the response at a frequency inside the isola with all its roots.
 module test_mapping_isola
-  use udmap_kinds, only: wp, pi
-  use udmap_error, only: error_type
-  use udmap_blade, only: blade_type
-  use udmap_damper, only: damper_type, new_table_damper
-  use udmap_model, only: model_type, analysis_type, point_type, curve_type, new_model, &
+  use udmap_core_kinds, only: wp, pi
+  use udmap_core_error, only: error_type
+  use udmap_blade_type, only: blade_type
+  use udmap_damper_type, only: damper_type, new_table_damper
+  use udmap_mapping_model, only: model_type, analysis_type, point_type, curve_type, new_model, &
     & backbone, backbone_curve, response, response_curves, BRANCH_TURNING
   use fixtures, only: one_dof_blade
   use testing, only: test_suite, check_close, check_true, check_no_error, unittest_type, &

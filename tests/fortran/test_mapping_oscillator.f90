@@ -5,11 +5,11 @@
 !> a |1 + k(a) H(omega)| = F |H(omega)|, H = 1/(1 - omega^2 + i c omega), evaluated here
 !> independently of the blade module.
 module test_mapping_oscillator
-  use udmap_kinds, only: wp, pi
-  use udmap_error, only: error_type, UDMAP_EINPUT
-  use udmap_blade, only: blade_type
-  use udmap_damper, only: damper_type, new_jenkins_damper
-  use udmap_model, only: model_type, analysis_type, point_type, curve_type, new_model, &
+  use udmap_core_kinds, only: wp, pi
+  use udmap_core_error, only: error_type, UDMAP_EINPUT
+  use udmap_blade_type, only: blade_type
+  use udmap_damper_type, only: damper_type, new_jenkins_damper
+  use udmap_mapping_model, only: model_type, analysis_type, point_type, curve_type, new_model, &
     & limit_force, backbone, backbone_curve, response, response_curves, REGIME_FULL_SLIP, &
     & REGIME_LIMIT, REGIME_STUCK, BRANCH_TURNING
   use fixtures, only: one_dof_blade

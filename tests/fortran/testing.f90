@@ -4,8 +4,8 @@
 !> tests; the driver main.f90 runs suites by name. A unit fails when one of its checks fails or
 !> when it made no check at all.
 module testing
-  use udmap_kinds, only: wp
-  use udmap_error, only: error_type
+  use udmap_core_kinds, only: wp
+  use udmap_core_error, only: error_type
   implicit none
   private
   public :: test_suite, check_close, check_true, check_no_error, check_error

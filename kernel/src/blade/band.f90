@@ -1,12 +1,12 @@
 !> Storage helpers for the symmetric blade matrices: LAPACK symmetric band storage
 !> (uplo = 'U': ab(kd+1+i-j, j) = a(i,j) for max(1, j-kd) <= i <= j) and dense copies,
-!> and the matrix-vector product used by the solvers (udmap_dd has the double-double one).
+!> and the matrix-vector product used by the solvers (udmap_blade_dd has the double-double one).
 !>
 !> Routines that accept a matrix take both its dense form `a` and its band form `ab` as
 !> allocatable arguments and use whichever is allocated (the band form if both are).
-module udmap_band
-  use udmap_kinds, only: wp
-  use udmap_lapack, only: dsbmv
+module udmap_blade_band
+  use udmap_core_kinds, only: wp
+  use udmap_core_lapack, only: dsbmv
   implicit none
   private
   public :: dense_to_band, band_to_dense, dense_bandwidth, sym_matvec
@@ -88,4 +88,4 @@ contains
       y = matmul(a, x)
     end if
   end subroutine sym_matvec
-end module udmap_band
+end module udmap_blade_band

@@ -9,9 +9,9 @@
 !> neck top w = w_P - (L_p/2) gamma_P, airfoil root w = w_P + (L_p/2) gamma_P, theta = gamma_P.
 !> Hence ndof = 2 (neck.elements + airfoil.elements), gamma_dof = 2 neck.elements and
 !> exc_dof = 2 neck.elements + airfoil.elements - 1 (w of the mid-length airfoil node).
-module udmap_beam
-  use udmap_kinds, only: wp
-  use udmap_error, only: error_type, fatal_error, UDMAP_EINPUT
+module udmap_blade_beam
+  use udmap_core_kinds, only: wp
+  use udmap_core_error, only: error_type, fatal_error, UDMAP_EINPUT
   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
   implicit none
   private
@@ -235,4 +235,4 @@ contains
       & 54.0_wp, 13*l, 156.0_wp, -22*l, &
       & -13*l, -3*l*l, -22*l, 4*l*l], [4, 4])
   end subroutine element
-end module udmap_beam
+end module udmap_blade_beam

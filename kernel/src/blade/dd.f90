@@ -5,8 +5,8 @@
 !> faster than quadruple precision, which is emulated in software.
 !> The formulas rely on IEEE double arithmetic evaluated as written (no -ffast-math: Fortran
 !> honours the parentheses).
-module udmap_dd
-  use udmap_kinds, only: wp
+module udmap_blade_dd
+  use udmap_core_kinds, only: wp
   implicit none
   private
   public :: two_sum, two_prod, dd_add, dd_add_d, dd_mul_d, sym_matvec_dd, dot_dd
@@ -151,4 +151,4 @@ contains
     end do
     d = sh + sl
   end function dot_dd
-end module udmap_dd
+end module udmap_blade_dd

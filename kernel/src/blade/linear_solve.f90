@@ -1,17 +1,17 @@
 !> Linear solves for the blade: Cholesky of a symmetric positive definite matrix (dense or band)
 !> and the complex dynamic stiffness D(omega) = K - omega^2 M + i omega C, both with iterative
-!> refinement whose residuals are computed in double-double arithmetic (udmap_dd).
+!> refinement whose residuals are computed in double-double arithmetic (udmap_blade_dd).
 !>
 !> Why refinement: finely meshed beams are very ill-conditioned (the stiffness of a 2048-element
 !> airfoil has kappa eps ~ 1e-3), so a plain double-precision solve loses most digits. With the
 !> residual in double-double and the solution accumulated there, refinement converges to the
 !> exact solution of the stored (double) data whenever eps kappa < 1, at the price of a
 !> matrix-vector product per step.
-module udmap_linear_solve
-  use udmap_kinds, only: wp
-  use udmap_error, only: error_type, fatal_error, UDMAP_EINPUT, UDMAP_ENUMERIC
-  use udmap_lapack, only: dpotrf, dpotrs, dpbtrf, dpbtrs, zgetrf, zgetrs, zgbtrf, zgbtrs
-  use udmap_dd, only: dd_add, dd_add_d, dd_mul_d, sym_matvec_dd
+module udmap_blade_linear_solve
+  use udmap_core_kinds, only: wp
+  use udmap_core_error, only: error_type, fatal_error, UDMAP_EINPUT, UDMAP_ENUMERIC
+  use udmap_core_lapack, only: dpotrf, dpotrs, dpbtrf, dpbtrs, zgetrf, zgetrs, zgbtrf, zgbtrs
+  use udmap_blade_dd, only: dd_add, dd_add_d, dd_mul_d, sym_matvec_dd
   implicit none
   private
   public :: spd_factor_type, spd_factor, spd_solve, dynamic_solve
@@ -292,4 +292,4 @@ contains
       end if
     end subroutine lu_solve_1
   end subroutine dynamic_solve
-end module udmap_linear_solve
+end module udmap_blade_linear_solve

@@ -9,13 +9,13 @@
 !>   the lowest modes, each then polished through its coupling by K computed in double-double;
 !> - the lowest modes (large models): subspace iteration with K^-1 M (Bathe), whose solves are
 !>   refined in double-double once the subspace has settled.
-module udmap_modes
-  use udmap_kinds, only: wp
-  use udmap_error, only: error_type, fatal_error, UDMAP_ENUMERIC
-  use udmap_lapack, only: dsygvd, dsyev
-  use udmap_band, only: sym_matvec
-  use udmap_dd, only: sym_matvec_dd
-  use udmap_linear_solve, only: spd_factor_type, spd_solve
+module udmap_blade_modes
+  use udmap_core_kinds, only: wp
+  use udmap_core_error, only: error_type, fatal_error, UDMAP_ENUMERIC
+  use udmap_core_lapack, only: dsygvd, dsyev
+  use udmap_blade_band, only: sym_matvec
+  use udmap_blade_dd, only: sym_matvec_dd
+  use udmap_blade_linear_solve, only: spd_factor_type, spd_solve
   implicit none
   private
   public :: all_modes, lowest_modes, polish
@@ -259,4 +259,4 @@ contains
       end do
     end do
   end subroutine random_columns
-end module udmap_modes
+end module udmap_blade_modes

@@ -1,6 +1,6 @@
 !> The rotational Jenkins element on gamma_P (PHYSICS.md 2.4, damper kind "jenkins").
 module udmap_damper_jenkins
-  use udmap_kinds, only: wp, pi
+  use udmap_core_kinds, only: wp, pi
   implicit none
   private
   public :: jenkins_stiffness, jenkins_stiffness_derivative, jenkins_loop_moment

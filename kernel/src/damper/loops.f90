@@ -11,11 +11,12 @@
 !> Vertices also carry their derivatives with respect to p; within one event topology they are
 !> affine in p, so the same loop gives k exactly over its whole validity range.
 module udmap_damper_loops
-  use udmap_kinds, only: wp, pi
-  use udmap_error, only: error_type, fatal_error, UDMAP_EPHYSICS
-  use udmap_damper_tracer, only: damper_geometry_type, damper_state_type, branch_record_type, &
-    & validity_type, virgin_state, ramp_CF, trace_gamma, trace_to_plateau, record_start, &
-    & reset_record, same_forces, contact_forces, CONTACT_OPEN, CONTACT_STICK
+  use udmap_core_kinds, only: wp, pi
+  use udmap_core_error, only: error_type, fatal_error, UDMAP_EPHYSICS
+  use udmap_damper_tracer_core, only: damper_geometry_type, damper_state_type, &
+    & branch_record_type, validity_type, contact_forces, CONTACT_OPEN, CONTACT_STICK
+  use udmap_damper_tracer, only: virgin_state, ramp_CF, trace_gamma, trace_to_plateau, &
+    & record_start, reset_record, same_forces
   implicit none
   private
   public :: half_loop_type, loop_type, ramp_type, base_cycle_type, loop_workspace_type

@@ -2,8 +2,9 @@
 !> k_re and k_im separately, constant below the first row, and beyond the last row the
 !> extrapolation with a plateau moment difference delta_M if one is given.
 module udmap_damper_measured
-  use udmap_kinds, only: wp, pi
-  use udmap_error, only: error_type, fatal_error, UDMAP_EINPUT
+  use udmap_core_kinds, only: wp, pi
+  use udmap_core_sorting, only: bisect
+  use udmap_core_error, only: error_type, fatal_error, UDMAP_EINPUT
   implicit none
   private
   public :: measured_table_type, new_measured_table, measured_stiffness, &
@@ -142,18 +143,7 @@ contains
   pure integer function find_row(tab, gamma) result(i)
     type(measured_table_type), intent(in) :: tab
     real(wp), intent(in) :: gamma
-    integer :: lo, hi, mid
-    lo = 1
-    hi = tab%n - 1
-    do while (lo < hi)
-      mid = (lo + hi + 1)/2
-      if (tab%gamma(mid) <= gamma) then
-        lo = mid
-      else
-        hi = mid - 1
-      end if
-    end do
-    i = lo
+    i = max(1, bisect(tab%gamma(1:tab%n - 1), gamma, right=.true.))
   end function find_row
 
   pure real(wp) function hermite(tab, i, x, y, d) result(f)

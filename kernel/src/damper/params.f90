@@ -1,7 +1,7 @@
 !> Parameters of the asymmetric flat/curved rigid damper (PHYSICS.md 2.1) and their checks.
 module udmap_damper_params
-  use udmap_kinds, only: wp
-  use udmap_error, only: error_type, fatal_error, UDMAP_EINPUT
+  use udmap_core_kinds, only: wp
+  use udmap_core_error, only: error_type, fatal_error, UDMAP_EINPUT
   implicit none
   private
   public :: asymmetric_params_type, check_asymmetric_params, blade_a_damper_params

@@ -20,9 +20,10 @@
 !> tracer locates exactly (an event coincidence, not a tolerance), and both one-sided values
 !> come from the two intervals' loops. Checking each interval end costs one loop evaluation.
 module udmap_damper_stiffness_table
-  use udmap_kinds, only: wp, pi
-  use udmap_error, only: error_type, fatal_error, UDMAP_ENUMERIC, UDMAP_EPHYSICS
-  use udmap_damper_tracer, only: damper_geometry_type, validity_type
+  use udmap_core_kinds, only: wp, pi
+  use udmap_core_sorting, only: bisect
+  use udmap_core_error, only: error_type, fatal_error, UDMAP_ENUMERIC, UDMAP_EPHYSICS
+  use udmap_damper_tracer_core, only: damper_geometry_type, validity_type
   use udmap_damper_loops, only: loop_type, ramp_type, base_cycle_type, loop_workspace_type, &
     & steady_loop, trace_base_cycle, loop_stiffness, loop_k_re, loop_energy, &
     & elongated_stiffness
@@ -357,35 +358,13 @@ contains
   pure integer function find_interval(tab, gamma) result(i)
     type(stiffness_table_type), intent(in) :: tab
     real(wp), intent(in) :: gamma
-    integer :: lo, hi, mid
-    lo = 1
-    hi = tab%n_int
-    do while (lo < hi)
-      mid = (lo + hi)/2
-      if (gamma <= tab%int_b(mid)) then
-        hi = mid
-      else
-        lo = mid + 1
-      end if
-    end do
-    i = lo
+    i = bisect(tab%int_b(1:tab%n_int - 1), gamma) + 1
   end function find_interval
 
   pure integer function find_piece(tab, gamma) result(i)
     type(stiffness_table_type), intent(in) :: tab
     real(wp), intent(in) :: gamma
-    integer :: lo, hi, mid
-    lo = 1
-    hi = tab%n_piece
-    do while (lo < hi)
-      mid = (lo + hi)/2
-      if (gamma <= tab%piece_b(mid)) then
-        hi = mid
-      else
-        lo = mid + 1
-      end if
-    end do
-    i = lo
+    i = bisect(tab%piece_b(1:tab%n_piece - 1), gamma) + 1
   end function find_piece
 
   !> Chebyshev series of piece ip in x = 2 theta/pi - 1, p = a + (b - a) sin^2(theta/2).

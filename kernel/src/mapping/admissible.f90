@@ -17,12 +17,12 @@
 !>   sample bracket the crossing (the first secant step is then the root); still above
 !>   sigma_all (no structural damping: a stuck damper bounds nothing), F_adm = 0. F_adm is 0
 !>   also when F_lim <= 0.
-module udmap_admissible
-  use udmap_kinds, only: wp
-  use udmap_error, only: error_type, fatal_error, UDMAP_EINPUT, UDMAP_EPHYSICS
-  use udmap_model_data, only: model_type, point_type
-  use udmap_harmonic_mapping, only: backbone
-  use udmap_root_finding, only: brent_type, brent_start, brent_next, brent_update
+module udmap_mapping_admissible
+  use udmap_core_kinds, only: wp
+  use udmap_core_error, only: error_type, fatal_error, UDMAP_EINPUT, UDMAP_EPHYSICS
+  use udmap_mapping_model_data, only: model_type, point_type
+  use udmap_mapping_harmonic_mapping, only: backbone
+  use udmap_core_root_finding, only: brent_type, brent_start, brent_next, brent_update
   implicit none
   private
   public :: admissible_force, admissible_grid, admissible_search_type, admissible_start, &
@@ -211,4 +211,4 @@ contains
       end if
     end function stress
   end subroutine admissible_force
-end module udmap_admissible
+end module udmap_mapping_admissible

@@ -11,29 +11,17 @@
 !> 1e-13 of each receptance's largest value in the band (1e-11 for the derivatives). An
 !> evaluation then costs two or three dozen complex operations instead of the blade's modal
 !> sum and series. With an explicit C matrix the modal form is not exact and this is off.
-module udmap_band_receptances
-  use udmap_kinds, only: wp
-  use udmap_error, only: error_type
-  use udmap_blade, only: blade_type, receptances_type
+module udmap_mapping_band_receptances
+  use udmap_core_kinds, only: wp
+  use udmap_core_error, only: error_type
+  use udmap_blade_type, only: blade_type, receptances_type
+  use udmap_mapping_caches, only: band_receptances_type
   implicit none
   private
-  public :: band_receptances_type, new_band_receptances, band_eval
+  public :: new_band_receptances, band_eval
 
   !> Samples tried first and at most.
   integer, parameter :: first_samples = 33, max_samples = 2049
-
-  !> The band interpolant (active only when it passed its check).
-  type :: band_receptances_type
-    logical :: active = .false.
-    !> Band [rad/s], sample step [rad/s], beta of C = beta K.
-    real(wp) :: omega_lo = 0, omega_hi = 0, h = 0, beta = 0
-    !> Number of samples.
-    integer :: n = 0
-    !> Modes summed exactly: omega_r^2, phi_g, phi_E, s_K.phi, s_M.phi.
-    real(wp), allocatable :: w2(:), pg(:), pE(:), psK(:), psM(:)
-    !> Remainders of gE, gg, EE, sE, sg at the samples and their d/d omega, (5, n).
-    complex(wp), allocatable :: rem(:, :), drem(:, :)
-  end type band_receptances_type
 
 contains
 
@@ -186,4 +174,4 @@ contains
     r%dsE = dv(4)
     r%dsg = dv(5)
   end subroutine band_eval
-end module udmap_band_receptances
+end module udmap_mapping_band_receptances

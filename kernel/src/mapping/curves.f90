@@ -11,16 +11,16 @@
 !> lowest band-edge amplitude and the highest backbone root and are then added where the
 !> curves bend or leave gaps: a segment longer than 1/layers of the (frequency band,
 !> ln-amplitude range) box, or a turn sharper than 10 degrees, gets a layer at its middle.
-module udmap_curves
-  use udmap_kinds, only: wp, pi
-  use udmap_error, only: error_type, fatal_error, UDMAP_EINPUT
-  use udmap_blade, only: receptances_type, layer_response
-  use udmap_layer, only: layer_amplitude, layer_crossing, bare_receptances
-  use udmap_model_data, only: model_type, point_type, curve_type, check_forces, &
-    & BRANCH_LOWER, BRANCH_UPPER, BRANCH_TURNING
-  use udmap_model_data, only: backbone_eval_type
-  use udmap_backbone, only: backbone, cover_table, eval_backbone
-  use udmap_response, only: response_roots
+module udmap_mapping_curves
+  use udmap_core_kinds, only: wp, pi
+  use udmap_core_error, only: error_type, fatal_error, UDMAP_EINPUT
+  use udmap_blade_type, only: receptances_type, layer_response
+  use udmap_mapping_layer, only: layer_amplitude, layer_crossing, bare_receptances
+  use udmap_mapping_model_data, only: model_type, point_type, curve_type, check_forces, &
+    & BRANCH_LOWER, BRANCH_UPPER, BRANCH_TURNING, backbone_eval_type
+  use udmap_mapping_backbone, only: backbone
+  use udmap_mapping_backbone_table, only: cover_table, eval_backbone
+  use udmap_mapping_response, only: response_roots
   implicit none
   private
   public :: response_curves
@@ -448,4 +448,4 @@ contains
       width = 2*width
     end do
   end subroutine sort_index
-end module udmap_curves
+end module udmap_mapping_curves

@@ -27,29 +27,19 @@
 !> from the direct value (later tables, e.g. after set_damper, bracket it from the bare modes);
 !> EIGEN_DIRECT runs the direct solver for every layer (slow; for checks); EIGEN_MODAL never
 !> runs it.
-module udmap_eigen_start
-  use udmap_kinds, only: wp
-  use udmap_error, only: error_type, fatal_error, UDMAP_EINPUT, UDMAP_ENUMERIC
-  use udmap_blade, only: blade_type, receptances_type
-  use udmap_root_finding, only: brent_type, brent_start, brent_next, brent_update
-  use udmap_lapack, only: zggev, zgbtrf, zgbtrs
+module udmap_mapping_eigen_start
+  use udmap_core_kinds, only: wp
+  use udmap_core_error, only: error_type, fatal_error, UDMAP_EINPUT, UDMAP_ENUMERIC
+  use udmap_blade_type, only: blade_type, receptances_type
+  use udmap_core_root_finding, only: brent_type, brent_start, brent_next, brent_update
+  use udmap_core_lapack, only: zggev, zgbtrf, zgbtrs
+  use udmap_mapping_caches, only: secular_type
   implicit none
   private
-  public :: secular_type, new_secular, secular_root, direct_eigen_start, secular_modes
+  public :: new_secular, secular_root, direct_eigen_start, secular_modes
 
   !> Bare modes summed term by term in the secular equation (the rest enter R0, R1).
   integer, parameter :: secular_modes = 4
-
-  !> The rank-one secular equation of the gamma DOF over the bare modes.
-  type :: secular_type
-    !> omega_r^2 [rad^2/s^2] and phi_g,r^2 of the kept bare modes (mass-normalised).
-    real(wp), allocatable :: s(:), w(:)
-    !> Static residual of the modes left out: (K^-1)_gg - sum_r phi_g,r^2/omega_r^2.
-    real(wp) :: R0 = 0
-    !> Higher residuals: sums of phi_g,r^2/omega_r^4 and phi_g,r^2/omega_r^6 over the
-    !> computed modes left out.
-    real(wp) :: R1 = 0, R2 = 0
-  end type secular_type
 
 #ifdef UDMAP_WITH_ARPACK
   interface
@@ -479,4 +469,4 @@ contains
       & "(ndof = "//trim(buf)//"; use the modal start)", UDMAP_EINPUT)
 #endif
   end subroutine band_eigen
-end module udmap_eigen_start
+end module udmap_mapping_eigen_start

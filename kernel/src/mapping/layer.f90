@@ -13,46 +13,17 @@
 !> psi = -(d ln|g~|/d omega)/(omega |g~|^2), by secant steps from the start until a sign change
 !> brackets it and Brent's method after that: from an eigenvalue start this takes 3 to 5
 !> receptance evaluations to rtol = 1e-12.
-module udmap_layer
-  use udmap_kinds, only: wp
-  use udmap_error, only: error_type, fatal_error, UDMAP_ENUMERIC, UDMAP_EPHYSICS
-  use udmap_blade, only: blade_type, receptances_type
-  use udmap_root_finding, only: brent_type, brent_start, brent_next, brent_update
-  use udmap_band_receptances, only: band_receptances_type, band_eval
+module udmap_mapping_layer
+  use udmap_core_kinds, only: wp
+  use udmap_core_error, only: error_type, fatal_error, UDMAP_ENUMERIC, UDMAP_EPHYSICS
+  use udmap_blade_type, only: blade_type, receptances_type
+  use udmap_core_root_finding, only: brent_type, brent_start, brent_next, brent_update
+  use udmap_mapping_caches, only: band_receptances_type, PEAK_OK, PEAK_BELOW_BAND, &
+    & PEAK_ABOVE_BAND, bare_type, layer_peak_type
+  use udmap_mapping_band_receptances, only: band_eval
   implicit none
   private
-  public :: bare_type, layer_peak_type, bare_receptances, log_slope, layer_peak, &
-    & layer_crossing, layer_amplitude, abs2
-  public :: PEAK_OK, PEAK_BELOW_BAND, PEAK_ABOVE_BAND
-
-  !> Peak found inside the band.
-  integer, parameter :: PEAK_OK = 0
-  !> |g~| still grows at the lower band edge: the resonance lies below the band.
-  integer, parameter :: PEAK_BELOW_BAND = 1
-  !> |g~| still grows at the upper band edge: the resonance lies above the band.
-  integer, parameter :: PEAK_ABOVE_BAND = 2
-
-  !> The bare blade as seen by the mapping: the blade it borrows, the fast interpolant of its
-  !> receptances over the band (udmap_band_receptances, when active) and a count of receptance
-  !> evaluations (the unit of cost of everything here).
-  type :: bare_type
-    type(blade_type), pointer :: blade => null()
-    type(band_receptances_type) :: band
-    integer :: evaluations = 0
-  end type bare_type
-
-  !> The peak of one layer's unit-force response |g~(omega)|.
-  type :: layer_peak_type
-    !> Circular frequency of the peak [rad/s] and |g~| there [rad/N].
-    real(wp) :: omega = 0, amplitude = 0
-    !> Bare receptances at the peak.
-    type(receptances_type) :: r
-    !> PEAK_OK, or PEAK_BELOW_BAND / PEAK_ABOVE_BAND when the maximum is at a band edge.
-    integer :: status = PEAK_OK
-    !> d psi / ds at the peak as last measured (psi = dP/ds, P = 1/|g~|^2, s = omega^2), the
-    !> slope hint for a neighbouring layer (0 if unknown).
-    real(wp) :: dpsi = 0
-  end type layer_peak_type
+  public :: bare_receptances, log_slope, layer_peak, layer_crossing, layer_amplitude, abs2
 
 contains
 
@@ -325,4 +296,4 @@ contains
     omega = brent%b
     call bare_receptances(bare, omega, r, error, .false.)
   end subroutine layer_crossing
-end module udmap_layer
+end module udmap_mapping_layer

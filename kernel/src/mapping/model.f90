@@ -13,16 +13,24 @@
 !>   call admissible_force(model, F_lim, sigma_all, rtol, F_adm, error)  ! a design's F_adm
 !>
 !> analysis%harmonics = 1 (default) is the paper's single-harmonic method; H > 1 or 0 (auto)
-!> takes the multi-harmonic layers of PHYSICS.md 4.1 (udmap_harmonic_mapping) in backbone,
+!> takes the multi-harmonic layers of PHYSICS.md 4.1 (udmap_mapping_harmonic_mapping) in backbone,
 !> response and response_curves.
-module udmap_model
-  use udmap_model_data, only: analysis_type, point_type, curve_type, model_type, new_model, &
-    & set_damper, limit_force, limit_force_backbone, EIGEN_AUTO, EIGEN_DIRECT, EIGEN_MODAL, REGIME_STUCK, REGIME_PARTIAL_SLIP, &
-    & REGIME_FULL_SLIP, REGIME_LIMIT, BRANCH_LOWER, BRANCH_UPPER, BRANCH_TURNING
-  use udmap_backbone, only: backbone_curve
-  use udmap_harmonic_mapping, only: backbone, response, response_curves, harmonics_near_modes, &
-    & set_harmonics
-  use udmap_admissible, only: admissible_force
+module udmap_mapping_model
+  use udmap_core_kinds, only: wp, pi
+  use udmap_core_error, only: error_type, fatal_error, UDMAP_EINPUT
+  use udmap_blade_type, only: blade_type
+  use udmap_damper_type, only: damper_type
+  use udmap_mapping_eigen_start, only: new_secular
+  use udmap_mapping_band_receptances, only: new_band_receptances
+  use udmap_mapping_harmonic_types, only: HARMONICS_MAX
+  use udmap_mapping_model_data, only: analysis_type, point_type, curve_type, model_type, &
+    & check_model_damper, set_damper, limit_force, limit_force_backbone, EIGEN_AUTO, &
+    & EIGEN_DIRECT, EIGEN_MODAL, REGIME_STUCK, REGIME_PARTIAL_SLIP, REGIME_FULL_SLIP, &
+    & REGIME_LIMIT, BRANCH_LOWER, BRANCH_UPPER, BRANCH_TURNING
+  use udmap_mapping_backbone, only: backbone_curve
+  use udmap_mapping_harmonic_mapping, only: backbone, response, response_curves, &
+    & harmonics_near_modes, set_harmonics
+  use udmap_mapping_admissible, only: admissible_force
   implicit none
   private
   public :: analysis_type, point_type, curve_type, model_type
@@ -32,4 +40,110 @@ module udmap_model
   public :: EIGEN_AUTO, EIGEN_DIRECT, EIGEN_MODAL
   public :: REGIME_STUCK, REGIME_PARTIAL_SLIP, REGIME_FULL_SLIP, REGIME_LIMIT
   public :: BRANCH_LOWER, BRANCH_UPPER, BRANCH_TURNING
-end module udmap_model
+
+contains
+
+  !> Couples blade and damper over analysis%f_min..f_max. Both are borrowed.
+  subroutine new_model(model, blade, damper, analysis, error)
+    type(model_type), intent(out) :: model
+    type(blade_type), target, intent(in) :: blade
+    type(damper_type), target, intent(in) :: damper
+    type(analysis_type), intent(in) :: analysis
+    type(error_type), allocatable, intent(out) :: error
+    real(wp) :: phi_g, phi_E
+    integer :: r
+    character(len=32) :: buf
+    associate(a => analysis)
+      if (.not.(a%f_min > 0 .and. a%f_min < huge(1.0_wp))) then
+        call fatal_error(error, "analysis.f_min must be a positive number [Hz]", UDMAP_EINPUT)
+        return
+      end if
+      if (.not.(a%f_max > a%f_min .and. a%f_max < huge(1.0_wp))) then
+        call fatal_error(error, "analysis.f_max must be a number above f_min [Hz]", UDMAP_EINPUT)
+        return
+      end if
+      if (.not.(a%sigma_all > 0 .and. a%sigma_all < huge(1.0_wp))) then
+        call fatal_error(error, "analysis.sigma_all must be a positive number [Pa]", UDMAP_EINPUT)
+        return
+      end if
+      if (.not.(a%rtol >= 1e-15_wp .and. a%rtol <= 1e-3_wp)) then
+        call fatal_error(error, "analysis.rtol must lie in [1e-15, 1e-3]", UDMAP_EINPUT)
+        return
+      end if
+      if (a%grid_per_decade < 2 .or. a%grid_per_decade > 1000) then
+        call fatal_error(error, "analysis.grid_per_decade must lie in [2, 1000]", UDMAP_EINPUT)
+        return
+      end if
+      if (a%eigen_method < EIGEN_AUTO .or. a%eigen_method > EIGEN_MODAL) then
+        call fatal_error(error, "analysis.eigen_method must be 0 (auto), 1 (direct) or "// &
+          & "2 (modal)", UDMAP_EINPUT)
+        return
+      end if
+      if (a%dense_max < 1) then
+        call fatal_error(error, "analysis.dense_max must be positive", UDMAP_EINPUT)
+        return
+      end if
+      if (a%sweep_points < 16 .or. a%sweep_points > 1000000) then
+        call fatal_error(error, "analysis.sweep_points must lie in [16, 1e6]", UDMAP_EINPUT)
+        return
+      end if
+      if (a%harmonics < 0 .or. a%harmonics > HARMONICS_MAX) then
+        call fatal_error(error, "analysis.harmonics must be 1, an integer up to 64, or auto (0)", &
+          & UDMAP_EINPUT)
+        return
+      end if
+      if (.not.(a%harmonic_tol >= 1e-10_wp .and. a%harmonic_tol <= 0.1_wp)) then
+        call fatal_error(error, "analysis.harmonic_tol must lie in [1e-10, 0.1]", UDMAP_EINPUT)
+        return
+      end if
+    end associate
+    if (blade%ndof < 1 .or. .not.allocated(blade%phi) .or. .not.allocated(blade%omega)) then
+      call fatal_error(error, "model: the blade is not built (no DOFs or no bare modes)", &
+        & UDMAP_EINPUT)
+      return
+    end if
+    call check_model_damper(damper, error)
+    if (allocated(error)) return
+    model%blade => blade
+    model%damper => damper
+    model%analysis = analysis
+    model%bare%blade => blade
+    model%omega_lo = 2*pi*analysis%f_min
+    model%omega_hi = 2*pi*analysis%f_max
+    phi_g = blade%phi(blade%gamma_dof, 1)
+    phi_E = blade%phi(blade%exc_dof, 1)
+    if (phi_g == 0) then
+      call fatal_error(error, "model: the bare first mode does not rotate the platform "// &
+        & "(phi_g = 0), the damper cannot act on it", UDMAP_EINPUT)
+      return
+    end if
+    model%phi_ratio = abs(phi_E/phi_g)
+    ! the backbone follows the resonance of mode 1: a second bare mode inside the band would
+    ! make "the maximum over the band" jump between resonances
+    do r = 2, size(blade%omega)
+      if (blade%omega(r) >= model%omega_lo .and. blade%omega(r) <= model%omega_hi) then
+        write(buf, '(g0.6)') blade%omega(r)/(2*pi)
+        call fatal_error(error, "analysis: the band [f_min, f_max] contains the bare mode "// &
+          & "at "//trim(buf)//" Hz besides mode 1; the mapping follows the first-mode "// &
+          & "resonance: narrow the band", UDMAP_EINPUT)
+        return
+      end if
+    end do
+    if (blade%explicit_C .and. allocated(blade%C)) then
+      model%c1 = dot_product(blade%phi(:, 1), matmul(blade%C, blade%phi(:, 1)))
+      model%undamped = all(blade%C == 0)
+    else if (blade%explicit_C) then
+      ! band storage only: the width estimate does without the viscous part
+      model%c1 = 0
+      model%undamped = .false.
+      if (allocated(blade%Cb)) model%undamped = all(blade%Cb == 0)
+    else
+      model%c1 = blade%beta*blade%omega1**2
+      model%undamped = .not.blade%explicit_C .and. blade%zeta == 0
+    end if
+    call new_secular(model%secular, blade, error)
+    if (allocated(error)) return
+    if (analysis%band_interpolation) &
+      & call new_band_receptances(model%bare%band, blade, model%omega_lo, model%omega_hi)
+  end subroutine new_model
+end module udmap_mapping_model

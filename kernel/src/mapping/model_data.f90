@@ -1,23 +1,21 @@
 !> The coupled blade-damper model of the mapping (PHYSICS.md 3-5): its settings, its result
-!> types, its caches, and the limit force. The algorithms live in udmap_backbone,
-!> udmap_response and udmap_curves; udmap_model gathers everything for users.
-module udmap_model_data
-  use udmap_kinds, only: wp, pi
-  use udmap_error, only: error_type, fatal_error, UDMAP_EINPUT
-  use udmap_blade, only: blade_type, receptances_type, layer_response
-  use udmap_damper, only: damper_type
-  use udmap_layer, only: bare_type, layer_peak_type
-  use udmap_eigen_start, only: secular_type, new_secular
-  use udmap_band_receptances, only: new_band_receptances
-  use udmap_harmonic_layer, only: harmonic_workspace_type, HARMONICS_MAX
-  use udmap_force_table, only: force_table_type
+!> types, its caches, and the limit force. The algorithms live in udmap_mapping_backbone,
+!> udmap_mapping_response and udmap_mapping_curves; udmap_mapping_model builds a model
+!> (new_model) and gathers everything for users. Data only: nothing here uses an algorithm.
+module udmap_mapping_model_data
+  use udmap_core_kinds, only: wp, pi
+  use udmap_core_error, only: error_type, fatal_error, UDMAP_EINPUT
+  use udmap_blade_type, only: blade_type, receptances_type, layer_response
+  use udmap_damper_type, only: damper_type
+  use udmap_mapping_caches, only: bare_type, layer_peak_type, secular_type
+  use udmap_mapping_harmonic_types, only: harmonic_workspace_type, force_table_type
   implicit none
   private
   public :: analysis_type, point_type, curve_type, model_type, backbone_table_type, &
     & backbone_eval_type
-  public :: new_model, set_damper, limit_force, limit_force_or_huge, regime_of, fill_point, &
-    & check_forces, limit_force_backbone, &
-    & damper_fingerprint
+  public :: check_model_damper, set_damper, limit_force, limit_force_or_huge, regime_of, &
+    & fill_point, check_forces, &
+    & limit_force_backbone, damper_fingerprint
   public :: EIGEN_AUTO, EIGEN_DIRECT, EIGEN_MODAL
   public :: REGIME_STUCK, REGIME_PARTIAL_SLIP, REGIME_FULL_SLIP, REGIME_LIMIT
   public :: BRANCH_LOWER, BRANCH_UPPER, BRANCH_TURNING
@@ -65,7 +63,7 @@ module udmap_model_data
     !> bracketing only: every crossing is then refined with exact receptances).
     integer :: sweep_points = 400
     !> Evaluate the bare receptances in the band through the checked interpolant of
-    !> udmap_band_receptances (off: the blade's own evaluation every time).
+    !> udmap_mapping_band_receptances (off: the blade's own evaluation every time).
     logical :: band_interpolation = .true.
     !> Harmonics of the platform rotation (PHYSICS.md 4.1): 1 the single-harmonic method,
     !> H > 1 harmonics 0..H in multi-harmonic layers, 0 automatic (raised until the outputs
@@ -183,119 +181,13 @@ module udmap_model_data
     !> Contact element and scratch of the multi-harmonic layers (PHYSICS.md 4.1).
     type(harmonic_workspace_type) :: harm
     !> Backbone points at H /= 1 after a change of F_E alone: interpolated in a verified table
-    !> of exact points where one holds F_E (udmap_force_table), when force_table is set.
+    !> of exact points where one holds F_E (udmap_mapping_harmonic_force_table), when force_table is
+    !> set.
     logical :: force_table = .false.
     type(force_table_type) :: ftable
   end type model_type
 
 contains
-
-  !> Couples blade and damper over analysis%f_min..f_max. Both are borrowed.
-  subroutine new_model(model, blade, damper, analysis, error)
-    type(model_type), intent(out) :: model
-    type(blade_type), target, intent(in) :: blade
-    type(damper_type), target, intent(in) :: damper
-    type(analysis_type), intent(in) :: analysis
-    type(error_type), allocatable, intent(out) :: error
-    real(wp) :: phi_g, phi_E
-    integer :: r
-    character(len=32) :: buf
-    associate(a => analysis)
-      if (.not.(a%f_min > 0 .and. a%f_min < huge(1.0_wp))) then
-        call fatal_error(error, "analysis.f_min must be a positive number [Hz]", UDMAP_EINPUT)
-        return
-      end if
-      if (.not.(a%f_max > a%f_min .and. a%f_max < huge(1.0_wp))) then
-        call fatal_error(error, "analysis.f_max must be a number above f_min [Hz]", UDMAP_EINPUT)
-        return
-      end if
-      if (.not.(a%sigma_all > 0 .and. a%sigma_all < huge(1.0_wp))) then
-        call fatal_error(error, "analysis.sigma_all must be a positive number [Pa]", UDMAP_EINPUT)
-        return
-      end if
-      if (.not.(a%rtol >= 1e-15_wp .and. a%rtol <= 1e-3_wp)) then
-        call fatal_error(error, "analysis.rtol must lie in [1e-15, 1e-3]", UDMAP_EINPUT)
-        return
-      end if
-      if (a%grid_per_decade < 2 .or. a%grid_per_decade > 1000) then
-        call fatal_error(error, "analysis.grid_per_decade must lie in [2, 1000]", UDMAP_EINPUT)
-        return
-      end if
-      if (a%eigen_method < EIGEN_AUTO .or. a%eigen_method > EIGEN_MODAL) then
-        call fatal_error(error, "analysis.eigen_method must be 0 (auto), 1 (direct) or "// &
-          & "2 (modal)", UDMAP_EINPUT)
-        return
-      end if
-      if (a%dense_max < 1) then
-        call fatal_error(error, "analysis.dense_max must be positive", UDMAP_EINPUT)
-        return
-      end if
-      if (a%sweep_points < 16 .or. a%sweep_points > 1000000) then
-        call fatal_error(error, "analysis.sweep_points must lie in [16, 1e6]", UDMAP_EINPUT)
-        return
-      end if
-      if (a%harmonics < 0 .or. a%harmonics > HARMONICS_MAX) then
-        call fatal_error(error, "analysis.harmonics must be 1, an integer up to 64, or auto (0)", &
-          & UDMAP_EINPUT)
-        return
-      end if
-      if (.not.(a%harmonic_tol >= 1e-10_wp .and. a%harmonic_tol <= 0.1_wp)) then
-        call fatal_error(error, "analysis.harmonic_tol must lie in [1e-10, 0.1]", UDMAP_EINPUT)
-        return
-      end if
-    end associate
-    if (blade%ndof < 1 .or. .not.allocated(blade%phi) .or. .not.allocated(blade%omega)) then
-      call fatal_error(error, "model: the blade is not built (no DOFs or no bare modes)", &
-        & UDMAP_EINPUT)
-      return
-    end if
-    if (.not.(damper%gamma_b > 0)) then
-      call fatal_error(error, "model: the damper has no positive base-cycle amplitude gamma_b", &
-        & UDMAP_EINPUT)
-      return
-    end if
-    model%blade => blade
-    model%damper => damper
-    model%analysis = analysis
-    model%bare%blade => blade
-    model%omega_lo = 2*pi*analysis%f_min
-    model%omega_hi = 2*pi*analysis%f_max
-    phi_g = blade%phi(blade%gamma_dof, 1)
-    phi_E = blade%phi(blade%exc_dof, 1)
-    if (phi_g == 0) then
-      call fatal_error(error, "model: the bare first mode does not rotate the platform "// &
-        & "(phi_g = 0), the damper cannot act on it", UDMAP_EINPUT)
-      return
-    end if
-    model%phi_ratio = abs(phi_E/phi_g)
-    ! the backbone follows the resonance of mode 1: a second bare mode inside the band would
-    ! make "the maximum over the band" jump between resonances
-    do r = 2, size(blade%omega)
-      if (blade%omega(r) >= model%omega_lo .and. blade%omega(r) <= model%omega_hi) then
-        write(buf, '(g0.6)') blade%omega(r)/(2*pi)
-        call fatal_error(error, "analysis: the band [f_min, f_max] contains the bare mode "// &
-          & "at "//trim(buf)//" Hz besides mode 1; the mapping follows the first-mode "// &
-          & "resonance: narrow the band", UDMAP_EINPUT)
-        return
-      end if
-    end do
-    if (blade%explicit_C .and. allocated(blade%C)) then
-      model%c1 = dot_product(blade%phi(:, 1), matmul(blade%C, blade%phi(:, 1)))
-      model%undamped = all(blade%C == 0)
-    else if (blade%explicit_C) then
-      ! band storage only: the width estimate does without the viscous part
-      model%c1 = 0
-      model%undamped = .false.
-      if (allocated(blade%Cb)) model%undamped = all(blade%Cb == 0)
-    else
-      model%c1 = blade%beta*blade%omega1**2
-      model%undamped = .not.blade%explicit_C .and. blade%zeta == 0
-    end if
-    call new_secular(model%secular, blade, error)
-    if (allocated(error)) return
-    if (analysis%band_interpolation) &
-      & call new_band_receptances(model%bare%band, blade, model%omega_lo, model%omega_hi)
-  end subroutine new_model
 
   !> Couples another damper to the model (borrowed like the first): the bare-blade data stay,
   !> the backbone table is rebuilt on next use. This is the cheap path after a change of the
@@ -308,14 +200,19 @@ contains
       call fatal_error(error, "set_damper: the model is not built", UDMAP_EINPUT)
       return
     end if
-    if (.not.(damper%gamma_b > 0)) then
-      call fatal_error(error, "model: the damper has no positive base-cycle amplitude gamma_b", &
-        & UDMAP_EINPUT)
-      return
-    end if
+    call check_model_damper(damper, error)
+    if (allocated(error)) return
     model%damper => damper
     model%table%revision = -huge(1)
   end subroutine set_damper
+
+  !> The damper a model can take: one with a positive base-cycle amplitude gamma_b.
+  subroutine check_model_damper(damper, error)
+    type(damper_type), intent(in) :: damper
+    type(error_type), allocatable, intent(out) :: error
+    if (.not.(damper%gamma_b > 0)) call fatal_error(error, "model: the damper has no "// &
+      & "positive base-cycle amplitude gamma_b", UDMAP_EINPUT)
+  end subroutine check_model_damper
 
   !> The damper's summary numbers that the backbone table depends on besides k(gamma).
   pure function damper_fingerprint(damper) result(fp)
@@ -428,4 +325,4 @@ contains
       end if
     end do
   end subroutine check_forces
-end module udmap_model_data
+end module udmap_mapping_model_data

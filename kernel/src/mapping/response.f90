@@ -6,15 +6,15 @@
 !> by Brent's method in ln(a) to rtol. The scan stops where the lower bound
 !> a (1 - |k(a)| |H_gg|) of q exceeds the target with |k| falling. Only damper stiffness
 !> evaluations are needed.
-module udmap_response
-  use udmap_kinds, only: wp, pi
-  use udmap_error, only: error_type, fatal_error, UDMAP_EINPUT, UDMAP_EPHYSICS
-  use udmap_blade, only: receptances_type
-  use udmap_layer, only: bare_receptances
-  use udmap_root_finding, only: brent_type, brent_start, brent_next, brent_update
-  use udmap_model_data, only: model_type, point_type, limit_force_or_huge, fill_point, &
+module udmap_mapping_response
+  use udmap_core_kinds, only: wp, pi
+  use udmap_core_error, only: error_type, fatal_error, UDMAP_EINPUT, UDMAP_EPHYSICS
+  use udmap_blade_type, only: receptances_type
+  use udmap_mapping_layer, only: bare_receptances
+  use udmap_core_root_finding, only: brent_type, brent_start, brent_next, brent_update
+  use udmap_mapping_model_data, only: model_type, point_type, limit_force_or_huge, fill_point, &
     & check_forces, limit_force_backbone
-  use udmap_backbone, only: ensure_table, grid_gamma, max_decades, j_limit, j_rising
+  use udmap_mapping_backbone_table, only: ensure_table, grid_gamma, max_decades, j_limit, j_rising
   implicit none
   private
   public :: response, response_roots
@@ -149,4 +149,4 @@ contains
       q = a*abs(1 + model%damper%stiffness(a)*r%gg)
     end function q
   end subroutine response_roots
-end module udmap_response
+end module udmap_mapping_response

@@ -3,9 +3,9 @@
 !> table and run cmake/generate_parameters.py.
 module udmap_api_c_parameters
   use, intrinsic :: iso_c_binding, only: c_double, c_int
-  use udmap_beam, only: beam_params_type
+  use udmap_blade_beam, only: beam_params_type
   use udmap_damper_params, only: asymmetric_params_type
-  use udmap_model, only: analysis_type
+  use udmap_mapping_model, only: analysis_type
   implicit none
   private
   public :: c_beam_params, beam_from_c, udmap_asymmetric_params, asymmetric_from_c, &

@@ -4,8 +4,8 @@
 !> table and run cmake/generate_parameters.py.
 module udmap_api_legacy_parameters
   use, intrinsic :: iso_c_binding, only: c_double
-  use udmap_kinds, only: wp
-  use udmap_beam, only: beam_params_type
+  use udmap_core_kinds, only: wp
+  use udmap_blade_beam, only: beam_params_type
   use udmap_damper_params, only: asymmetric_params_type
   implicit none
   private

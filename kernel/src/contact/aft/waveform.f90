@@ -1,0 +1,273 @@
+!> The periodic waveform of the alternating frequency-time method: gamma(tau) = Gamma_0 +
+!> Re(sum_h Gamma_h e^{i h tau}), tau = omega t, its slope, its extrema over a period (the roots
+!> of gamma', where the exact AFT splits the path into monotone stretches), the instant at which
+!> it reaches a value on a monotone stretch, and the powers e^{i h tau} of the Fourier integrals.
+module udmap_contact_aft_waveform
+  use udmap_core_kinds, only: wp, pi
+  use udmap_core_sorting, only: sort_ascending
+  implicit none
+  private
+  public :: waveform_value, waveform_slope, waveform_extrema, solve_time, powers, two_pi
+
+  !> One period of tau [rad].
+  real(wp), parameter :: two_pi = 2.0_wp*pi
+
+contains
+
+  !> gamma(tau) for the coefficients G0 (static) and G(1:H).
+  pure real(wp) function waveform_value(G0, G, tau) result(val)
+    real(wp), intent(in) :: G0, tau
+    complex(wp), intent(in) :: G(:)
+    complex(wp) :: z, zh
+    integer :: h
+    z = cmplx(cos(tau), sin(tau), wp)
+    zh = (1.0_wp, 0.0_wp)
+    val = G0
+    do h = 1, size(G)
+      zh = zh*z
+      val = val + real(G(h)*zh, wp)
+    end do
+  end function waveform_value
+
+  !> d^order gamma / dtau^order at tau (order 1 or 2).
+  pure real(wp) function waveform_slope(G, tau, order) result(val)
+    complex(wp), intent(in) :: G(:)
+    real(wp), intent(in) :: tau
+    integer, intent(in) :: order
+    complex(wp) :: z, zh
+    integer :: h
+    z = cmplx(cos(tau), sin(tau), wp)
+    zh = (1.0_wp, 0.0_wp)
+    val = 0.0_wp
+    ! (i h)^1 = i h, (i h)^2 = -h^2 (no complex power in the inner loop)
+    if (order == 1) then
+      do h = 1, size(G)
+        zh = zh*z
+        val = val - h*aimag(G(h)*zh)
+      end do
+    else
+      do h = 1, size(G)
+        zh = zh*z
+        val = val - real(h, wp)**2*real(G(h)*zh, wp)
+      end do
+    end if
+  end function waveform_slope
+
+  !> The extrema of gamma(tau) over one period, in order, starting at the global maximum:
+  !> tau(1) is the maximum, tau(2), ... alternate minimum/maximum, tau(n+1) = tau(1) + 2 pi.
+  !> n = 0 for a constant waveform.
+  pure subroutine waveform_extrema(G, tau, n)
+    complex(wp), intent(in) :: G(:)
+    real(wp), allocatable, intent(out) :: tau(:)
+    integer, intent(out) :: n
+    integer :: H, ns, j, k, imax, h1, nh
+    real(wp), allocatable :: ts(:), ds(:), roots(:), c1(:), s1(:), ch(:), sh(:), sa(:), cb(:)
+    real(wp) :: gr, gi, cn
+    complex(wp) :: z, zs
+    real(wp) :: a, b, fa, fb, x, fx, d2, best, v, scale, xn
+    H = size(G)
+    n = 0
+    scale = sum(abs(G))
+    if (scale <= 0.0_wp) then
+      allocate(tau(1))
+      tau = 0.0_wp
+      return
+    end if
+    ! only one harmonic present: extrema in closed form
+    h1 = 0
+    do k = 1, H
+      if (abs(G(k)) > 0.0_wp) then
+        if (h1 /= 0) then
+          h1 = -1
+          exit
+        end if
+        h1 = k
+      end if
+    end do
+    if (h1 > 0) then
+      n = 2*h1
+      allocate(tau(n+1))
+      do k = 1, n
+        tau(k) = (-atan2(aimag(G(h1)), real(G(h1), wp)) + (k - 1)*pi)/h1
+      end do
+      tau(n+1) = tau(1) + two_pi
+      return
+    end if
+    ! general waveform: sign changes of gamma' on a grid fine enough for H harmonics
+    ns = max(64, 16*H)
+    allocate(ts(0:ns), ds(0:ns), roots(ns))
+    do j = 0, ns
+      ts(j) = two_pi*j/ns
+    end do
+    ! gamma'(tau_j) = -(sa_j + cb_j), sa_j = sum_h h Re G_h sin(h tau_j), cb_j = sum_h h Im G_h
+    ! cos(h tau_j); at tau_{ns-j} = 2 pi - tau_j the sines change sign: sa_j - cb_j. So only
+    ! j = 0..ns/2, cos/sin(h tau_j) by the angle-addition recurrence (the grid the inner loop),
+    ! cos/sin(tau_j) exact every 8th point and rotated in between.
+    nh = ns/2
+    allocate(c1(0:nh), s1(0:nh), ch(0:nh), sh(0:nh), sa(0:nh), cb(0:nh))
+    zs = cmplx(cos(two_pi/ns), sin(two_pi/ns), wp)
+    do j = 0, nh
+      if (mod(j, 8) == 0) then
+        z = cmplx(cos(ts(j)), sin(ts(j)), wp)
+      else
+        z = z*zs
+      end if
+      c1(j) = real(z, wp)
+      s1(j) = aimag(z)
+    end do
+    do j = 0, nh
+      ch(j) = c1(j)
+      sh(j) = s1(j)
+      sa(j) = real(G(1), wp)*s1(j)
+      cb(j) = aimag(G(1))*c1(j)
+    end do
+    do k = 2, H
+      gr = k*real(G(k), wp)
+      gi = k*aimag(G(k))
+      do j = 0, nh
+        cn = ch(j)*c1(j) - sh(j)*s1(j)
+        sh(j) = sh(j)*c1(j) + ch(j)*s1(j)
+        ch(j) = cn
+        sa(j) = sa(j) + gr*sh(j)
+        cb(j) = cb(j) + gi*cn
+      end do
+    end do
+    do j = 0, nh
+      ds(j) = -(sa(j) + cb(j))
+    end do
+    do j = 1, nh - 1
+      ds(ns-j) = sa(j) - cb(j)
+    end do
+    ts(ns) = two_pi
+    ds(ns) = ds(0)
+    ! zero counts as positive, so a touching zero (inflection) is not an extremum
+    do j = 0, ns - 1
+      if ((ds(j) >= 0.0_wp) .eqv. (ds(j+1) >= 0.0_wp)) cycle
+      a = ts(j); b = ts(j+1); fa = ds(j); fb = ds(j+1)
+      if (fa == 0.0_wp) then
+        x = a
+      else if (fb == 0.0_wp) then
+        x = b
+      else
+        ! safeguarded Newton on gamma' inside the bracket
+        x = a - fa*(b - a)/(fb - fa)
+        do k = 1, 100
+          fx = waveform_slope(G, x, 1)
+          if (abs(fx) <= 8.0_wp*epsilon(1.0_wp)*scale*H) exit
+          if ((fx > 0.0_wp) .eqv. (fa > 0.0_wp)) then
+            a = x; fa = fx
+          else
+            b = x; fb = fx
+          end if
+          d2 = waveform_slope(G, x, 2)
+          xn = 0.5_wp*(a + b)
+          if (d2 /= 0.0_wp) xn = x - fx/d2
+          if (.not.(xn > a .and. xn < b)) xn = 0.5_wp*(a + b)
+          if (xn == x .or. b - a <= 4.0_wp*epsilon(1.0_wp)*two_pi) exit
+          x = xn
+        end do
+      end if
+      if (x >= two_pi) x = x - two_pi
+      if (n > 0) then
+        if (abs(x - roots(n)) <= 4.0_wp*epsilon(1.0_wp)*two_pi .or. &
+            & abs(x - roots(1)) <= 4.0_wp*epsilon(1.0_wp)*two_pi) cycle
+      end if
+      n = n + 1
+      roots(n) = x
+    end do
+    if (n < 2) then
+      ! degenerate (extrema closer than the grid resolves): grid maximum and minimum
+      n = 2
+      roots(1) = ts(maxloc(waveform_grid(G, ts(0:ns-1)), 1) - 1)
+      roots(2) = ts(minloc(waveform_grid(G, ts(0:ns-1)), 1) - 1)
+    end if
+    call sort_ascending(roots(1:n))
+    ! start at the global maximum
+    imax = 1
+    best = -huge(1.0_wp)
+    do k = 1, n
+      v = waveform_value(0.0_wp, G, roots(k))
+      if (v > best) then
+        best = v
+        imax = k
+      end if
+    end do
+    allocate(tau(n+1))
+    do k = 1, n
+      j = imax + k - 1
+      if (j <= n) then
+        tau(k) = roots(j)
+      else
+        tau(k) = roots(j - n) + two_pi
+      end if
+    end do
+    tau(n+1) = tau(1) + two_pi
+  contains
+    pure function waveform_grid(G, t) result(v)
+      complex(wp), intent(in) :: G(:)
+      real(wp), intent(in) :: t(:)
+      real(wp) :: v(size(t))
+      integer :: i
+      do i = 1, size(t)
+        v(i) = waveform_value(0.0_wp, G, t(i))
+      end do
+    end function waveform_grid
+  end subroutine waveform_extrema
+
+  !> e^{i m t} for m = -2H..H.
+  pure subroutine powers(t, H, P)
+    real(wp), intent(in) :: t
+    integer, intent(in) :: H
+    complex(wp), intent(out) :: P(-2*H:H)
+    complex(wp) :: z
+    integer :: m
+    z = cmplx(cos(t), sin(t), wp)
+    P(0) = (1.0_wp, 0.0_wp)
+    do m = 1, H
+      P(m) = P(m-1)*z
+    end do
+    do m = 1, 2*H
+      P(-m) = P(-m+1)*conjg(z)
+    end do
+  end subroutine powers
+
+  !> The instant in [ta, tb] where the monotone waveform reaches gt (gb = gamma(tb)).
+  pure real(wp) function solve_time(G0, G, gt, ta, tb, gb) result(t)
+    real(wp), intent(in) :: G0, gt, ta, tb, gb
+    complex(wp), intent(in) :: G(:)
+    real(wp) :: a, b, fa, fb, ft, d, tn, tolf
+    integer :: it
+    a = ta; b = tb
+    fa = G0 + waveform_value(0.0_wp, G, a) - gt
+    fb = gb - gt
+    if (fa == 0.0_wp) then
+      t = a; return
+    end if
+    if (fb == 0.0_wp .or. (fa > 0.0_wp .eqv. fb > 0.0_wp)) then
+      ! rounding put g at (or just past) the end of the stretch
+      if (abs(fa) < abs(fb)) then
+        t = a
+      else
+        t = b
+      end if
+      return
+    end if
+    tolf = 4.0_wp*epsilon(1.0_wp)*(abs(G0) + sum(abs(G)) + abs(gt))
+    t = a - fa*(b - a)/(fb - fa)
+    do it = 1, 100
+      ft = G0 + waveform_value(0.0_wp, G, t) - gt
+      if (abs(ft) <= tolf) return
+      if ((ft > 0.0_wp) .eqv. (fa > 0.0_wp)) then
+        a = t; fa = ft
+      else
+        b = t; fb = ft
+      end if
+      d = waveform_slope(G, t, 1)
+      tn = 0.5_wp*(a + b)
+      if (d /= 0.0_wp) tn = t - ft/d
+      if (.not.(tn > a .and. tn < b)) tn = 0.5_wp*(a + b)
+      if (tn == t .or. b - a <= 2.0_wp*epsilon(1.0_wp)*max(abs(a), abs(b), 1.0_wp)) return
+      t = tn
+    end do
+  end function solve_time
+end module udmap_contact_aft_waveform

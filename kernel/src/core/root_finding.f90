@@ -1,0 +1,114 @@
+!> Bracketed scalar root finding by reverse communication (Brent's zeroin), so that the
+!> caller evaluates the function itself: no callbacks, no closures, no saved state.
+!>
+!> Usage:
+!>   call brent_start(state, a, fa, b, fb, tol)      ! fa*fb <= 0
+!>   do
+!>     call brent_next(state, x, more)               ! x: next abscissa to evaluate
+!>     if (.not.more) exit
+!>     call brent_update(state, f(x))
+!>   end do
+!>   root = state%b                                  ! the best estimate, f(root) = state%fb
+module udmap_core_root_finding
+  use udmap_core_kinds, only: wp
+  implicit none
+  private
+  public :: brent_type, brent_start, brent_next, brent_update
+
+  !> State of one bracketed root search; b is always the best estimate so far.
+  type :: brent_type
+    real(wp) :: a = 0, b = 0, c = 0, fa = 0, fb = 0, fc = 0, d = 0, e = 0
+    !> Absolute tolerance on the root.
+    real(wp) :: tol = 0
+    !> Function evaluations requested so far and the budget.
+    integer :: evaluations = 0, max_evaluations = 200
+    !> True once the root is located to tol (or the budget is spent).
+    logical :: converged = .false.
+  end type brent_type
+
+contains
+
+  !> Starts a search on the bracket [a, b] with function values fa, fb of opposite sign
+  !> (or one of them zero); tol is the absolute tolerance on the root.
+  pure subroutine brent_start(state, a, fa, b, fb, tol)
+    type(brent_type), intent(out) :: state
+    real(wp), intent(in) :: a, fa, b, fb, tol
+    state%a = a; state%fa = fa
+    state%b = b; state%fb = fb
+    state%c = b; state%fc = fb
+    state%d = b - a; state%e = state%d
+    state%tol = tol
+  end subroutine brent_start
+
+  !> Advances the search: more = .true. with the next abscissa x to evaluate, or .false.
+  !> when converged (state%b is the root).
+  pure subroutine brent_next(state, x, more)
+    type(brent_type), intent(inout) :: state
+    real(wp), intent(out) :: x
+    logical, intent(out) :: more
+    real(wp) :: tol1, xm, p, q, r, s
+    more = .false.
+    x = state%b
+    if (state%converged) return
+    associate(a => state%a, b => state%b, c => state%c, fa => state%fa, fb => state%fb, &
+        & fc => state%fc, d => state%d, e => state%e)
+      if ((fb > 0 .and. fc > 0) .or. (fb < 0 .and. fc < 0)) then
+        c = a; fc = fa; d = b - a; e = d
+      end if
+      if (abs(fc) < abs(fb)) then
+        a = b; b = c; c = a
+        fa = fb; fb = fc; fc = fa
+      end if
+      tol1 = 2*epsilon(1.0_wp)*abs(b) + 0.5_wp*state%tol
+      xm = 0.5_wp*(c - b)
+      if (abs(xm) <= tol1 .or. fb == 0 .or. state%evaluations >= state%max_evaluations) then
+        state%converged = .true.
+        x = b
+        return
+      end if
+      if (abs(e) >= tol1 .and. abs(fa) > abs(fb)) then
+        s = fb/fa
+        if (a == c) then
+          ! secant
+          p = 2*xm*s
+          q = 1 - s
+        else
+          ! inverse quadratic interpolation
+          q = fa/fc
+          r = fb/fc
+          p = s*(2*xm*q*(q - r) - (b - a)*(r - 1))
+          q = (q - 1)*(r - 1)*(s - 1)
+        end if
+        if (p > 0) q = -q
+        p = abs(p)
+        if (2*p < min(3*xm*q - abs(tol1*q), abs(e*q))) then
+          e = d
+          d = p/q
+        else
+          d = xm
+          e = d
+        end if
+      else
+        d = xm
+        e = d
+      end if
+      a = b
+      fa = fb
+      if (abs(d) > tol1) then
+        b = b + d
+      else
+        b = b + sign(tol1, xm)
+      end if
+      x = b
+    end associate
+    state%evaluations = state%evaluations + 1
+    more = .true.
+  end subroutine brent_next
+
+  !> Gives the search the function value at the abscissa returned by brent_next.
+  pure subroutine brent_update(state, fx)
+    type(brent_type), intent(inout) :: state
+    real(wp), intent(in) :: fx
+    state%fb = fx
+  end subroutine brent_update
+end module udmap_core_root_finding

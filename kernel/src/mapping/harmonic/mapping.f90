@@ -1,0 +1,619 @@
+!> The mapping with multi-harmonic layers (PHYSICS.md 4.1): the backbone peaks, the response at
+!> a given frequency and the response curves with harmonics 0..H (analysis%harmonics > 1) or
+!> an automatic H (analysis%harmonics = 0). With analysis%harmonics = 1 every entry point here
+!> is exactly the single-harmonic method (the same code path, the same numbers).
+!>
+!> Backbone: F_bb(gamma) = min_omega |P(omega; gamma)|; the roots of F_bb = F_E are located by
+!> Newton steps in (ln gamma, ln omega) from each single-harmonic root (the multi-harmonic
+!> correction is a few percent, so every root has its single-harmonic counterpart to start
+!> from), or from the last root with as many harmonics moved by the change of the
+!> single-harmonic root; secant steps around full peak searches as the fallback. Every layer on
+!> the way is solved on its own (udmap_mapping_harmonic_layer); the previous layer only warm-starts.
+!>
+!> Automatic H: start at H = 3, raised to every harmonic h <= 6 whose h omega lies within 12 %
+!> of a bare-blade mode above mode 1; then compare with the next H of the ladder 3, 5, 7, 9,
+!> 13, 17, 25, 33, 49, 64, itself raised to the near-mode harmonics up to twice the current
+!> H and to the next near-mode harmonic above it, whatever its order (so no comparison stops
+!> short of a harmonic that a bare mode amplifies), until gamma_P,
+!> sigma_a, gamma_max, sigma_max and f_res change by less than harmonic_tol (relative); the
+!> larger H is reported.
+module udmap_mapping_harmonic_mapping
+  use, intrinsic :: iso_fortran_env, only: int64
+  use udmap_core_kinds, only: wp, pi
+  use udmap_core_sorting, only: sort_ascending
+  use udmap_core_error, only: error_type, fatal_error, UDMAP_EINPUT
+  use udmap_damper_type, only: DAMPER_ASYMMETRIC, DAMPER_JENKINS
+  use udmap_contact_element_jenkins, only: jenkins_element_type, new_jenkins_element
+  use udmap_contact_element_asymmetric, only: contact_element_type, new_contact_element
+  use udmap_mapping_model_data, only: model_type, point_type, curve_type, limit_force_or_huge, &
+    & regime_of, damper_fingerprint, EIGEN_AUTO, EIGEN_MODAL
+  use udmap_mapping_backbone, only: backbone_single => backbone, backbone_curve
+  use udmap_mapping_response, only: response_single => response
+  use udmap_mapping_curves, only: curves_single => response_curves
+  use udmap_mapping_harmonic_types, only: harmonic_state_type, harmonic_outputs_type, &
+    & HARMONICS_MAX
+  use udmap_mapping_harmonic_layer, only: harmonic_setup, harmonic_resize, harmonic_outputs
+  use udmap_mapping_harmonic_search, only: harmonic_root, harmonic_peak_root, harmonic_force_root
+  use udmap_mapping_harmonic_force_table, only: table_reset, table_lookup, table_first_visit, &
+    & table_panel, table_has_node, table_add_node, table_judge, node_force, &
+    & table_panel_harmonics, table_set_panel_harmonics, TABLE_VERIFIED, TABLE_MISSING, &
+    & TABLE_SPLIT, LEVEL_MAX
+  implicit none
+  private
+  public :: backbone, response, response_curves, harmonics_near_modes, set_harmonics
+
+  !> The ladder of H tried by the automatic choice.
+  integer, parameter :: ladder(10) = [3, 5, 7, 9, 13, 17, 25, 33, 49, 64]
+  !> A harmonic h omega within this relative distance of a bare mode is always included.
+  real(wp), parameter :: near_mode = 0.12_wp
+  !> Relative tolerance of the layer roots and peaks (far below the 1e-6 agreement asked of
+  !> the outputs; the AFT is exact to rounding).
+  real(wp), parameter :: rtol_h = 1.0e-10_wp
+  !> The force table (model%force_table) interpolates to harmonic_tol times this, and is not
+  !> used below table_tol_min (exact points are then cheaper than a table that fine).
+  real(wp), parameter :: table_share = 1.0e-3_wp, table_tol_min = 1.0e-9_wp
+
+contains
+
+  !> Changes the harmonics of a built model (1, H up to 64, or 0 for auto) and the tolerance
+  !> of the automatic choice; nothing else is recomputed.
+  subroutine set_harmonics(model, harmonics, harmonic_tol, error)
+    type(model_type), intent(inout) :: model
+    integer, intent(in) :: harmonics
+    real(wp), intent(in) :: harmonic_tol
+    type(error_type), allocatable, intent(out) :: error
+    if (harmonics < 0 .or. harmonics > HARMONICS_MAX) then
+      call fatal_error(error, "analysis.harmonics must be 1, an integer up to 64, or auto (0)", &
+        & UDMAP_EINPUT)
+      return
+    end if
+    if (.not.(harmonic_tol >= 1e-10_wp .and. harmonic_tol <= 0.1_wp)) then
+      call fatal_error(error, "analysis.harmonic_tol must lie in [1e-10, 0.1]", UDMAP_EINPUT)
+      return
+    end if
+    model%analysis%harmonics = harmonics
+    model%analysis%harmonic_tol = harmonic_tol
+  end subroutine set_harmonics
+
+  !> The peaks of the non-linear response for the forces F_E [N] (PHYSICS.md 4 and 4.1).
+  subroutine backbone(model, F_E, points, error)
+    type(model_type), intent(inout) :: model
+    real(wp), intent(in) :: F_E(:)
+    type(point_type), allocatable, intent(out) :: points(:)
+    type(error_type), allocatable, intent(out) :: error
+    type(point_type), allocatable :: p1(:)
+    integer :: i, em
+    em = starts_modal(model)
+    call run()
+    model%analysis%eigen_method = em
+  contains
+    subroutine run()
+      call backbone_single(model, F_E, p1, error)
+      if (model%analysis%harmonics == 1 .or. allocated(error)) then
+        call move_alloc(p1, points)
+        return
+      end if
+      call ensure_element(model, error)
+      if (allocated(error)) return
+      allocate(points(size(F_E)))
+      do i = 1, size(F_E)
+        if (p1(i)%unbounded) then
+          points(i) = p1(i)
+          cycle
+        end if
+        if (model%force_table .and. table_share*model%analysis%harmonic_tol >= table_tol_min) &
+          & then
+          call table_point(model, p1(i), points(i), error)
+        else
+          call multi_point(model, p1(i), .true., points(i), error)
+        end if
+        if (allocated(error)) return
+      end do
+    end subroutine run
+  end subroutine backbone
+
+  !> The single-harmonic pass that starts the layers (H /= 1) needs only starts: with the
+  !> default eigenvalue start and no direct eigen-solve done yet, it takes the secular
+  !> equation alone (EIGEN_MODAL), skipping the model's one dense eigen-solve, most of a cold
+  !> gg10 (the layers converge to the same roots from either start). The backbone table is
+  !> tagged with its start, so a later single-harmonic call builds its own table again and
+  !> keeps its numbers bit for bit. Returns the eigen_method to restore afterwards.
+  integer function starts_modal(model) result(em)
+    type(model_type), intent(inout) :: model
+    em = model%analysis%eigen_method
+    if (model%analysis%harmonics /= 1 .and. em == EIGEN_AUTO .and. .not.model%have_direct) &
+      & model%analysis%eigen_method = EIGEN_MODAL
+  end function starts_modal
+
+  !> The backbone point at p1%F_E from the force table (udmap_mapping_harmonic_force_table):
+  !> interpolated where a verified panel holds F_E, else solved exactly. Building a panel solves its
+  !> points
+  !> exactly; a point that fails there only makes the panel finer (the asked force then gets
+  !> its own exact solve, and its own error if any).
+  subroutine table_point(model, p1, point, error)
+    type(model_type), intent(inout) :: model
+    type(point_type), intent(in) :: p1
+    type(point_type), intent(out) :: point
+    type(error_type), allocatable, intent(out) :: error
+    real(wp), allocatable :: y(:)
+    real(wp) :: u
+    integer(int64) :: idx(9)
+    integer :: status, sig(4), L, j
+    call table_reset(model%ftable, [real(model%damper%revision, wp), &
+      & damper_fingerprint(model%damper), real(model%analysis%harmonics, wp), &
+      & model%analysis%harmonic_tol])
+    u = log(p1%F_E)
+    call table_lookup(model%ftable, u, status, y, sig)
+    if (status == TABLE_MISSING) then
+      if (.not.table_first_visit(model%ftable, u)) then
+        call build()
+        if (allocated(error)) return
+        call table_lookup(model%ftable, u, status, y, sig)
+      end if
+    end if
+    if (status == TABLE_VERIFIED) then
+      call unpack_point(model, p1%F_E, y, sig, point)
+    else
+      call multi_point(model, p1, .true., point, error)
+    end if
+  contains
+    !> The panels on the path to u, down to a verified or exact leaf, with every point at
+    !> the panel's harmonics (auto: the H chosen at the middle of the level-0 panel, solved
+    !> then at that fixed H).
+    subroutine build()
+      integer :: H, harmonics
+      real(wp) :: F_mid
+      harmonics = model%analysis%harmonics
+      H = harmonics
+      if (harmonics == 0) then
+        call table_panel_harmonics(model%ftable, u, H, F_mid)
+        if (H == 0) then
+          H = -1
+          call panel_harmonics(F_mid, H)
+          call table_set_panel_harmonics(model%ftable, u, H)
+        end if
+        if (H < 0) return
+      end if
+      model%analysis%harmonics = H
+      do L = 0, LEVEL_MAX
+        idx = table_panel(u, L)
+        do j = 1, 9
+          if (.not.table_has_node(model%ftable, idx(j), H)) call add_node(idx(j))
+        end do
+        if (table_judge(model%ftable, idx, H, table_share*model%analysis%harmonic_tol, &
+          & L == LEVEL_MAX) /= TABLE_SPLIT) exit
+      end do
+      model%analysis%harmonics = harmonics
+    end subroutine build
+
+    !> The automatic H at F (-1 if the point fails: the panel then stays exact).
+    subroutine panel_harmonics(F, H)
+      real(wp), intent(in) :: F
+      integer, intent(inout) :: H
+      type(point_type), allocatable :: pn(:)
+      type(point_type) :: q
+      type(error_type), allocatable :: err
+      call backbone_single(model, [F], pn, err)
+      if (allocated(err)) return
+      if (pn(1)%unbounded) return
+      call multi_point(model, pn(1), .true., q, err)
+      if (.not.allocated(err)) H = q%harmonics
+    end subroutine panel_harmonics
+
+    subroutine add_node(at)
+      integer(int64), intent(in) :: at
+      type(point_type), allocatable :: pn(:)
+      type(point_type) :: q
+      type(error_type), allocatable :: err
+      real(wp), allocatable :: yn(:), sn(:)
+      integer :: sn_sig(4)
+      logical :: ok
+      call backbone_single(model, [node_force(at)], pn, err)
+      ok = .not.allocated(err)
+      if (ok) ok = .not.pn(1)%unbounded
+      if (ok) then
+        call multi_point(model, pn(1), .true., q, err)
+        ok = .not.allocated(err)
+      end if
+      if (ok) call pack_point(q, yn, sn, sn_sig, ok)
+      if (ok) then
+        call table_add_node(model%ftable, at, model%analysis%harmonics, .true., sn_sig, yn, sn)
+      else
+        call table_add_node(model%ftable, at, model%analysis%harmonics, .false., [0, 0, 0, 0], &
+          & [real(wp) ::], [real(wp) ::])
+      end if
+    end subroutine add_node
+  end subroutine table_point
+
+  !> A multi-harmonic backbone point as the force table holds it: y the outputs (in ln where
+  !> positive by nature), s the scale each is checked on (1: relative, in ln), signature its
+  !> structure (H, roots, jump, harmonic content). ok = .false. for a point the table cannot
+  !> hold (a zero where a logarithm is taken).
+  subroutine pack_point(p, y, s, signature, ok)
+    type(point_type), intent(in) :: p
+    real(wp), allocatable, intent(out) :: y(:), s(:)
+    integer, intent(out) :: signature(4)
+    logical, intent(out) :: ok
+    integer :: nr, nh
+    nr = size(p%roots)
+    nh = size(p%gamma_h)
+    signature = [p%harmonics, nr, merge(1, 0, p%jump), nh]
+    ok = p%gamma_P > 0 .and. p%f_res > 0 .and. p%u_E > 0 .and. p%gamma_max > 0 .and. &
+      & all(p%roots > 0) .and. nr > 0 .and. size(p%sigma_h) == nh
+    if (.not.ok) return
+    y = [log(p%gamma_P), log(p%f_res), p%sigma_a, log(p%u_E), real(p%k, wp), aimag(p%k), &
+      & log(p%gamma_max), p%sigma_max, log(p%roots), p%gamma_h, p%sigma_h]
+    s = [1.0_wp, 1.0_wp, p%sigma_a, 1.0_wp, abs(p%k), abs(p%k), 1.0_wp, p%sigma_max, &
+      & spread(1.0_wp, 1, nr), spread(p%gamma_max, 1, nh), spread(p%sigma_max, 1, nh)]
+  end subroutine pack_point
+
+  !> The point at F_E from the interpolated outputs y (pack_point's order) and their
+  !> structure; regime and hcf_ok follow from them as for an exact point.
+  subroutine unpack_point(model, F_E, y, signature, p)
+    type(model_type), intent(in) :: model
+    real(wp), intent(in) :: F_E, y(:)
+    integer, intent(in) :: signature(4)
+    type(point_type), intent(out) :: p
+    real(wp) :: F_lim
+    integer :: nr, nh
+    nr = signature(2)
+    nh = signature(4)
+    F_lim = limit_force_or_huge(model)
+    p%F_E = F_E
+    p%gamma_P = exp(y(1))
+    p%f_res = exp(y(2))
+    p%sigma_a = y(3)
+    p%u_E = exp(y(4))
+    p%k = cmplx(y(5), y(6), wp)
+    p%gamma_max = exp(y(7))
+    p%sigma_max = y(8)
+    p%roots = exp(y(9:8+nr))
+    p%roots(nr) = p%gamma_P
+    p%gamma_h = y(9+nr:8+nr+nh)
+    p%sigma_h = y(9+nr+nh:8+nr+2*nh)
+    p%harmonics = signature(1)
+    p%jump = signature(3) == 1
+    p%unbounded = .false.
+    p%regime = regime_of(model%damper, F_E, F_lim, p%gamma_P)
+    p%hcf_ok = F_E <= 0.5_wp*F_lim .and. p%sigma_max <= model%analysis%sigma_all .and. &
+      & F_lim < huge(1.0_wp)
+  end subroutine unpack_point
+
+  !> The response at the excitation frequency f_exc [Hz] for the forces F_E [N].
+  subroutine response(model, f_exc, F_E, points, error)
+    type(model_type), intent(inout) :: model
+    real(wp), intent(in) :: f_exc
+    real(wp), intent(in) :: F_E(:)
+    type(point_type), allocatable, intent(out) :: points(:)
+    type(error_type), allocatable, intent(out) :: error
+    type(point_type), allocatable :: p1(:)
+    integer :: i, em
+    em = starts_modal(model)
+    call run()
+    model%analysis%eigen_method = em
+  contains
+    subroutine run()
+      call response_single(model, f_exc, F_E, p1, error)
+      if (model%analysis%harmonics == 1 .or. allocated(error)) then
+        call move_alloc(p1, points)
+        return
+      end if
+      call ensure_element(model, error)
+      if (allocated(error)) return
+      allocate(points(size(F_E)))
+      do i = 1, size(F_E)
+        call multi_point(model, p1(i), .false., points(i), error)
+        if (allocated(error)) return
+      end do
+    end subroutine run
+  end subroutine response
+
+  !> The response curves (PHYSICS.md 3) for the forces F_E [N]. With H > 1 (or auto: the H
+  !> of each force's peak) every point of the single-harmonic curve is solved again as a
+  !> multi-harmonic layer at its frequency (|P(omega; gamma)| = F_E from its single-harmonic
+  !> amplitude, the previous point warm-starting the other harmonics); a point whose layer
+  !> has no amplitude at that frequency (beyond the shifted peak) is left out.
+  subroutine response_curves(model, F_E, layers, curves, error)
+    type(model_type), intent(inout) :: model
+    real(wp), intent(in) :: F_E(:)
+    integer, intent(in) :: layers
+    type(curve_type), allocatable, intent(out) :: curves(:)
+    type(error_type), allocatable, intent(out) :: error
+    type(point_type), allocatable :: peaks(:)
+    type(error_type), allocatable :: err_point
+    type(harmonic_state_type) :: s
+    type(harmonic_outputs_type) :: out
+    logical, allocatable :: keep(:)
+    integer :: i, j, H
+    call curves_single(model, F_E, layers, curves, error)
+    if (model%analysis%harmonics == 1 .or. allocated(error)) return
+    call backbone(model, F_E, peaks, error)
+    if (allocated(error)) return
+    do i = 1, size(curves)
+      if (peaks(i)%unbounded) cycle
+      H = peaks(i)%harmonics
+      s = harmonic_state_type()
+      call harmonic_resize(s, H)
+      associate(c => curves(i))
+        allocate(keep(size(c%f)))
+        keep = .true.
+        do j = 1, size(c%f)
+          if (.not.(c%gamma_P(j) > 0)) then
+            keep(j) = .false.
+            cycle
+          end if
+          call harmonic_force_root(model%harm, model%blade, F_E(i), c%gamma_P(j), 2*pi*c%f(j), &
+            & rtol_h, s, err_point)
+          if (allocated(err_point)) then
+            deallocate(err_point)
+            keep(j) = .false.
+            s = harmonic_state_type()
+            call harmonic_resize(s, H)
+            cycle
+          end if
+          ! another branch reached from this start: not this point
+          if (abs(log(s%gamma/c%gamma_P(j))) > 0.3_wp) then
+            keep(j) = .false.
+            cycle
+          end if
+          call harmonic_outputs(model%harm, s, model%blade%has_stress, out)
+          c%gamma_P(j) = s%gamma
+          c%sigma_a(j) = abs(out%S1)
+        end do
+        c%f = pack(c%f, keep)
+        c%gamma_P = pack(c%gamma_P, keep)
+        c%sigma_a = pack(c%sigma_a, keep)
+        c%branch = pack(c%branch, keep)
+        if (allocated(c%part)) c%part = pack(c%part, keep)
+        deallocate(keep)
+      end associate
+    end do
+  end subroutine response_curves
+
+  !> The highest harmonic 2 <= h <= h_cap whose h omega [rad/s] lies within 12 % of a bare
+  !> mode above mode 1 (0 if none).
+  integer function harmonics_near_modes(model, omega, h_cap) result(hmax)
+    type(model_type), intent(in) :: model
+    real(wp), intent(in) :: omega
+    integer, intent(in) :: h_cap
+    integer :: r, h
+    hmax = 0
+    do r = 2, size(model%blade%omega)
+      do h = 2, min(h_cap, HARMONICS_MAX)
+        if (abs(h*omega/model%blade%omega(r) - 1) <= near_mode) hmax = max(hmax, h)
+      end do
+    end do
+  end function harmonics_near_modes
+
+  !> The smallest harmonic above H whose h omega lies near a bare mode above mode 1 (0: none
+  !> up to HARMONICS_MAX): the next rung of the automatic H reaches it, as truncating just
+  !> below an amplified harmonic can look converged (blade A at 3.97 N: H = 6 and 7 agree to
+  !> 7e-4 in gamma_P, and both are 0.8 % from H = 46 through the 14th harmonic and above).
+  integer function next_near_mode(model, omega, H) result(h_next)
+    type(model_type), intent(in) :: model
+    real(wp), intent(in) :: omega
+    integer, intent(in) :: H
+    integer :: r, k
+    h_next = 0
+    do k = H + 1, HARMONICS_MAX
+      do r = 2, size(model%blade%omega)
+        if (abs(k*omega/model%blade%omega(r) - 1) <= near_mode) then
+          h_next = k
+          return
+        end if
+      end do
+    end do
+  end function next_near_mode
+
+  !> The contact element of the model's damper, rebuilt when the damper changed.
+  subroutine ensure_element(model, error)
+    type(model_type), intent(inout) :: model
+    type(error_type), allocatable, intent(out) :: error
+    type(contact_element_type) :: el
+    type(jenkins_element_type) :: jen
+    real(wp) :: fp(5)
+    fp = damper_fingerprint(model%damper)
+    if (allocated(model%harm%element) .and. model%harm%revision == model%damper%revision &
+      & .and. all(model%harm%fingerprint == fp)) return
+    select case (model%damper%kind)
+    case (DAMPER_ASYMMETRIC)
+      call new_contact_element(el, model%damper%params, error)
+      if (allocated(error)) return
+      call harmonic_setup(model%harm, el, model%blade, error)
+    case (DAMPER_JENKINS)
+      call new_jenkins_element(jen, model%damper%kt, model%damper%M_slip, error)
+      if (allocated(error)) return
+      call harmonic_setup(model%harm, jen, model%blade, error)
+    case default
+      call fatal_error(error, "analysis.harmonics: more than one harmonic needs a damper with "// &
+        & "a contact model (asymmetric or jenkins); a measured table has no loop to trace", &
+        & UDMAP_EINPUT)
+      return
+    end select
+    if (allocated(error)) return
+    model%harm%revision = model%damper%revision
+    model%harm%fingerprint = fp
+    ! a new damper: no warm start from the old one's roots
+    if (allocated(model%harm%rung)) deallocate(model%harm%rung)
+    allocate(model%harm%rung(HARMONICS_MAX))
+  end subroutine ensure_element
+
+  !> The multi-harmonic counterpart of the single-harmonic point p1: every root refined, the
+  !> largest giving the outputs; at_peak: backbone (omega free), else at p1%f_res.
+  subroutine multi_point(model, p1, at_peak, point, error)
+    type(model_type), intent(inout) :: model
+    type(point_type), intent(in) :: p1
+    logical, intent(in) :: at_peak
+    type(point_type), intent(out) :: point
+    type(error_type), allocatable, intent(out) :: error
+    type(harmonic_state_type) :: s, s_prev, s_below
+    type(harmonic_outputs_type) :: out, out_prev, out_below
+    real(wp) :: w
+    logical :: jump
+    real(wp), allocatable :: roots(:)
+    real(wp) :: F_lim, omega1, change
+    !> Tolerance of the root searches: the automatic H is only defined to harmonic_tol (its
+    !> rungs are compared with each other to it), so its rungs, the chosen one included, are
+    !> solved to a thousandth of it (a refinement to rtol_h cost 12 to 15 % of auto); fixed H
+    !> and the other roots to rtol_h
+    real(wp) :: tol_s
+    integer :: H, j, nr, n_new
+    logical :: auto
+
+    F_lim = limit_force_or_huge(model)
+    nr = size(p1%roots)
+    allocate(roots(nr))
+    auto = model%analysis%harmonics == 0
+    omega1 = 2*pi*p1%f_res
+    if (auto) then
+      H = max(3, harmonics_near_modes(model, omega1, 6))
+    else
+      H = model%analysis%harmonics
+    end if
+    tol_s = rtol_h
+    if (auto) tol_s = max(rtol_h, 1.0e-3_wp*model%analysis%harmonic_tol)
+    ! the largest root first: it gives the outputs (and, with auto, H)
+    call solve_root(p1%gamma_P, omega1, H, s, error)
+    if (allocated(error)) return
+    call harmonic_outputs(model%harm, s, model%blade%has_stress, out)
+    if (auto) then
+      do
+        if (H >= ladder(size(ladder))) exit
+        s_prev = s
+        out_prev = out
+        H = max(ladder(findloc(ladder > H, .true., 1)), &
+          & harmonics_near_modes(model, s%omega, 2*H), next_near_mode(model, s%omega, H))
+        call solve_root(s_prev%gamma, s_prev%omega, H, s, error, s_prev)
+        if (allocated(error)) return
+        call harmonic_outputs(model%harm, s, model%blade%has_stress, out)
+        change = max(rel(s%gamma, s_prev%gamma), rel(s%omega, s_prev%omega), &
+          & rel(out%gamma_max, out_prev%gamma_max), rel(abs(out%S1), abs(out_prev%S1)), &
+          & rel(out%sigma_max, out_prev%sigma_max))
+        if (change < model%analysis%harmonic_tol) exit
+      end do
+      tol_s = rtol_h
+    end if
+    roots(nr) = s%gamma
+    point%F_E = p1%F_E
+    point%gamma_P = s%gamma
+    point%f_res = s%omega/(2*pi)
+    point%k = s%M(1)/s%gamma
+    point%sigma_a = abs(out%S1)
+    point%u_E = abs(out%U1)
+    point%gamma_max = out%gamma_max
+    point%sigma_max = out%sigma_max
+    point%jump = jump
+    if (jump) then
+      ! F_bb jumps over F_E at gamma_c (PHYSICS.md 2.5): gamma_P = gamma_c, the other outputs
+      ! the convex combination of the layers on both sides that peaks at F_E (in ln F)
+      call harmonic_outputs(model%harm, s_below, model%blade%has_stress, out_below)
+      w = log(p1%F_E/abs(s_below%P))/log(abs(s%P)/abs(s_below%P))
+      point%gamma_P = sqrt(s%gamma*s_below%gamma)
+      roots(nr) = point%gamma_P
+      point%f_res = ((1 - w)*s_below%omega + w*s%omega)/(2*pi)
+      point%k = (1 - w)*s_below%M(1)/s_below%gamma + w*s%M(1)/s%gamma
+      point%sigma_a = (1 - w)*abs(out_below%S1) + w*abs(out%S1)
+      point%u_E = (1 - w)*abs(out_below%U1) + w*abs(out%U1)
+      point%gamma_max = (1 - w)*out_below%gamma_max + w*out%gamma_max
+      point%sigma_max = (1 - w)*out_below%sigma_max + w*out%sigma_max
+    end if
+    point%harmonics = H
+    point%gamma_h = out%gamma_h
+    point%sigma_h = out%sigma_h
+    point%regime = regime_of(model%damper, p1%F_E, F_lim, point%gamma_P)
+    ! with more than one harmonic the stress criterion takes the largest excursion
+    point%hcf_ok = p1%F_E <= 0.5_wp*F_lim .and. point%sigma_max <= model%analysis%sigma_all &
+      & .and. F_lim < huge(1.0_wp)
+    point%unbounded = .false.
+    ! the other roots, same H
+    do j = nr - 1, 1, -1
+      s = harmonic_state_type()
+      call solve_root(p1%roots(j), omega1, H, s, error)
+      if (allocated(error)) return
+      roots(j) = s%gamma
+    end do
+    ! roots ascending, without duplicates (two starts may reach the same root)
+    call sort_ascending(roots)
+    n_new = 0
+    do j = 1, nr
+      if (n_new > 0) then
+        if (abs(roots(j) - roots(n_new)) <= 1.0e-8_wp*roots(j)) cycle
+      end if
+      n_new = n_new + 1
+      roots(n_new) = roots(j)
+    end do
+    point%roots = roots(1:n_new)
+  contains
+    pure real(wp) function rel(a, b)
+      real(wp), intent(in) :: a, b
+      rel = 0
+      if (max(abs(a), abs(b)) > 0) rel = abs(a - b)/max(abs(a), abs(b))
+    end function rel
+
+    !> The root near gamma0 (peak near omega0, or at omega0) with H harmonics; warm: a solved
+    !> state with fewer harmonics to start from (else a cold start).
+    subroutine solve_root(gamma0, omega0, Hs, st, err, warm)
+      real(wp), intent(in) :: gamma0, omega0
+      integer, intent(in) :: Hs
+      type(harmonic_state_type), intent(inout) :: st
+      type(error_type), allocatable, intent(out) :: err
+      type(harmonic_state_type), intent(in), optional :: warm
+      real(wp) :: slope, Fb(2), fr(2)
+      logical :: ok
+      jump = .false.
+      if (present(warm)) then
+        st = warm
+      else
+        st = harmonic_state_type()
+      end if
+      call harmonic_resize(st, Hs)
+      st%omega = omega0
+      if (at_peak) then
+        if (.not.present(warm) .and. nr == 1 .and. model%harm%rung(Hs)%gamma1 > 0) then
+          ! from the last root with Hs harmonics (after a change of F_E alone, the previous
+          ! force): its layer, moved by the change of the single-harmonic root
+          associate(mem => model%harm%rung(Hs))
+            st = mem%root
+            call harmonic_peak_root(model%harm, model%blade, p1%F_E, &
+              & gamma0*(mem%root%gamma/mem%gamma1), omega0*(mem%root%omega/mem%omega1), &
+              & model%omega_lo, model%omega_hi, tol_s, st, ok, err)
+          end associate
+          if (allocated(err)) return
+          if (ok) then
+            call remember(st)
+            return
+          end if
+          st = harmonic_state_type()
+          call harmonic_resize(st, Hs)
+          st%omega = omega0
+        end if
+        ! (the next rung of the automatic H starts from the last rung's root, in warm)
+        call harmonic_peak_root(model%harm, model%blade, p1%F_E, gamma0, omega0, &
+          & model%omega_lo, model%omega_hi, tol_s, st, ok, err)
+        if (allocated(err)) return
+        if (ok) then
+          if (nr == 1) call remember(st)
+          return
+        end if
+        ! fallback: a secant on gamma around full peak searches, started with the
+        ! single-harmonic slope d ln F_bb/d ln gamma
+        call backbone_curve(model, [gamma0*(1 - 1.0e-4_wp), gamma0*(1 + 1.0e-4_wp)], Fb, fr, err)
+        if (allocated(err)) return
+        slope = log(Fb(2)/Fb(1))/log((1 + 1.0e-4_wp)/(1 - 1.0e-4_wp))
+        call harmonic_root(model%harm, model%blade, p1%F_E, gamma0, slope, model%omega_lo, &
+          & model%omega_hi, rtol_h, st, err, jump, s_below)
+      else
+        call harmonic_force_root(model%harm, model%blade, p1%F_E, gamma0, omega0, tol_s, st, &
+          & err)
+      end if
+    end subroutine solve_root
+
+    !> Keeps a root for the next root with as many harmonics.
+    subroutine remember(st)
+      type(harmonic_state_type), intent(in) :: st
+      model%harm%rung(st%H)%root = st
+      model%harm%rung(st%H)%gamma1 = p1%gamma_P
+      model%harm%rung(st%H)%omega1 = omega1
+    end subroutine remember
+  end subroutine multi_point
+end module udmap_mapping_harmonic_mapping
