@@ -23,7 +23,7 @@ typedef enum { REAL, INTEGER, BOOLEAN } VariableType;
 typedef enum { INDEPENDENT, INPUT, PARAMETER, OUTPUT } Causality;
 
 /* Groups: for inputs and parameters, what a change invalidates; for outputs, which
- * evaluation produces them (model.c). */
+ * evaluation produces them (stages.c). */
 typedef enum {
   GROUP_NONE,
   GROUP_FORCE,    /* F_E, f_exc: only the response point */

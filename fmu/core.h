@@ -4,7 +4,7 @@
  * state machine (each function checks the states it may be called in), the typed array
  * get/set, the mode changes, the FMU state, and the model-exchange functions of an FMU without
  * continuous states or event indicators. fmi2Functions.c and fmi3Functions.c only translate
- * the FMI signatures to these calls; the udmap numbers come from model.c and derivatives.c.
+ * the FMI signatures to these calls; the udmap numbers come from stages.c and derivatives.c.
  */
 #ifndef UDMAP_FMU_CORE_H
 #define UDMAP_FMU_CORE_H

@@ -1,7 +1,7 @@
 /*
  * The FMI 2.0 types and functions this FMU implements (model exchange and co-simulation), declared here from
  * the standard's interface so the build needs no external headers. The ABI test
- * (tests/python/test_fmu_abi.py) compiles fmi2Functions.c against the standard headers
+ * (tests/python/test_fmu_binary.py) compiles fmi2Functions.c against the standard headers
  * shipped with fmpy instead; when those are included first, this file steps aside.
  */
 #ifndef fmi2Functions_h

@@ -1,6 +1,6 @@
 /*
  * The FMI 3.0 types and functions, declared here from the standard's interface so the build
- * needs no external headers. The ABI test (tests/python/test_fmu_abi.py) compiles
+ * needs no external headers. The ABI test (tests/python/test_fmu_binary.py) compiles
  * fmi3Functions.c against the standard headers shipped with fmpy instead; when those are
  * included first, this file steps aside.
  */

@@ -1,6 +1,6 @@
 /*
- * udmap FMU model: values, staged lazy evaluation over the kernel's C API, state machine,
- * logging and snapshots. The FMI 2 and FMI 3 layers (fmi2Functions.c, fmi3Functions.c) are
+ * udmap FMU model: values, state machine, logging and snapshots; the staged lazy evaluation
+ * of the outputs over the kernel's C API is in stages.c. The FMI 2 and FMI 3 layers (fmi2Functions.c, fmi3Functions.c) are
  * thin adapters over these functions, so both FMUs compute the same numbers.
  */
 #include <math.h>
@@ -17,30 +17,9 @@
 static const char *const category_names[] = {"logStatusWarning", "logStatusDiscard",
                                              "logStatusError", "logEvents", "logCalls"};
 
-static const char *const stage_names[NSTAGES] = {"blade", "damper", "CF rescale", "model",
-                                                 "limit force", "response point",
-                                                 "natural frequency"};
-
 static const char *const type_names[] = {"Real/Float64", "Integer/Int32", "Boolean"};
 static const char *const causality_names[] = {"the independent variable", "an input",
                                               "a parameter", "an output"};
-
-/* Stages a change of a group's value makes stale. Neither CF nor the damper parameters
- * rebuild the model: it notices udmap_damper_set_CF by itself, and a new damper is coupled to
- * it with udmap_model_set_damper (the bare-blade data are kept). */
-static const unsigned invalidates[] = {
-  [GROUP_NONE] = 0,
-  [GROUP_FORCE] = BIT(STAGE_POINT),
-  [GROUP_CF] = BIT(STAGE_CF) | BIT(STAGE_LIMIT) | BIT(STAGE_POINT),
-  [GROUP_DAMPER] = BIT(STAGE_DAMPER) | BIT(STAGE_CF) | BIT(STAGE_LIMIT) | BIT(STAGE_POINT),
-  [GROUP_BLADE] = BIT(STAGE_BLADE) | BIT(STAGE_MODEL) | BIT(STAGE_LIMIT) | BIT(STAGE_POINT) |
-                  BIT(STAGE_F1),
-  [GROUP_ANALYSIS] = BIT(STAGE_MODEL) | BIT(STAGE_LIMIT) | BIT(STAGE_POINT),
-  [GROUP_HARMONICS] = BIT(STAGE_POINT),
-  [GROUP_POINT] = 0,
-  [GROUP_LIMIT] = 0,
-  [GROUP_RATIO] = 0,
-};
 
 /* ---------------------------------------------------------------- logging */
 
@@ -157,7 +136,7 @@ void model_free(ModelInstance *m) {
   free(m);
 }
 
-static double start_value(const ModelInstance *m, int vr) {
+double model_start_value(const ModelInstance *m, int vr) {
   return m->config ? m->config->start[vr] : udmap_variables[vr].start;
 }
 
@@ -176,327 +155,12 @@ void model_set_case(ModelInstance *m, CaseConfig *config, bool owns) {
 void model_reset(ModelInstance *m) {
   free_kernel_objects(m);
   for (int i = 0; i < UDMAP_NVARS; i++)
-    m->value[i] = udmap_variables[i].causality == OUTPUT ? 0.0 : start_value(m, i);
+    m->value[i] = udmap_variables[i].causality == OUTPUT ? 0.0 : model_start_value(m, i);
   m->done = 0;
   m->damper_CF = NAN;
   m->state = Instantiated;
   m->stopTimeDefined = false;
   m->stopTime = 0.0;
-}
-
-/* ---------------------------------------------------------------- staged evaluation */
-
-static Status run(ModelInstance *m, Stage s);
-
-/* Records a kernel failure of stage s with the kernel's message. */
-static Status kernel_failure(ModelInstance *m, Stage s, int stat, const char *call) {
-  char msg[400];
-  udmap_get_error(m->err, msg, sizeof msg);
-  const char *kind = stat == UDMAP_EINPUT     ? "bad input"
-                     : stat == UDMAP_EPHYSICS ? "physics"
-                     : stat == UDMAP_ENUMERIC ? "numerical failure"
-                                              : "failure";
-  snprintf(m->stage_message[s], sizeof m->stage_message[s], "%s: %s (%s, status %d): %s",
-           stage_names[s], call, kind, stat, msg[0] ? msg : "no message");
-  return Error;
-}
-
-static Status failure(ModelInstance *m, Stage s, const char *fmt, ...)
-    __attribute__((format(printf, 3, 4)));
-static Status failure(ModelInstance *m, Stage s, const char *fmt, ...) {
-  char msg[400];
-  va_list ap;
-  va_start(ap, fmt);
-  vsnprintf(msg, sizeof msg, fmt, ap);
-  va_end(ap);
-  snprintf(m->stage_message[s], sizeof m->stage_message[s], "%s: %s", stage_names[s], msg);
-  return Error;
-}
-
-/* Runs the stages s depends on; on failure s inherits the status and message. */
-static Status need(ModelInstance *m, Stage s, const Stage *deps, int ndeps) {
-  for (int i = 0; i < ndeps; i++) {
-    Status st = run(m, deps[i]);
-    if (st >= Discard) {
-      memcpy(m->stage_message[s], m->stage_message[deps[i]], sizeof m->stage_message[s]);
-      return st;
-    }
-  }
-  return OK;
-}
-
-static Status build_blade(ModelInstance *m) {
-  udmap_delete_model(&m->model);
-  udmap_delete_blade(&m->blade);
-  const CaseConfig *c = m->config;
-  if (c && c->blade == BLADE_MATRICES) {
-    /* the kernel's Matrix Market reader on the files in resources/ */
-    int stat = udmap_new_blade_matrices(m->err, c->M, c->K, c->C[0] ? c->C : NULL, c->gamma_dof,
-                                        c->exc_dof, c->stress_K[0] ? c->stress_K : NULL,
-                                        c->stress_M[0] ? c->stress_M : NULL, V(zeta), &m->blade);
-    if (stat != UDMAP_OK)
-      return kernel_failure(m, STAGE_BLADE, stat, "udmap_new_blade_matrices");
-    model_log_category(m, LOG_EVENTS, OK, "blade read from %s", c->K);
-    return OK;
-  }
-  udmap_beam_params p = {
-    .E = V(E), .rho = V(rho), .zeta = V(zeta),
-    .neck_L = V(neck_L), .neck_h = V(neck_h), .neck_b = V(neck_b),
-    .platform_L = V(platform_L), .platform_m = V(platform_m), .platform_J = V(platform_J),
-    .airfoil_L = V(airfoil_L), .airfoil_h = V(airfoil_h), .airfoil_b = V(airfoil_b),
-    .neck_elements = (int)V(neck_elements), .airfoil_elements = (int)V(airfoil_elements),
-  };
-  int stat = udmap_new_blade_beam(m->err, &p, &m->blade);
-  if (stat != UDMAP_OK) return kernel_failure(m, STAGE_BLADE, stat, "udmap_new_blade_beam");
-  model_log_category(m, LOG_EVENTS, OK, "blade built (%d neck + %d airfoil elements)",
-                     p.neck_elements, p.airfoil_elements);
-  return OK;
-}
-
-/* The damper is always traced at the start value of CF and rescaled to the current CF
- * (PHYSICS.md 2.3), so its table is a function of the current values alone, whatever the
- * order of the changes that led to them. */
-static double reference_CF(const ModelInstance *m) { return start_value(m, vr_CF); }
-
-/* Releases the model and marks it (and what it computed) to be built again. */
-static void drop_model(ModelInstance *m) {
-  udmap_delete_model(&m->model);
-  m->done &= ~(BIT(STAGE_MODEL) | BIT(STAGE_LIMIT) | BIT(STAGE_POINT));
-}
-
-/* The damper of a case that is not asymmetric: a Jenkins element or a measured table. */
-static int new_case_damper(ModelInstance *m, udmap_damper *d, const char **call) {
-  const CaseConfig *c = m->config;
-  if (c->damper == DAMPER_JENKINS) {
-    *call = "udmap_new_damper_jenkins";
-    return udmap_new_damper_jenkins(m->err, c->kt, c->M_slip, d);
-  }
-  *call = "udmap_new_damper_table";
-  return udmap_new_damper_table(m->err, c->n, c->gamma, c->k_re, c->k_im, c->has_delta_M,
-                                c->delta_M, d);
-}
-
-static Status build_damper(ModelInstance *m) {
-  udmap_asymmetric_params p = {
-    .CF = reference_CF(m), .mu = V(mu), .pitch = V(pitch), .y_P = V(y_P),
-    .beta_L_deg = V(beta_L_deg), .beta_R_deg = V(beta_R_deg),
-    .flat1_x = V(flat1_x), .flat1_y = V(flat1_y), .flat2_x = V(flat2_x),
-    .flat2_y = V(flat2_y), .curved_x = V(curved_x), .curved_y = V(curved_y),
-    .kn_flat = V(kn_flat), .kt_flat = V(kt_flat), .kn_curved = V(kn_curved),
-    .kt_curved = V(kt_curved),
-  };
-  udmap_damper fresh = NULL;
-  const char *call = "udmap_new_damper_asymmetric";
-  int stat = m->config && m->config->damper != DAMPER_ASYMMETRIC
-                 ? new_case_damper(m, &fresh, &call)
-                 : udmap_new_damper_asymmetric(m->err, &p, &fresh);
-  if (stat != UDMAP_OK) {
-    /* the model must not keep borrowing a damper that no longer matches the values */
-    drop_model(m);
-    udmap_delete_damper(&m->damper);
-    m->damper_CF = NAN;
-    return kernel_failure(m, STAGE_DAMPER, stat, call);
-  }
-  model_log_category(m, LOG_EVENTS, OK, "damper traced (mu = %g, CF = %g N)", p.mu, p.CF);
-  if (m->model && (m->done & BIT(STAGE_MODEL))) {
-    stat = udmap_model_set_damper(m->err, m->model, fresh);
-    if (stat == UDMAP_OK)
-      model_log_category(m, LOG_EVENTS, OK, "damper coupled to the model (bare-blade data "
-                         "kept)");
-    else
-      drop_model(m); /* built again, with the new damper, when needed */
-  } else {
-    drop_model(m);
-  }
-  udmap_delete_damper(&m->damper);
-  m->damper = fresh;
-  m->damper_CF = p.CF;
-  return OK;
-}
-
-static Status apply_CF(ModelInstance *m) {
-  static const Stage deps[] = {STAGE_DAMPER};
-  Status st = need(m, STAGE_CF, deps, 1);
-  if (st >= Discard) return st;
-  if (!model_has(m, vr_CF) || V(CF) == m->damper_CF) return OK; /* only the asymmetric has CF */
-  int stat = udmap_damper_set_CF(m->err, m->damper, V(CF));
-  if (stat != UDMAP_OK) {
-    m->damper_CF = NAN; /* unknown: set it again next time */
-    return kernel_failure(m, STAGE_CF, stat, "udmap_damper_set_CF");
-  }
-  m->damper_CF = V(CF);
-  model_log_category(m, LOG_EVENTS, OK, "damper table rescaled to CF = %g N", V(CF));
-  return OK;
-}
-
-static Status build_model(ModelInstance *m) {
-  static const Stage deps[] = {STAGE_BLADE, STAGE_DAMPER, STAGE_CF};
-  Status st = need(m, STAGE_MODEL, deps, 3);
-  if (st >= Discard) return st;
-  udmap_delete_model(&m->model);
-  if (!(V(f_min) < V(f_max)))
-    return failure(m, STAGE_MODEL, "f_min = %g Hz must be below f_max = %g Hz", V(f_min),
-                   V(f_max));
-  udmap_analysis a;
-  udmap_analysis_defaults(&a);
-  if (m->config) a = m->config->analysis; /* the case's settings, as the command line */
-  a.f_min = V(f_min);
-  a.f_max = V(f_max);
-  a.sigma_all = V(sigma_all);
-  /* The eigenvalue start from the secular equation alone (no dense zggev per model): exact
-   * for the FMU's beam blades, whose bare modes are all computed, and the same peaks as the
-   * default to rounding (the start is only where the peak search begins); it keeps a change
-   * of mu or of a contact stiffness at some 0.1 ms instead of 2 ms. */
-  if (!m->config) a.eigen_method = 2;
-  int stat = udmap_new_model(m->err, m->blade, m->damper, &a, &m->model);
-  if (stat != UDMAP_OK) return kernel_failure(m, STAGE_MODEL, stat, "udmap_new_model");
-  /* after a change of F_E alone, points at harmonics != 1 come from the verified force table
-   * (exact points, interpolated to harmonic_tol/1000 where a panel of them holds F_E) */
-  if (!m->exact_points) {
-    stat = udmap_model_set_force_table(m->err, m->model, 1);
-    if (stat != UDMAP_OK)
-      return kernel_failure(m, STAGE_MODEL, stat, "udmap_model_set_force_table");
-  }
-  model_log_category(m, LOG_EVENTS, OK, "model built over [%g, %g] Hz", a.f_min, a.f_max);
-  return OK;
-}
-
-static Status compute_limit(ModelInstance *m) {
-  /* CF (and so the damper) first: a new damper may drop the model */
-  static const Stage deps[] = {STAGE_CF, STAGE_MODEL};
-  Status st = need(m, STAGE_LIMIT, deps, 2);
-  if (st >= Discard) return st;
-  if (!m->model || !m->damper) return failure(m, STAGE_LIMIT, "internal: no model");
-  int stat = udmap_model_limit_force(m->err, m->model, &m->F_lim);
-  if (stat != UDMAP_OK) return kernel_failure(m, STAGE_LIMIT, stat, "udmap_model_limit_force");
-  stat = udmap_model_limit_force_backbone(m->err, m->model, &m->F_lim_backbone);
-  if (stat != UDMAP_OK)
-    return kernel_failure(m, STAGE_LIMIT, stat, "udmap_model_limit_force_backbone");
-  stat = udmap_damper_get_info(m->err, m->damper, &m->info);
-  if (stat != UDMAP_OK) return kernel_failure(m, STAGE_LIMIT, stat, "udmap_damper_get_info");
-  if (!isfinite(m->F_lim) || m->F_lim < 0.0)
-    return failure(m, STAGE_LIMIT, "the kernel returned F_lim = %g", m->F_lim);
-  if (!isfinite(m->F_lim_backbone) || m->F_lim_backbone < 0.0)
-    return failure(m, STAGE_LIMIT, "the kernel returned F_lim_backbone = %g", m->F_lim_backbone);
-  model_log_category(m, LOG_EVENTS, OK, "limit force computed: F_lim = %.17g N", m->F_lim);
-  if (m->F_lim == 0.0) {
-    snprintf(m->stage_message[STAGE_LIMIT], sizeof m->stage_message[STAGE_LIMIT],
-             "%s: F_lim = 0: the damper dissipates nothing (mu = %g), friction cannot limit "
-             "the response", stage_names[STAGE_LIMIT], V(mu));
-    return Warning;
-  }
-  return OK;
-}
-
-static Status compute_f1(ModelInstance *m) {
-  static const Stage deps[] = {STAGE_BLADE};
-  Status st = need(m, STAGE_F1, deps, 1);
-  if (st >= Discard) return st;
-  int stat = udmap_blade_natural_frequencies(m->err, m->blade, 1, &m->f1_bare);
-  if (stat != UDMAP_OK)
-    return kernel_failure(m, STAGE_F1, stat, "udmap_blade_natural_frequencies");
-  return OK;
-}
-
-static Status compute_point(ModelInstance *m) {
-  /* CF (and so the damper) first: a new damper may drop the model */
-  static const Stage deps[] = {STAGE_CF, STAGE_MODEL};
-  Status st = need(m, STAGE_POINT, deps, 2);
-  if (st >= Discard) return st;
-  if (!m->model) return failure(m, STAGE_POINT, "internal: no model");
-  const double f_exc = V(f_exc);
-  /* F_E = 0 (e.g. an engine model starting from rest) is the limit F_E -> 0+: the kernel
-   * answers at a force far inside the stuck range, where the response is linear in F_E, and
-   * the amplitudes are scaled to exactly zero; f_res, k, regime and hcf_ok are the limits. */
-  const bool at_rest = V(F_E) == 0.0;
-  double F_E = V(F_E);
-  if (at_rest) {
-    st = run(m, STAGE_LIMIT);
-    if (st >= Discard) {
-      memcpy(m->stage_message[STAGE_POINT], m->stage_message[STAGE_LIMIT],
-             sizeof m->stage_message[STAGE_POINT]);
-      return st;
-    }
-    F_E = m->F_lim > 0.0 ? 1e-12 * m->F_lim : 1e-12;
-  }
-  memset(&m->point, 0, sizeof m->point);
-  m->jump = 0;
-  /* harmonics only changes the point: the model keeps its caches (bare blade, the
-   * single-harmonic table, the contact element of the layers) */
-  const double tol = m->config ? m->config->analysis.harmonic_tol : 1e-3;
-  int stat = udmap_model_set_harmonics(m->err, m->model, (int)V(harmonics), tol);
-  if (stat != UDMAP_OK) return kernel_failure(m, STAGE_POINT, stat, "udmap_model_set_harmonics");
-  if (f_exc == 0.0) {
-    stat = udmap_model_backbone(m->err, m->model, 1, &F_E, &m->point);
-    if (stat != UDMAP_OK) return kernel_failure(m, STAGE_POINT, stat, "udmap_model_backbone");
-    stat = udmap_model_backbone_jumps(m->err, m->model, 1, &m->jump);
-    if (stat != UDMAP_OK)
-      return kernel_failure(m, STAGE_POINT, stat, "udmap_model_backbone_jumps");
-  } else {
-    if (f_exc < V(f_min) || f_exc > V(f_max))
-      return failure(m, STAGE_POINT,
-                     "f_exc = %g Hz is outside the band [f_min, f_max] = [%g, %g] Hz "
-                     "(0 means at resonance)", f_exc, V(f_min), V(f_max));
-    stat = udmap_model_response(m->err, m->model, f_exc, 1, &F_E, &m->point);
-    if (stat != UDMAP_OK) return kernel_failure(m, STAGE_POINT, stat, "udmap_model_response");
-  }
-  udmap_point *p = &m->point;
-  if (at_rest && !p->unbounded) {
-    p->F_E = 0.0;
-    p->gamma_P = p->sigma_a = p->u_E = p->gamma_max = p->sigma_max = 0.0;
-    for (int i = 0; i < p->nroots && i < UDMAP_MAX_ROOTS; i++) p->roots[i] = 0.0;
-  }
-  model_log_category(m, LOG_EVENTS, OK, "response point computed for F_E = %.17g N, f_exc = "
-                     "%.17g Hz", V(F_E), f_exc);
-  if (p->unbounded) {
-    /* zeta = 0 at or above F_lim: no finite response. Report the limits instead of
-     * numbers that look like a valid answer. */
-    st = run(m, STAGE_F1);
-    if (st >= Discard) {
-      memcpy(m->stage_message[STAGE_POINT], m->stage_message[STAGE_F1],
-             sizeof m->stage_message[STAGE_POINT]);
-      return st;
-    }
-    p->gamma_P = p->sigma_a = p->u_E = p->gamma_max = p->sigma_max = INFINITY;
-    p->k_re = p->k_im = 0.0;
-    p->f_res = f_exc == 0.0 ? m->f1_bare : f_exc;
-    p->regime = 3;
-    p->hcf_ok = 0;
-    snprintf(m->stage_message[STAGE_POINT], sizeof m->stage_message[STAGE_POINT],
-             "%s: F_E = %g N is at or above the limit force with zeta = 0: the response is "
-             "unbounded (gamma_P = sigma_a = u_E = +inf, regime = 3)",
-             stage_names[STAGE_POINT], V(F_E));
-    return Warning;
-  }
-  const double fields[] = {p->gamma_P, p->f_res, p->sigma_a, p->u_E, p->k_re, p->k_im,
-                           p->gamma_max, p->sigma_max};
-  const char *names[] = {"gamma_P", "f_res", "sigma_a", "u_E", "k_re", "k_im", "gamma_max",
-                         "sigma_max"};
-  for (int i = 0; i < 8; i++)
-    if (!isfinite(fields[i]))
-      return failure(m, STAGE_POINT, "the kernel returned %s = %g for F_E = %g N", names[i],
-                     fields[i], V(F_E));
-  return OK;
-}
-
-static Status run(ModelInstance *m, Stage s) {
-  if (m->done & BIT(s)) return m->stage_status[s];
-  m->stage_message[s][0] = '\0';
-  Status st = Error;
-  switch (s) {
-    case STAGE_BLADE: st = build_blade(m); break;
-    case STAGE_DAMPER: st = build_damper(m); break;
-    case STAGE_CF: st = apply_CF(m); break;
-    case STAGE_MODEL: st = build_model(m); break;
-    case STAGE_LIMIT: st = compute_limit(m); break;
-    case STAGE_POINT: st = compute_point(m); break;
-    case STAGE_F1: st = compute_f1(m); break;
-    case NSTAGES: break;
-  }
-  m->done |= BIT(s);
-  m->stage_status[s] = st;
-  m->stage_runs[s]++;
-  return st;
 }
 
 /* ---------------------------------------------------------------- set and get */
@@ -583,13 +247,9 @@ Status model_set(ModelInstance *m, const char *fn, ValueReference vr, VariableTy
   }
   if (apply && m->value[vr] != x) {
     m->value[vr] = x;
-    m->done &= ~invalidates[v->group];
+    model_invalidate(m, v->group);
   }
   return OK;
-}
-
-const char *model_stage_message(const ModelInstance *m, Stage stage) {
-  return m->stage_message[stage];
 }
 
 void model_copy_values(ModelInstance *m, const ModelInstance *src) {
@@ -598,42 +258,11 @@ void model_copy_values(ModelInstance *m, const ModelInstance *src) {
     if (v->causality != INPUT && v->causality != PARAMETER) continue;
     if (m->value[i] != src->value[i]) {
       m->value[i] = src->value[i];
-      m->done &= ~invalidates[v->group];
+      model_invalidate(m, v->group);
     }
   }
 }
 
-Status model_output(ModelInstance *m, ValueReference vr, double *x, Stage *stage) {
-  const VariableInfo *v = &udmap_variables[vr];
-  *stage = v->group == GROUP_POINT ? STAGE_POINT : STAGE_LIMIT;
-  Status st = run(m, *stage);
-  *x = 0.0;
-  if (st >= Discard) return st;
-  const udmap_point *p = &m->point;
-  switch (vr) {
-    case vr_gamma_P: *x = p->gamma_P; break;
-    case vr_sigma_a: *x = p->sigma_a; break;
-    case vr_f_res: *x = p->f_res; break;
-    case vr_u_E: *x = p->u_E; break;
-    case vr_k_re: *x = p->k_re; break;
-    case vr_k_im: *x = p->k_im; break;
-    case vr_hcf_ok: *x = p->hcf_ok ? 1.0 : 0.0; break;
-    case vr_regime: *x = (double)p->regime; break;
-    case vr_F_lim: *x = m->F_lim; break;
-    case vr_F_lim_backbone: *x = m->F_lim_backbone; break;
-    case vr_gamma_max: *x = p->gamma_max; break;
-    case vr_sigma_max: *x = p->sigma_max; break;
-    case vr_harmonics_used: *x = (double)p->harmonics; break;
-    case vr_jump: *x = m->jump ? 1.0 : 0.0; break;
-    case vr_lift_off: *x = m->info.lift_off ? 1.0 : 0.0; break;
-    case vr_F_ratio:
-      if (m->F_lim > 0.0) *x = V(F_E) / m->F_lim;
-      else *x = V(F_E) > 0.0 ? INFINITY : 0.0;
-      break;
-    default: break;
-  }
-  return st;
-}
 
 Status model_get(ModelInstance *m, const char *fn, ValueReference vr, VariableType type,
                  double *value, unsigned *logged) {

@@ -1,7 +1,7 @@
 /*
  * The udmap-specific part of the FMU, shared by the FMI 2 and FMI 3 layers: the values of
  * all variables, the kernel handles (blade, damper, model) and the lazy, staged evaluation
- * of the outputs, the FMI state machine, logging, and the FMU state.
+ * of the outputs (stages.c), the FMI state machine, logging, and the FMU state.
  */
 #ifndef UDMAP_FMU_MODEL_H
 #define UDMAP_FMU_MODEL_H
@@ -121,6 +121,8 @@ void model_reset(ModelInstance *m);
 void model_set_case(ModelInstance *m, CaseConfig *config, bool owns);
 /* Whether variable vr exists in this FMU (a case FMU leaves out what does not apply). */
 bool model_has(const ModelInstance *m, unsigned vr);
+/* The start value of variable vr: the case's, or that of the generic FMU (blade A). */
+double model_start_value(const ModelInstance *m, int vr);
 
 /* printf-style message through the logger, if its category is enabled. */
 void model_log(ModelInstance *m, Status status, const char *fmt, ...)
@@ -147,8 +149,11 @@ Status model_get(ModelInstance *m, const char *fn, ValueReference vr, VariableTy
 /* Advances time over a communication step (the outputs are quasi-steady). */
 Status model_do_step(ModelInstance *m, const char *fn, double t, double h);
 
-/* The value of output vr for the current values (computed on demand) and the stage whose
- * status and message it carries. */
+/* Marks stale the stages a change of a value of `group` feeds (stages.c). */
+void model_invalidate(ModelInstance *m, Group group);
+
+/* The value of output vr for the current values (computed on demand, stages.c) and the stage
+ * whose status and message it carries. */
 Status model_output(ModelInstance *m, ValueReference vr, double *value, Stage *stage);
 const char *model_stage_message(const ModelInstance *m, Stage stage);
 /* Copies the values of all inputs and parameters of src into m (invalidating what changed). */

@@ -1,8 +1,8 @@
 /* The mapping section of the C API (wrappers/c/udmap.h): the one-DOF Jenkins oscillator of
  * PHYSICS.md 8 built from Matrix Market files, its published peaks, the response at a
  * frequency and the mapped curves checked against the scalar equation
- * a |1 + k(a) H| = F |H| evaluated here in C complex arithmetic, and the statuses of bad
- * calls. */
+ * a |1 + k(a) H| = F |H| evaluated here in C complex arithmetic, udmap_model_classify
+ * against blade A's backbone points, and the statuses of bad calls. */
 #include <complex.h>
 #include <math.h>
 #include <stdio.h>
@@ -157,6 +157,79 @@ int main(void) {
     check(status == UDMAP_OK && h1[0].gamma_P == b1[0].gamma_P &&
               h1[1].f_res == b1[1].f_res && h1[1].sigma_a == b1[1].sigma_a,
           "back to H = 1: the same numbers");
+  }
+
+  /* udmap_model_classify on blade A's backbone points: the kernel's regime and hcf_ok of
+   * points computed elsewhere, here the backbone's own (every regime, both hcf_ok values) */
+  {
+    udmap_beam_params beam = blade_a_beam_params();
+    udmap_asymmetric_params dp = blade_a_damper_params();
+    udmap_blade ba = NULL;
+    udmap_damper da = NULL;
+    udmap_model ma = NULL;
+    udmap_analysis an;
+    udmap_point bp[6];
+    double F[6] = {0.05, 1, 5, 10, 12, 25}, g[6], sg[6], Fl = 0, Fb = 0, nan = NAN;
+    int un[6], reg[6], hcf[6], seen[4] = {0}, n_ok = 0, same = 1;
+    status = udmap_new_blade_beam(err, &beam, &ba);
+    status |= udmap_new_damper_asymmetric(err, &dp, &da);
+    udmap_analysis_defaults(&an);
+    an.f_min = 150;
+    an.f_max = 230;
+    an.sigma_all = 200e6;
+    status |= udmap_new_model(err, ba, da, &an, &ma);
+    status |= udmap_model_limit_force(err, ma, &Fl);
+    status |= udmap_model_limit_force_backbone(err, ma, &Fb);
+    status |= udmap_model_backbone(err, ma, 6, F, bp);
+    check(status == UDMAP_OK, "blade A backbone");
+    for (i = 0; i < 6; i++) {
+      g[i] = bp[i].gamma_P;
+      sg[i] = bp[i].sigma_a;
+      un[i] = bp[i].unbounded;
+      reg[i] = hcf[i] = -1;
+    }
+    status = udmap_model_classify(err, ma, fmin(Fl, Fb), 6, F, g, sg, un, reg, hcf);
+    check(status == UDMAP_OK, "classify");
+    for (i = 0; i < 6; i++) {
+      same &= reg[i] == bp[i].regime && hcf[i] == bp[i].hcf_ok;
+      if (reg[i] >= 0 && reg[i] < 4) seen[reg[i]] = 1;
+      n_ok += hcf[i];
+    }
+    check(same, "classify: the backbone's regime and hcf_ok");
+    check(seen[0] && seen[1] && seen[2] && seen[3] && n_ok > 0 && n_ok < 6,
+          "classify: every regime and both hcf_ok values covered");
+    un[1] = 1;
+    g[1] = sg[1] = nan; /* not read for an unbounded point */
+    status = udmap_model_classify(err, ma, Fl, 6, F, g, sg, un, reg, hcf);
+    check(status == UDMAP_OK && reg[1] == 3 && hcf[1] == 0, "classify: unbounded point");
+    status = udmap_model_classify(err, ma, INFINITY, 1, F, g, sg, un, reg, hcf);
+    check(status == UDMAP_OK && reg[0] == bp[0].regime && hcf[0] == 0,
+          "classify: no limit known, never admissible");
+    status = udmap_model_classify(err, ma, Fl, 0, F, g, sg, un, reg, hcf);
+    check(status == UDMAP_OK, "classify: no points");
+    /* bad calls */
+    un[1] = 0;
+    status = udmap_model_classify(err, none, Fl, 1, F, g, sg, un, reg, hcf);
+    check_error(err, status, "NULL", "classify: NULL model");
+    status = udmap_model_classify(err, ma, Fl, -1, F, g, sg, un, reg, hcf);
+    check_error(err, status, "n must not be negative", "classify: negative n");
+    status = udmap_model_classify(err, ma, 0.0, 1, F, g, sg, un, reg, hcf);
+    check_error(err, status, "F_lim must be positive", "classify: F_lim = 0");
+    status = udmap_model_classify(err, ma, nan, 1, F, g, sg, un, reg, hcf);
+    check_error(err, status, "F_lim must be positive", "classify: F_lim NaN");
+    F[2] = -1;
+    status = udmap_model_classify(err, ma, Fl, 3, F, g, sg, un, reg, hcf);
+    check_error(err, status, "F_E(3)", "classify: negative force named");
+    F[2] = 5;
+    status = udmap_model_classify(err, ma, Fl, 3, F, g, sg, un, reg, hcf);
+    check_error(err, status, "gamma_P(2)", "classify: NaN gamma_P named");
+    g[1] = bp[1].gamma_P;
+    sg[1] = -1;
+    status = udmap_model_classify(err, ma, Fl, 3, F, g, sg, un, reg, hcf);
+    check_error(err, status, "sigma(2)", "classify: negative stress named");
+    udmap_delete_model(&ma);
+    udmap_delete_damper(&da);
+    udmap_delete_blade(&ba);
   }
 
   /* bad calls */

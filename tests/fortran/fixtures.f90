@@ -20,7 +20,7 @@ module fixtures
   !> The real kind of the quadruple-precision references.
   integer, parameter :: qp = selected_real_kind(30)
 
-  !> LAPACK (not in udmap_lapack, which holds what the kernel calls).
+  !> LAPACK (not in udmap_core_lapack, which holds what the kernel calls).
   interface
     subroutine zgesv(n, nrhs, a, lda, ipiv, b, ldb, info)
       import :: wp

@@ -1,4 +1,4 @@
-!> The plain-array API (kernel/src/api_legacy.f90): the Jenkins describing function of
+!> The plain-array API (kernel/src/api/legacy/): the Jenkins describing function of
 !> PHYSICS.md 2.4 through UDMAP_TABLE_ARRAYS; blade A through UDMAP_BACKBONE_ARRAYS,
 !> UDMAP_RESPONSE_ARRAYS and UDMAP_CURVE_ARRAYS against the derived-type API; every INFO code.
 module test_api_legacy
@@ -25,7 +25,7 @@ module test_api_legacy
 
 contains
 
-  !> The plain-array API (kernel/src/api_legacy.f90).
+  !> The plain-array API (kernel/src/api/legacy/).
   subroutine collect_api_legacy(testsuite)
     type(unittest_type), allocatable, intent(out) :: testsuite(:)
     testsuite = [new_unittest("version_numbers", version_numbers), &

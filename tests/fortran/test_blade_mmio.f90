@@ -1,4 +1,4 @@
-!> Matrix Market reader and writer (udmap_mmio) and the imported blade's file checks: exact
+!> Matrix Market reader and writer (udmap_blade_io_mmio) and the imported blade's file checks: exact
 !> round trip of doubles, the formats and fields accepted, and a clear error (status 2, naming
 !> the file and line) for each kind of malformed file.
 module test_blade_mmio

@@ -2,7 +2,7 @@
 !> complex solve of D(omega) q = e written here, in quadruple precision (Gaussian elimination
 !> with partial pivoting), so that the reference is exact for the stored double-precision
 !> matrices. (A double-precision solve is not: near resonance it is off by ~1e-9, see the
-!> module documentation of udmap_modes.) Covered: every evaluation path (series, all modes,
+!> module documentation of udmap_blade_modes.) Covered: every evaluation path (series, all modes,
 !> large-model path, explicit C), derivatives against central differences, the Sherman-Morrison
 !> layer response against a direct solve with the damper stiffness, the Matrix Market round
 !> trip and the input errors of imported matrices.

@@ -1,8 +1,8 @@
-!> The force table (kernel/src/mapping/force_table.f90) on known functions of u = ln F_E, driven
-!> as udmap_harmonic_mapping drives it: a smooth function is interpolated to the tolerance
-!> wherever a panel was verified, the first force of a level-0 panel is not tabulated, a jump
-!> is confined to exact leaves of the deepest level, and points of another structure or
-!> another H are never mixed into a panel.
+!> The force table (kernel/src/mapping/harmonic/force_table.f90) on known functions of
+!> u = ln F_E, driven as udmap_mapping_harmonic_mapping drives it: a smooth function is
+!> interpolated to the tolerance wherever a panel was verified, the first force of a level-0
+!> panel is not tabulated, a jump is confined to exact leaves of the deepest level, and points
+!> of another structure or another H are never mixed into a panel.
 module test_force_table
   use, intrinsic :: iso_fortran_env, only: int64
   use testing, only: test_suite, check_true, unittest_type, new_unittest

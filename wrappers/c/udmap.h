@@ -219,6 +219,17 @@ int udmap_model_limit_force_backbone(udmap_error error, udmap_model model, doubl
 int udmap_model_admissible_force(udmap_error error, udmap_model model, double F_lim,
                                  double sigma_all, double rtol, double *F_adm);
 
+/* The regime and hcf_ok of n points computed elsewhere (e.g. by the standard method), as
+ * udmap_model_backbone gives them: regime 3 when F_E >= F_lim, else 0, 1 or 2 by gamma_P
+ * [rad] against the damper's gamma_s and gamma_b (udmap_damper_info); hcf_ok when F_E <=
+ * F_lim/2 and sigma <= the model's sigma_all, sigma [Pa] being the stress the criterion takes
+ * (sigma_a; sigma_max with harmonics > 1). A point with unbounded[i] != 0 is regime 3 and not
+ * admissible (its gamma_P and sigma are not read). F_lim [N] > 0 as the caller takes it (the
+ * backbone: the smaller of F_lim and F_lim_backbone; INFINITY: no limit known). */
+int udmap_model_classify(udmap_error error, udmap_model model, double F_lim, int n,
+                         const double *F_E, const double *gamma_P, const double *sigma,
+                         const int *unbounded, int *regime, int *hcf_ok);
+
 /* Harmonics for the next backbone, response and curves calls (as udmap_analysis.harmonics and
  * harmonic_tol), keeping every cache of the model (the bare blade, the single-harmonic backbone
  * table, the contact element of the layers). */

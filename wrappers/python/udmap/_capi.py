@@ -169,6 +169,8 @@ model_curve_get = declare("udmap_model_curve_get", [vp, vp, _ci, _ci, c_double_p
 model_set_harmonics = declare("udmap_model_set_harmonics", [vp, vp, _ci, _cd])
 model_admissible_force = declare("udmap_model_admissible_force",
                                  [vp, vp, _cd, _cd, _cd, c_double_p])
+model_classify = declare("udmap_model_classify", [vp, vp, _cd, _ci, c_double_p, c_double_p,
+                                                  c_double_p, c_int_p, c_int_p, c_int_p])
 model_set_force_table = declare("udmap_model_set_force_table", [vp, vp, _ci])
 model_point_harmonics = declare("udmap_model_point_harmonics",
                                 [vp, vp, _ci, _ci, c_double_p, c_double_p, c_int_p])

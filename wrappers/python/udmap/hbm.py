@@ -200,27 +200,20 @@ def hbm(blade, contact, f_min: float, f_max: float, F_E: Iterable[float], harmon
 
 
 def classify(blade: Blade, damper: Damper, f_min, f_max, sigma_all, points: list[dict]) -> None:
-    """Adds regime (0 stuck, 1 partial slip, 2 full slip, 3 at or above F_lim) and hcf_ok
-    (F_E <= 0.5 F_lim and sigma_a <= sigma_all) as the backbone defines them. The kernel
-    classifies its own backbone points (regime_of in kernel/src/mapping/model_data.f90) but
-    does not offer that classification for other points through the C API: this is the same
-    rule, on the kernel's F_lim, gamma_s and gamma_b."""
-    F_lim = Model(blade, damper, f_min, f_max, sigma_all=sigma_all).limit_force()
-    gamma_s, gamma_b = damper.gamma_s, damper.gamma_b
-    for p in points:
+    """Adds F_lim, regime (0 stuck, 1 partial slip, 2 full slip, 3 at or above F_lim) and hcf_ok
+    (F_E <= 0.5 F_lim and sigma_a <= sigma_all) as the backbone defines them, by the kernel's
+    rule (udmap_model_classify) on the kernel's F_lim."""
+    model = Model(blade, damper, f_min, f_max, sigma_all=sigma_all)
+    F_lim = model.limit_force()
+    unbounded = [bool(p.get("unbounded")) for p in points]
+    regime, hcf_ok = model.classify(
+        F_lim, [p["F_E"] for p in points],
+        [0.0 if u else p["gamma_P"] for p, u in zip(points, unbounded)],
+        [0.0 if u else p["sigma_a"] for p, u in zip(points, unbounded)], unbounded)
+    for p, r, h in zip(points, regime, hcf_ok):
         p["F_lim"] = F_lim
-        if p["F_E"] >= F_lim:
-            p["regime"] = 3
-        elif p.get("unbounded"):
-            p["regime"] = 3
-        elif p["gamma_P"] <= gamma_s:
-            p["regime"] = 0
-        elif p["gamma_P"] < gamma_b:
-            p["regime"] = 1
-        else:
-            p["regime"] = 2
-        p["hcf_ok"] = bool(not p.get("unbounded") and p["F_E"] <= 0.5 * F_lim
-                           and p["sigma_a"] <= sigma_all)
+        p["regime"] = r
+        p["hcf_ok"] = h
 
 
 def hbm_response(blade, contact, f_min: float, f_exc: float, F_E: Iterable[float],

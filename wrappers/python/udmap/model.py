@@ -113,6 +113,25 @@ class Model:
                                                      float(rtol), ctypes.byref(out)))
         return out.value
 
+    def classify(self, F_lim: float, F_E, gamma_P, sigma, unbounded) -> tuple[list, list]:
+        """The regime (0..3) and hcf_ok of points computed elsewhere (e.g. by the standard
+        method), as :meth:`backbone` gives them (the kernel's rule): regime 3 at or above
+        F_lim, else by gamma_P [rad] against the damper's gamma_s and gamma_b; hcf_ok when
+        F_E <= F_lim/2 and the stress ``sigma`` [Pa] <= sigma_all; an unbounded point is regime
+        3 and not admissible. F_lim [N] as the caller takes it."""
+        F, Fp = as_doubles(np.atleast_1d(np.asarray(F_E, dtype=float)).ravel())
+        g, gp = as_doubles(np.atleast_1d(np.asarray(gamma_P, dtype=float)).ravel())
+        s, sp = as_doubles(np.atleast_1d(np.asarray(sigma, dtype=float)).ravel())
+        u = np.ascontiguousarray(np.atleast_1d(unbounded).ravel(), dtype=np.intc)
+        if not len(F) == len(g) == len(s) == len(u):
+            raise InputError("classify: F_E, gamma_P, sigma and unbounded must have one length")
+        regime = np.zeros(max(len(F), 1), dtype=np.intc)
+        hcf_ok = np.zeros(max(len(F), 1), dtype=np.intc)
+        self._err.check(_capi.model_classify(self._err.ptr, self._ptr, float(F_lim), len(F), Fp,
+                                             gp, sp, _capi.ints_ptr(u), _capi.ints_ptr(regime),
+                                             _capi.ints_ptr(hcf_ok)))
+        return [int(r) for r in regime[:len(F)]], [bool(h) for h in hcf_ok[:len(F)]]
+
     def limit_force(self) -> float:
         """F_lim = 2 Delta_M / (pi |phi_E/phi_g|) [N] (PHYSICS.md 5)."""
         value = ctypes.c_double()

@@ -1,6 +1,6 @@
 !> C API, section "damper" of wrappers/c/udmap.h: create a damper, read its base-cycle data,
 !> evaluate k(gamma), dk/dgamma and the loop, change CF. Handles point to type(damper_type)
-!> objects (module udmap_damper) allocated here.
+!> objects (module udmap_damper_type) allocated here.
 module udmap_api_c_damper
   use, intrinsic :: iso_c_binding, only: c_ptr, c_null_ptr, c_associated, c_f_pointer, c_loc, &
     & c_int, c_double

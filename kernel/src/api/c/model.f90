@@ -15,6 +15,7 @@ module udmap_api_c_model
   use udmap_mapping_model, only: model_type, analysis_type, point_type, curve_type, new_model, &
     & set_damper, limit_force, backbone_curve, backbone, response, response_curves, &
     & limit_force_backbone, set_harmonics, admissible_force
+  use udmap_mapping_model_data, only: regime_of, check_forces, REGIME_LIMIT
   implicit none
   private
   public :: c_analysis_type, c_point_type, c_model_type
@@ -152,6 +153,54 @@ contains
     end if
     stat = set_error(errh, error)
   end function udmap_model_admissible_force
+
+  !> int udmap_model_classify(error, model, F_lim, n, F_E, gamma_P, sigma, unbounded, regime,
+  !> hcf_ok): the regime and HCF admissibility of n points as the backbone gives them, for
+  !> points computed elsewhere (e.g. by the standard method): regime_of against the damper's
+  !> gamma_s and gamma_b, and hcf_ok = F_E <= F_lim/2 and sigma <= sigma_all of the model's
+  !> analysis; an unbounded point (unbounded(i) /= 0) is REGIME_LIMIT and not admissible.
+  !> F_lim [N] as the caller takes it (the backbone: the smaller of F_lim and F_lim_backbone;
+  !> +inf: no limit known, as for a damper without slip moment range).
+  function udmap_model_classify(errh, modelh, F_lim, n, F_E, gamma_P, sigma, unbounded, &
+      & regime, hcf_ok) result(stat) bind(C, name="udmap_model_classify")
+    type(c_ptr), value :: errh, modelh
+    real(c_double), value :: F_lim
+    integer(c_int), value :: n
+    real(c_double), intent(in) :: F_E(*), gamma_P(*), sigma(*)
+    integer(c_int), intent(in) :: unbounded(*)
+    integer(c_int), intent(out) :: regime(*), hcf_ok(*)
+    integer(c_int) :: stat
+    type(error_type), allocatable :: error
+    type(c_model_type), pointer :: m
+    integer :: i
+    character(len=12) :: buf
+    call model_from_handle(errh, modelh, m, error)
+    call check_input(n >= 0, "classify: n must not be negative", error)
+    call check_input(F_lim > 0, "classify: F_lim must be positive [N]", error)
+    if (.not.allocated(error)) call check_forces(F_E(1:n), "classify", error)
+    do i = 1, n
+      if (allocated(error)) exit
+      if (unbounded(i) /= 0) cycle
+      write(buf, "(i0)") i
+      call check_input(gamma_P(i) >= 0, "classify: gamma_P("//trim(buf)//") must not be "// &
+        & "negative [rad]", error)
+      call check_input(sigma(i) >= 0, "classify: sigma("//trim(buf)//") must not be "// &
+        & "negative [Pa]", error)
+    end do
+    if (.not.allocated(error)) then
+      do i = 1, n
+        if (unbounded(i) /= 0) then
+          regime(i) = REGIME_LIMIT
+          hcf_ok(i) = 0
+        else
+          regime(i) = regime_of(m%model%damper, F_E(i), F_lim, gamma_P(i))
+          hcf_ok(i) = merge(1, 0, F_E(i) <= 0.5_wp*F_lim .and. &
+            & sigma(i) <= m%model%analysis%sigma_all .and. F_lim < huge(1.0_wp))
+        end if
+      end do
+    end if
+    stat = set_error(errh, error)
+  end function udmap_model_classify
 
   !> F_lim or, backbone_level, F_lim_backbone (computed after F_lim); the status.
   function model_limit(errh, modelh, F, backbone_level) result(stat)
