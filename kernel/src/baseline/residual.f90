@@ -5,6 +5,7 @@
 module udmap_baseline_residual
   use udmap_core_kinds, only: wp, pi
   use udmap_core_error, only: error_type, fatal_error, UDMAP_EINPUT, UDMAP_ENUMERIC
+  use udmap_core_strings, only: itoa
   use udmap_core_lapack, only: dgesv, dgbtrf, dgbtrs, dgetrf, dgetrs
   use udmap_baseline_linear_structure, only: structure_type, structure_receptances_type, &
     & structure_receptances
@@ -80,7 +81,7 @@ contains
       if (st%kd >= 0) p%kb = (st%kd + 1)*p%b - 1
       p%banded = st%kd >= 0
     end if
-    if (settings%variant == HBM_FULL) call band_entries(st, p%Kij, p%Mij, p%Cij)
+    if (settings%variant == HBM_FULL) call band_entries(st, p%Ie, p%Je, p%Kij, p%Mij, p%Cij)
     allocate(p%el, source=element)
     allocate(p%Mh(p%H), p%JM(p%m, p%m), p%rec(p%H))
     call p%el%load(error)
@@ -238,36 +239,28 @@ contains
     real(wp), intent(in) :: x(:), omega
     real(wp), intent(out) :: R(:)
     real(wp), intent(out), optional :: Jw(:)
-    integer :: i, j, h, lo, hi, bi, bj, cr, e
+    integer :: h, bi, bj, cr, e
     real(wp) :: kij, mij, cij, Om, a, bb, dm
     R = 0.0_wp
     if (present(Jw)) Jw = 0.0_wp
-    e = 0
-    do i = 1, p%n
-      lo = 1; hi = p%n
-      if (st%kd >= 0) then
-        lo = max(1, i - st%kd); hi = min(p%n, i + st%kd)
-      end if
-      bi = (i - 1)*p%b
-      do j = lo, hi
-        e = e + 1
-        kij = p%Kij(e); mij = p%Mij(e); cij = p%Cij(e)
-        bj = (j - 1)*p%b
-        if (p%h0 == 1) R(bi+1) = R(bi+1) + kij*x(bj+1)
-        do h = 1, p%H
-          cr = p%h0 + 2*h - 1
-          Om = h*omega
-          a = kij - Om**2*mij
-          bb = Om*cij
-          R(bi+cr) = R(bi+cr) + a*x(bj+cr) - bb*x(bj+cr+1)
-          R(bi+cr+1) = R(bi+cr+1) + bb*x(bj+cr) + a*x(bj+cr+1)
-          if (present(Jw)) then
-            ! d/domega of D(h omega) Q_h = h (-2 h omega M + i C) Q_h
-            dm = -2.0_wp*h*Om*mij
-            Jw(bi+cr) = Jw(bi+cr) + dm*x(bj+cr) - h*cij*x(bj+cr+1)
-            Jw(bi+cr+1) = Jw(bi+cr+1) + h*cij*x(bj+cr) + dm*x(bj+cr+1)
-          end if
-        end do
+    do e = 1, size(p%Kij)
+      bi = (p%Ie(e) - 1)*p%b
+      bj = (p%Je(e) - 1)*p%b
+      kij = p%Kij(e); mij = p%Mij(e); cij = p%Cij(e)
+      if (p%h0 == 1) R(bi+1) = R(bi+1) + kij*x(bj+1)
+      do h = 1, p%H
+        cr = p%h0 + 2*h - 1
+        Om = h*omega
+        a = kij - Om**2*mij
+        bb = Om*cij
+        R(bi+cr) = R(bi+cr) + a*x(bj+cr) - bb*x(bj+cr+1)
+        R(bi+cr+1) = R(bi+cr+1) + bb*x(bj+cr) + a*x(bj+cr+1)
+        if (present(Jw)) then
+          ! d/domega of D(h omega) Q_h = h (-2 h omega M + i C) Q_h
+          dm = -2.0_wp*h*Om*mij
+          Jw(bi+cr) = Jw(bi+cr) + dm*x(bj+cr) - h*cij*x(bj+cr+1)
+          Jw(bi+cr+1) = Jw(bi+cr+1) + h*cij*x(bj+cr) + dm*x(bj+cr+1)
+        end if
       end do
     end do
     bi = (st%exc_dof - 1)*p%b
@@ -281,22 +274,18 @@ contains
     end do
   end subroutine full_residual
 
-  !> The entries (i, j) of K, M and C that the full variant assembles, in its loop order (rows
-  !> i, then columns j inside the band), so that the Newton loop reads them in sequence.
-  pure subroutine band_entries(st, Kij, Mij, Cij)
+  !> The entries (i, j) of K, M and C that the full variant assembles, with their row Ie and
+  !> column Je, in its loop order (rows i, then columns j inside the band), so that the Newton
+  !> loop reads them in sequence.
+  pure subroutine band_entries(st, Ie, Je, Kij, Mij, Cij)
     type(structure_type), intent(in) :: st
+    integer, allocatable, intent(out) :: Ie(:), Je(:)
     real(wp), allocatable, intent(out) :: Kij(:), Mij(:), Cij(:)
     integer :: i, j, lo, hi, r, c, e, n
     n = st%ndof
-    e = 0
-    do i = 1, n
-      lo = 1; hi = n
-      if (st%kd >= 0) then
-        lo = max(1, i - st%kd); hi = min(n, i + st%kd)
-      end if
-      e = e + hi - lo + 1
-    end do
-    allocate(Kij(e), Mij(e), Cij(e))
+    lo = n
+    if (st%kd >= 0) lo = min(n, 2*st%kd + 1)
+    allocate(Ie(n*lo), Je(n*lo))
     e = 0
     do i = 1, n
       lo = 1; hi = n
@@ -305,15 +294,21 @@ contains
       end if
       do j = lo, hi
         e = e + 1
-        if (st%kd < 0) then
-          Kij(e) = st%K(i, j); Mij(e) = st%M(i, j); Cij(e) = st%C(i, j)
-        else
-          ! symmetric upper band storage: A(r, c) = X(kd + 1 + r - c, c), r <= c
-          r = min(i, j); c = max(i, j)
-          r = st%kd + 1 + r - c
-          Kij(e) = st%K(r, c); Mij(e) = st%M(r, c); Cij(e) = st%C(r, c)
-        end if
+        Ie(e) = i; Je(e) = j
       end do
+    end do
+    Ie = Ie(1:e); Je = Je(1:e)
+    allocate(Kij(e), Mij(e), Cij(e))
+    do e = 1, size(Ie)
+      i = Ie(e); j = Je(e)
+      if (st%kd < 0) then
+        Kij(e) = st%K(i, j); Mij(e) = st%M(i, j); Cij(e) = st%C(i, j)
+      else
+        ! symmetric upper band storage: A(r, c) = X(kd + 1 + r - c, c), r <= c
+        r = min(i, j); c = max(i, j)
+        r = st%kd + 1 + r - c
+        Kij(e) = st%K(r, c); Mij(e) = st%M(r, c); Cij(e) = st%C(r, c)
+      end if
     end do
   end subroutine band_entries
 
@@ -323,9 +318,8 @@ contains
     type(structure_type), intent(in) :: st
     real(wp), intent(in) :: omega
     type(error_type), allocatable, intent(out) :: error
-    integer :: i, j, h, c, cc, lo, hi, bi, bj, cr, info, ldab, kb, r0, sy, e
+    integer :: i, h, c, cc, bi, bj, cr, info, ldab, kb, r0, sy, e
     real(wp) :: kij, mij, cij, Om, a, bb, gr, gi
-    character(len=12) :: buf
     if (p%set%variant == HBM_CONDENSED) then
       ! J_x = I + blockdiag(H_gg(h omega)) JM, complex products as 2x2 real blocks
       if (.not.allocated(p%Jd)) allocate(p%Jd(p%m, p%m))
@@ -357,30 +351,22 @@ contains
     p%LU = 0.0_wp
     ! entry (row, col) of J_x is stored at LU(r0 + row - col, col) in band storage and at
     ! LU(row, col) in dense storage: LU(base + row - sy*col, col) with base = r0 or 0
-    e = 0
-    do i = 1, p%n
-      lo = 1; hi = p%n
-      if (st%kd >= 0) then
-        lo = max(1, i - st%kd); hi = min(p%n, i + st%kd)
-      end if
-      bi = (i - 1)*p%b
-      do j = lo, hi
-        e = e + 1
-        kij = p%Kij(e); mij = p%Mij(e); cij = p%Cij(e)
-        bj = (j - 1)*p%b
-        if (p%h0 == 1) p%LU(r0+bi+1-sy*(bj+1), bj+1) = p%LU(r0+bi+1-sy*(bj+1), bj+1) + kij
-        do h = 1, p%H
-          cr = p%h0 + 2*h - 1
-          Om = h*omega
-          a = kij - Om**2*mij
-          bb = Om*cij
-          c = bj + cr
-          p%LU(r0+bi+cr-sy*c, c) = p%LU(r0+bi+cr-sy*c, c) + a
-          p%LU(r0+bi+cr+1-sy*c, c) = p%LU(r0+bi+cr+1-sy*c, c) + bb
-          c = bj + cr + 1
-          p%LU(r0+bi+cr-sy*c, c) = p%LU(r0+bi+cr-sy*c, c) - bb
-          p%LU(r0+bi+cr+1-sy*c, c) = p%LU(r0+bi+cr+1-sy*c, c) + a
-        end do
+    do e = 1, size(p%Kij)
+      bi = (p%Ie(e) - 1)*p%b
+      bj = (p%Je(e) - 1)*p%b
+      kij = p%Kij(e); mij = p%Mij(e); cij = p%Cij(e)
+      if (p%h0 == 1) p%LU(r0+bi+1-sy*(bj+1), bj+1) = p%LU(r0+bi+1-sy*(bj+1), bj+1) + kij
+      do h = 1, p%H
+        cr = p%h0 + 2*h - 1
+        Om = h*omega
+        a = kij - Om**2*mij
+        bb = Om*cij
+        c = bj + cr
+        p%LU(r0+bi+cr-sy*c, c) = p%LU(r0+bi+cr-sy*c, c) + a
+        p%LU(r0+bi+cr+1-sy*c, c) = p%LU(r0+bi+cr+1-sy*c, c) + bb
+        c = bj + cr + 1
+        p%LU(r0+bi+cr-sy*c, c) = p%LU(r0+bi+cr-sy*c, c) - bb
+        p%LU(r0+bi+cr+1-sy*c, c) = p%LU(r0+bi+cr+1-sy*c, c) + a
       end do
     end do
     do cc = 1, p%m
@@ -395,9 +381,8 @@ contains
       call dgetrf(p%nx, p%nx, p%LU, p%nx, p%ipiv, info)
     end if
     if (info /= 0) then
-      write(buf, '(i0)') info
       call fatal_error(error, "hbm: dgbtrf/dgetrf failed on the full Jacobian (info = "// &
-        & trim(buf)//")", UDMAP_ENUMERIC)
+        & itoa(info)//")", UDMAP_ENUMERIC)
     end if
   end subroutine factor
 
@@ -411,7 +396,6 @@ contains
     integer, allocatable :: ipiv(:)
     integer :: m, info
     real(wp) :: den
-    character(len=12) :: buf
     if (p%set%variant == HBM_CONDENSED) then
       m = p%m
       allocate(A(m+1, m+1), rhs(m+1, 1), ipiv(m+1))
@@ -423,9 +407,8 @@ contains
       rhs(m+1, 1) = rn
       call dgesv(m+1, 1, A, m+1, ipiv, rhs, m+1, info)
       if (info /= 0) then
-        write(buf, '(i0)') info
         call fatal_error(error, "hbm: dgesv failed on the bordered Jacobian (info = "// &
-          & trim(buf)//")", UDMAP_ENUMERIC)
+          & itoa(info)//")", UDMAP_ENUMERIC)
         return
       end if
       dx = rhs(1:m, 1)
@@ -442,8 +425,7 @@ contains
       call dgetrs('N', p%nx, 2, p%LU, p%nx, p%ipiv, rhs, p%nx, info)
     end if
     if (info /= 0) then
-      write(buf, '(i0)') info
-      call fatal_error(error, "hbm: dgbtrs/dgetrs failed (info = "//trim(buf)//")", &
+      call fatal_error(error, "hbm: dgbtrs/dgetrs failed (info = "//itoa(info)//")", &
         & UDMAP_ENUMERIC)
       return
     end if
