@@ -55,27 +55,16 @@ contains
         call peak_warm(st, element, f_min, f_max, F_E(i), settings, last, F_last, points(i), &
           & error)
       else
-        call peak_sweep(st, element, f_min, f_max, F_E(i), settings, points(i), error, last=last)
+        call hbm_peak(st, element, f_min, f_max, F_E(i), settings, points(i), error, last=last)
       end if
       if (allocated(error)) return
       F_last = F_E(i)
     end do
   end subroutine hbm_peaks
 
-  !> The peak for one force; `curve` (optional) receives the continued curve.
-  subroutine hbm_peak(st, element, f_min, f_max, F_E, settings, point, error, curve)
-    type(structure_type), intent(in) :: st
-    class(hysteretic_element_type), intent(in) :: element
-    real(wp), intent(in) :: f_min, f_max, F_E
-    type(hbm_settings_type), intent(in) :: settings
-    type(hbm_point_type), intent(out) :: point
-    type(error_type), allocatable, intent(out) :: error
-    type(hbm_curve_type), intent(out), optional :: curve
-    call peak_sweep(st, element, f_min, f_max, F_E, settings, point, error, curve=curve)
-  end subroutine hbm_peak
-
-  !> The peak for one force by continuation over the band; `last` receives the peak's state.
-  subroutine peak_sweep(st, element, f_min, f_max, F_E, settings, point, error, curve, last)
+  !> The peak for one force by continuation over the band; `curve` (optional) receives the
+  !> continued curve, `last` (optional) the peak's state.
+  subroutine hbm_peak(st, element, f_min, f_max, F_E, settings, point, error, curve, last)
     type(structure_type), intent(in) :: st
     class(hysteretic_element_type), intent(in) :: element
     real(wp), intent(in) :: f_min, f_max, F_E
@@ -92,7 +81,7 @@ contains
     call continuation(p, st, 2.0_wp*pi*f_min, 2.0_wp*pi*f_max, .false., point, error, curve, &
       & last)
     point%seconds = seconds_since(c0, rate)
-  end subroutine peak_sweep
+  end subroutine hbm_peak
 
   !> The peak for force F_E started from the peak `last` of the force F_last: that state scaled
   !> by F_E/F_last at the same frequency (F_last = 0: the stuck linear response at the peak
@@ -182,7 +171,7 @@ contains
     if (.not.found) then
       spent_iter = p%iterations
       spent_aft = p%ws%calls
-      call peak_sweep(st, element, f_min, f_max, F_E, settings, point, error, last=last)
+      call hbm_peak(st, element, f_min, f_max, F_E, settings, point, error, last=last)
       if (allocated(error)) return
       point%iterations = point%iterations + spent_iter
       point%aft_calls = point%aft_calls + spent_aft
