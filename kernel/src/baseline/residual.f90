@@ -26,43 +26,27 @@ contains
     type(hbm_settings_type), intent(in) :: settings
     type(error_type), allocatable, intent(out) :: error
     type(structure_receptances_type) :: r0
-    if (st%ndof < 1) then
-      call fatal_error(error, "hbm: the structure is empty", UDMAP_EINPUT)
-      return
-    end if
-    if (.not.(F_E > 0.0_wp) .or. F_E > huge(1.0_wp)) then
-      call fatal_error(error, "hbm: F_E must be positive and finite", UDMAP_EINPUT)
-      return
-    end if
-    if (.not.(f_min > 0.0_wp) .or. .not.(f_max > f_min) .or. f_max > huge(1.0_wp)) then
-      call fatal_error(error, "hbm: need 0 < f_min < f_max (finite)", UDMAP_EINPUT)
-      return
-    end if
-    if (settings%harmonics < 1 .or. settings%harmonics > 64) then
-      call fatal_error(error, "hbm: harmonics must be in 1..64", UDMAP_EINPUT)
-      return
-    end if
-    if (settings%variant /= HBM_CONDENSED .and. settings%variant /= HBM_FULL) then
-      call fatal_error(error, "hbm: variant must be condensed (0) or full (1)", UDMAP_EINPUT)
-      return
-    end if
-    if (.not.(settings%tol > 0.0_wp) .or. .not.(settings%tol_path > 0.0_wp) .or. &
-        & .not.(settings%ds_min > 0.0_wp) .or. &
-        & .not.(settings%ds_max >= settings%ds_min) .or. .not.(settings%ds_initial > 0.0_wp) &
-        & .or. .not.(settings%fd_step > 0.0_wp) .or. .not.(settings%peak_tol > 0.0_wp) .or. &
-        & .not.(settings%max_angle > 0.0_wp) .or. .not.(settings%gamma_limit > 0.0_wp) .or. &
-        & settings%max_iter < 2 .or. settings%max_steps < 1 .or. settings%target_iter < 1 .or. &
-        & settings%aft_samples < 0 .or. settings%aft_max_periods < 1 .or. &
-        & settings%warm_start < 0 .or. settings%warm_start > 2 .or. &
-        & .not.(settings%aft_loop_rtol > 0.0_wp)) then
-      call fatal_error(error, "hbm: invalid numerical settings (tolerances and steps must be "// &
-        & "positive, max_iter >= 2, aft_samples >= 0, warm_start 0, 1 or 2)", UDMAP_EINPUT)
-      return
-    end if
-    if (settings%aft_samples > 0 .and. settings%aft_samples < 2*settings%harmonics + 1) then
-      call fatal_error(error, "hbm: aft_samples must be 0 (exact) or >= 2 H + 1", UDMAP_EINPUT)
-      return
-    end if
+    call require(st%ndof >= 1, "hbm: the structure is empty")
+    call require(F_E > 0.0_wp .and. F_E <= huge(1.0_wp), "hbm: F_E must be positive and finite")
+    call require(f_min > 0.0_wp .and. f_max > f_min .and. f_max <= huge(1.0_wp), &
+      & "hbm: need 0 < f_min < f_max (finite)")
+    call require(settings%harmonics >= 1 .and. settings%harmonics <= 64, &
+      & "hbm: harmonics must be in 1..64")
+    call require(settings%variant == HBM_CONDENSED .or. settings%variant == HBM_FULL, &
+      & "hbm: variant must be condensed (0) or full (1)")
+    call require(settings%tol > 0.0_wp .and. settings%tol_path > 0.0_wp .and. &
+      & settings%ds_min > 0.0_wp .and. settings%ds_max >= settings%ds_min .and. &
+      & settings%ds_initial > 0.0_wp .and. settings%fd_step > 0.0_wp .and. &
+      & settings%peak_tol > 0.0_wp .and. settings%max_angle > 0.0_wp .and. &
+      & settings%gamma_limit > 0.0_wp .and. settings%aft_loop_rtol > 0.0_wp .and. &
+      & settings%max_iter >= 2 .and. settings%max_steps >= 1 .and. settings%target_iter >= 1 &
+      & .and. settings%aft_samples >= 0 .and. settings%aft_max_periods >= 1 .and. &
+      & settings%warm_start >= 0 .and. settings%warm_start <= 2, &
+      & "hbm: invalid numerical settings (tolerances and steps must be positive, "// &
+      & "max_iter >= 2, aft_samples >= 0, warm_start 0, 1 or 2)")
+    call require(settings%aft_samples <= 0 .or. settings%aft_samples >= 2*settings%harmonics + 1, &
+      & "hbm: aft_samples must be 0 (exact) or >= 2 H + 1")
+    if (allocated(error)) return
     p%set = settings
     p%H = settings%harmonics
     p%h0 = merge(1, 0, settings%harmonic0)
@@ -94,6 +78,13 @@ contains
       if (allocated(error)) return
       p%Hgg0 = real(r0%gg, wp)
     end if
+  contains
+    !> The input error `message` unless ok; the first failed check is the one reported.
+    subroutine require(ok, message)
+      logical, intent(in) :: ok
+      character(len=*), intent(in) :: message
+      if (.not.ok .and. .not.allocated(error)) call fatal_error(error, message, UDMAP_EINPUT)
+    end subroutine require
   end subroutine setup
 
   ! ------------------------------------------------------------------ residual and Jacobian
