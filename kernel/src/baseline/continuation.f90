@@ -3,15 +3,15 @@
 !> iteration count), the corrector step and the landing on a given frequency.
 module udmap_baseline_continuation
   use udmap_core_kinds, only: wp, pi
-  use udmap_core_error, only: error_type, fatal_error, UDMAP_ENUMERIC
+  use udmap_core_error, only: error_type, fatal_error, UDMAP_EPHYSICS, UDMAP_ENUMERIC
   use udmap_baseline_linear_structure, only: structure_type
   use udmap_baseline_types, only: amplitude, amplitude_scale, scaled_dot, converged, &
     & problem_type, curve_point_type
   use udmap_baseline_residual, only: evaluate, factor, bordered_solve
   implicit none
   private
-  public :: newton_fixed, newton_arclength, tangent, renormalise, check_step, step_factor, &
-    & corrector_step, land_at
+  public :: newton_fixed, newton_arclength, tangent, check_step, corrector_step, land_at, &
+    & check_bounded, accept_step
 
 contains
 
@@ -55,6 +55,35 @@ contains
       fac = 1.0_wp
     end if
   end function step_factor
+
+  !> The unbounded-response error when the amplitude of pt exceeds gamma_limit.
+  subroutine check_bounded(p, pt, error)
+    type(problem_type), intent(in) :: p
+    type(curve_point_type), intent(in) :: pt
+    type(error_type), allocatable, intent(out) :: error
+    if (pt%A > p%set%gamma_limit) call fatal_error(error, "hbm: the response exceeds "// &
+      & "gamma_limit (unbounded: F_E at or above the limit force with little damping, or a "// &
+      & "force far beyond the model)", UDMAP_EPHYSICS)
+  end subroutine check_bounded
+
+  !> Makes the accepted point nxt the current one (nxt's arrays move to cur): the next step
+  !> length from the Newton iterations it, the amplitude scale at the new point and the tangent
+  !> renormalised in that metric.
+  subroutine accept_step(p, it, ds, cur, nxt)
+    type(problem_type), intent(in) :: p
+    integer, intent(in) :: it
+    real(wp), intent(inout) :: ds
+    type(curve_point_type), intent(inout) :: cur, nxt
+    ds = min(p%set%ds_max, ds*step_factor(p, it))
+    call move_alloc(nxt%x, cur%x)
+    call move_alloc(nxt%tx, cur%tx)
+    cur%omega = nxt%omega
+    cur%tw = nxt%tw
+    cur%A = nxt%A
+    cur%dA = nxt%dA
+    cur%A_s = amplitude_scale(p, cur%x)
+    call renormalise(p, cur)
+  end subroutine accept_step
 
   !> Predictor along the tangent of cur, pseudo-arc-length corrector; nxt gets its tangent.
   subroutine corrector_step(p, st, cur, ds, nxt, ok, it, error)

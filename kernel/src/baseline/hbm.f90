@@ -16,13 +16,15 @@ module udmap_baseline_hbm
   use udmap_core_kinds, only: wp, pi
   use udmap_core_error, only: error_type, fatal_error, UDMAP_EINPUT, UDMAP_EPHYSICS, &
     & UDMAP_ENUMERIC
+  use udmap_core_strings, only: itoa
   use udmap_baseline_linear_structure, only: structure_type
   use udmap_contact_element, only: hysteretic_element_type
   use udmap_baseline_types, only: hbm_settings_type, hbm_point_type, hbm_curve_type, &
-    & HBM_CONDENSED, HBM_FULL, HBM_MAX_PEAKS, amplitude_scale, problem_type, curve_point_type
+    & HBM_CONDENSED, HBM_FULL, HBM_MAX_PEAKS, amplitude_scale, problem_type, curve_point_type, &
+    & seconds_since
   use udmap_baseline_residual, only: setup, stuck_guess
-  use udmap_baseline_continuation, only: newton_fixed, tangent, renormalise, check_step, &
-    & step_factor, corrector_step, land_at
+  use udmap_baseline_continuation, only: newton_fixed, tangent, check_step, corrector_step, &
+    & land_at, check_bounded, accept_step
   use udmap_baseline_peak, only: refine_peak, stuck_peak, fill_point, curve_push, sort_pairs
   implicit none
   private
@@ -53,27 +55,16 @@ contains
         call peak_warm(st, element, f_min, f_max, F_E(i), settings, last, F_last, points(i), &
           & error)
       else
-        call peak_sweep(st, element, f_min, f_max, F_E(i), settings, points(i), error, last=last)
+        call hbm_peak(st, element, f_min, f_max, F_E(i), settings, points(i), error, last=last)
       end if
       if (allocated(error)) return
       F_last = F_E(i)
     end do
   end subroutine hbm_peaks
 
-  !> The peak for one force; `curve` (optional) receives the continued curve.
-  subroutine hbm_peak(st, element, f_min, f_max, F_E, settings, point, error, curve)
-    type(structure_type), intent(in) :: st
-    class(hysteretic_element_type), intent(in) :: element
-    real(wp), intent(in) :: f_min, f_max, F_E
-    type(hbm_settings_type), intent(in) :: settings
-    type(hbm_point_type), intent(out) :: point
-    type(error_type), allocatable, intent(out) :: error
-    type(hbm_curve_type), intent(out), optional :: curve
-    call peak_sweep(st, element, f_min, f_max, F_E, settings, point, error, curve=curve)
-  end subroutine hbm_peak
-
-  !> The peak for one force by continuation over the band; `last` receives the peak's state.
-  subroutine peak_sweep(st, element, f_min, f_max, F_E, settings, point, error, curve, last)
+  !> The peak for one force by continuation over the band; `curve` (optional) receives the
+  !> continued curve, `last` (optional) the peak's state.
+  subroutine hbm_peak(st, element, f_min, f_max, F_E, settings, point, error, curve, last)
     type(structure_type), intent(in) :: st
     class(hysteretic_element_type), intent(in) :: element
     real(wp), intent(in) :: f_min, f_max, F_E
@@ -83,15 +74,14 @@ contains
     type(hbm_curve_type), intent(out), optional :: curve
     type(curve_point_type), intent(out), optional :: last
     type(problem_type) :: p
-    integer(8) :: c0, c1, rate
+    integer(8) :: c0, rate
     call system_clock(c0, rate)
     call setup(p, st, element, f_min, f_max, F_E, settings, error)
     if (allocated(error)) return
     call continuation(p, st, 2.0_wp*pi*f_min, 2.0_wp*pi*f_max, .false., point, error, curve, &
       & last)
-    call system_clock(c1)
-    point%seconds = real(c1 - c0, wp)/real(rate, wp)
-  end subroutine peak_sweep
+    point%seconds = seconds_since(c0, rate)
+  end subroutine hbm_peak
 
   !> The peak for force F_E started from the peak `last` of the force F_last: that state scaled
   !> by F_E/F_last at the same frequency (F_last = 0: the stuck linear response at the peak
@@ -111,10 +101,10 @@ contains
     type(problem_type) :: p
     type(curve_point_type) :: cur, nxt, pk
     real(wp), allocatable :: tx0(:)
-    real(wp) :: ds, omega_a, omega_b, angle_rejected, fac
+    real(wp) :: ds, omega_a, omega_b, angle_rejected
     integer :: steps, it, spent_iter, spent_aft
     logical :: ok, found
-    integer(8) :: c0, c1, rate
+    integer(8) :: c0, rate
     call system_clock(c0, rate)
     call setup(p, st, element, f_min, f_max, F_E, settings, error)
     if (allocated(error)) return
@@ -167,34 +157,21 @@ contains
         if (nxt%omega < omega_a .or. nxt%omega > omega_b) exit
         steps = steps + 1
         angle_rejected = huge(1.0_wp)
-        if (nxt%A > p%set%gamma_limit) then
-          call fatal_error(error, "hbm: the response exceeds gamma_limit (unbounded: F_E at "// &
-            & "or above the limit force with little damping, or a force far beyond the model)", &
-            & UDMAP_EPHYSICS)
-          return
-        end if
+        call check_bounded(p, nxt, error)
+        if (allocated(error)) return
         if (cur%dA > 0.0_wp .and. nxt%dA <= 0.0_wp) then
           call refine_peak(p, st, cur, nxt, pk, error)
           if (allocated(error)) return
           found = .true.
           exit
         end if
-        fac = step_factor(p, it)
-        ds = min(p%set%ds_max, ds*fac)
-        call move_alloc(nxt%x, cur%x)
-        call move_alloc(nxt%tx, cur%tx)
-        cur%omega = nxt%omega
-        cur%tw = nxt%tw
-        cur%A = nxt%A
-        cur%dA = nxt%dA
-        cur%A_s = amplitude_scale(p, cur%x)
-        call renormalise(p, cur)
+        call accept_step(p, it, ds, cur, nxt)
       end do
     end if
     if (.not.found) then
       spent_iter = p%iterations
       spent_aft = p%ws%calls
-      call peak_sweep(st, element, f_min, f_max, F_E, settings, point, error, last=last)
+      call hbm_peak(st, element, f_min, f_max, F_E, settings, point, error, last=last)
       if (allocated(error)) return
       point%iterations = point%iterations + spent_iter
       point%aft_calls = point%aft_calls + spent_aft
@@ -211,8 +188,7 @@ contains
       point%aft_calls = p%ws%calls
       last = pk
     end if
-    call system_clock(c1)
-    point%seconds = real(c1 - c0, wp)/real(rate, wp)
+    point%seconds = seconds_since(c0, rate)
   end subroutine peak_warm
 
   !> The response at the excitation frequency f_exc [Hz], reached by continuation from f_min.
@@ -226,7 +202,7 @@ contains
     type(error_type), allocatable, intent(out) :: error
     type(hbm_curve_type), intent(out), optional :: curve
     type(problem_type) :: p
-    integer(8) :: c0, c1, rate
+    integer(8) :: c0, rate
     call system_clock(c0, rate)
     if (.not.(f_exc >= f_min)) then
       call fatal_error(error, "hbm: f_exc must be >= f_min", UDMAP_EINPUT)
@@ -236,8 +212,7 @@ contains
       & error)
     if (allocated(error)) return
     call continuation(p, st, 2.0_wp*pi*f_min, 2.0_wp*pi*f_exc, .true., point, error, curve)
-    call system_clock(c1)
-    point%seconds = real(c1 - c0, wp)/real(rate, wp)
+    point%seconds = seconds_since(c0, rate)
   end subroutine hbm_response
 
   ! ------------------------------------------------------------------ continuation
@@ -255,11 +230,10 @@ contains
     !> The point of the peak (not with at_end), for a warm start of the next force.
     type(curve_point_type), intent(out), optional :: peak_state
     type(curve_point_type) :: cur, nxt, pk, best_pk
-    real(wp) :: ds, fac, A_first, A_best, angle_rejected
+    real(wp) :: ds, A_first, A_best, angle_rejected
     integer :: steps, it, npk, k
     logical :: ok, last, have_best
     real(wp) :: pk_A(HBM_MAX_PEAKS), pk_f(HBM_MAX_PEAKS)
-    character(len=24) :: buf
 
     point%F_E = p%F
     ! start: stuck linear guess at omega_a, Newton at fixed frequency
@@ -290,9 +264,8 @@ contains
     angle_rejected = huge(1.0_wp)
     do while (.not.last)
       if (steps >= p%set%max_steps) then
-        write(buf, '(i0)') p%set%max_steps
-        call fatal_error(error, "hbm: continuation did not cross the band in "//trim(buf)// &
-          & " steps", UDMAP_ENUMERIC)
+        call fatal_error(error, "hbm: continuation did not cross the band in "// &
+          & itoa(p%set%max_steps)//" steps", UDMAP_ENUMERIC)
         return
       end if
       call corrector_step(p, st, cur, ds, nxt, ok, it, error)
@@ -317,12 +290,8 @@ contains
       end if
       steps = steps + 1
       angle_rejected = huge(1.0_wp)
-      if (nxt%A > p%set%gamma_limit) then
-        call fatal_error(error, "hbm: the response exceeds gamma_limit (unbounded: F_E at or "// &
-          & "above the limit force with little damping, or a force far beyond the model)", &
-          & UDMAP_EPHYSICS)
-        return
-      end if
+      call check_bounded(p, nxt, error)
+      if (allocated(error)) return
       if (present(curve)) call curve_push(p, st, curve, nxt)
       ! a local maximum of gamma_1 between cur and nxt: refine it
       if (.not.at_end .and. cur%dA > 0.0_wp .and. nxt%dA <= 0.0_wp) then
@@ -342,16 +311,7 @@ contains
       if (.not.at_end .and. .not.p%set%full_band .and. have_best) then
         if (nxt%A < 0.5_wp*A_best .and. nxt%dA < 0.0_wp) last = .true.
       end if
-      fac = step_factor(p, it)
-      ds = min(p%set%ds_max, ds*fac)
-      call move_alloc(nxt%x, cur%x)
-      call move_alloc(nxt%tx, cur%tx)
-      cur%omega = nxt%omega
-      cur%tw = nxt%tw
-      cur%A = nxt%A
-      cur%dA = nxt%dA
-      cur%A_s = amplitude_scale(p, cur%x)
-      call renormalise(p, cur)
+      call accept_step(p, it, ds, cur, nxt)
     end do
     point%steps = steps
     if (at_end) then

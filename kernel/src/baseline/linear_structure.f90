@@ -5,6 +5,7 @@
 module udmap_baseline_linear_structure
   use udmap_core_kinds, only: wp
   use udmap_core_error, only: error_type, fatal_error, UDMAP_EINPUT, UDMAP_ENUMERIC
+  use udmap_core_strings, only: itoa
   use udmap_core_lapack, only: zgbtrf, zgbtrs, zgetrf, zgetrs
   use udmap_blade_type, only: blade_type, receptances_type
   implicit none
@@ -193,7 +194,6 @@ contains
     complex(wp) :: dp
     integer :: lo, hi
     real(wp), allocatable :: s(:)
-    character(len=12) :: buf
     if (allocated(st%blade)) then
       call st%blade%receptances(omega, rb, error, derivatives=.true.)
       if (allocated(error)) return
@@ -235,8 +235,7 @@ contains
       if (info == 0) call zgetrs('N', n, nrhs, A, n, ipiv, X, n, info)
     end if
     if (info /= 0) then
-      write(buf, '(i0)') info
-      call fatal_error(error, "receptances: zgbtrf/zgetrf failed (info = "//trim(buf)// &
+      call fatal_error(error, "receptances: zgbtrf/zgetrf failed (info = "//itoa(info)// &
         & "): the dynamic stiffness is singular at this frequency", UDMAP_ENUMERIC)
       return
     end if

@@ -18,7 +18,9 @@ module udmap_baseline_newmark
   use udmap_core_kinds, only: wp, pi
   use udmap_core_error, only: error_type, fatal_error, UDMAP_EINPUT, UDMAP_EPHYSICS, UDMAP_ENUMERIC
   use udmap_core_lapack, only: dpbtrf, dpbtrs, dpotrf, dpotrs
+  use udmap_core_strings, only: itoa
   use udmap_baseline_linear_structure, only: structure_type
+  use udmap_baseline_types, only: seconds_since
   use udmap_contact_element, only: hysteretic_element_type
   use udmap_baseline_hbm, only: hbm_settings_type, hbm_point_type, hbm_peak
   implicit none
@@ -61,7 +63,7 @@ contains
     type(dti_settings_type), intent(in) :: settings
     type(dti_point_type), intent(out) :: point
     type(error_type), allocatable, intent(out) :: error
-    integer(8) :: c0, c1, rate
+    integer(8) :: c0, rate
     call system_clock(c0, rate)
     call check_inputs(st, F_E, settings, error)
     if (allocated(error)) return
@@ -71,8 +73,7 @@ contains
     end if
     call integrate(st, element, 2.0_wp*pi*f, F_E, settings, point, error)
     point%runs = 1
-    call system_clock(c1)
-    point%seconds = real(c1 - c0, wp)/real(rate, wp)
+    point%seconds = seconds_since(c0, rate)
   end subroutine dti_response
 
   !> The frequency of the largest gamma_1 near the single-harmonic peak: the H = 1 standard
@@ -90,7 +91,7 @@ contains
     type(dti_point_type) :: pa, pb, pc, pt
     real(wp) :: fc, a, b, c, w
     integer :: runs, k
-    integer(8) :: c0, c1, rate
+    integer(8) :: c0, rate
     call system_clock(c0, rate)
     call check_inputs(st, F_E, settings, error)
     if (allocated(error)) return
@@ -134,8 +135,7 @@ contains
     if (allocated(error)) return
     point = pt
     point%runs = runs
-    call system_clock(c1)
-    point%seconds = real(c1 - c0, wp)/real(rate, wp)
+    point%seconds = seconds_since(c0, rate)
   contains
     subroutine run(f, p)
       real(wp), intent(in) :: f
@@ -257,7 +257,6 @@ contains
     real(wp) :: sq_n, sv_n, sa_n, sma_n, aavg, gmax_p, tv, g_lin
     integer :: n, Ns, kd, j, p, info, good, g
     logical :: have_prev, have_d
-    character(len=32) :: buf
 
     point%F_E = F_E
     point%f = omega/(2.0_wp*pi)
@@ -279,9 +278,8 @@ contains
       call dpotrf('U', n, Keff, n, info)
     end if
     if (info /= 0) then
-      write(buf, '(i0)') info
       call fatal_error(error, "dti: dpbtrf/dpotrf failed on K + 2/dt C + 4/dt^2 M (info = "// &
-        & trim(buf)//"): M, K, C not positive definite", UDMAP_ENUMERIC)
+        & itoa(info)//"): M, K, C not positive definite", UDMAP_ENUMERIC)
       return
     end if
     allocate(xg(n), q(n), v(n), a(n), r(n), w1(n), w2(n), qn(n), an(n))
@@ -328,8 +326,8 @@ contains
         ! effective load at t_{n+1}
         w1 = a0*q + a2*v + a
         w2 = a1*q + v
-        call matvec('M', w1, r)
-        call matvec('C', w2, w1)
+        call matvec(st%M, w1, r)
+        call matvec(st%C, w2, w1)
         r = r + w1
         r(st%exc_dof) = r(st%exc_dof) + F_E*sin(2.0_wp*pi*real(j + 1, wp)/Ns)
         call keff_solve(r)
@@ -407,9 +405,8 @@ contains
       point%ss_error = huge(1.0_wp)
     end if
     if (good < 3) then
-      write(buf, '(i0)') set%max_periods
-      call fatal_error(error, "dti: no steady state within max_periods = "//trim(buf)// &
-        & " periods (raise max_periods or ss_tol)", UDMAP_ENUMERIC)
+      call fatal_error(error, "dti: no steady state within max_periods = "// &
+        & itoa(set%max_periods)//" periods (raise max_periods or ss_tol)", UDMAP_ENUMERIC)
       return
     end if
   contains
@@ -424,43 +421,27 @@ contains
       if (inf /= 0) call fatal_error(error, "dti: dpbtrs/dpotrs failed", UDMAP_ENUMERIC)
     end subroutine keff_solve
 
-    !> y = X x for the symmetric matrix X = 'M' or 'C'.
-    subroutine matvec(which, x, y)
-      character(len=1), intent(in) :: which
+    !> y = A x for the symmetric matrix A (st%M or st%C, in the structure's storage).
+    subroutine matvec(A, x, y)
+      real(wp), intent(in) :: A(:,:)
       real(wp), intent(in) :: x(:)
       real(wp), intent(out) :: y(:)
       integer :: jj, ii, lo
       real(wp) :: s
       if (kd < 0) then
-        if (which == 'M') then
-          y = matmul(st%M, x)
-        else
-          y = matmul(st%C, x)
-        end if
+        y = matmul(A, x)
         return
       end if
       y = 0.0_wp
-      if (which == 'M') then
-        do jj = 1, n
-          lo = max(1, jj - kd)
-          s = 0.0_wp
-          do ii = lo, jj - 1
-            y(ii) = y(ii) + st%M(kd+1+ii-jj, jj)*x(jj)
-            s = s + st%M(kd+1+ii-jj, jj)*x(ii)
-          end do
-          y(jj) = y(jj) + s + st%M(kd+1, jj)*x(jj)
+      do jj = 1, n
+        lo = max(1, jj - kd)
+        s = 0.0_wp
+        do ii = lo, jj - 1
+          y(ii) = y(ii) + A(kd+1+ii-jj, jj)*x(jj)
+          s = s + A(kd+1+ii-jj, jj)*x(ii)
         end do
-      else
-        do jj = 1, n
-          lo = max(1, jj - kd)
-          s = 0.0_wp
-          do ii = lo, jj - 1
-            y(ii) = y(ii) + st%C(kd+1+ii-jj, jj)*x(jj)
-            s = s + st%C(kd+1+ii-jj, jj)*x(ii)
-          end do
-          y(jj) = y(jj) + s + st%C(kd+1, jj)*x(jj)
-        end do
-      end if
+        y(jj) = y(jj) + s + A(kd+1, jj)*x(jj)
+      end do
     end subroutine matvec
 
     !> gamma + c (M_r(gamma) - M_ref) = g_lin along the path from the committed state.

@@ -5,6 +5,7 @@
 module udmap_baseline_residual
   use udmap_core_kinds, only: wp, pi
   use udmap_core_error, only: error_type, fatal_error, UDMAP_EINPUT, UDMAP_ENUMERIC
+  use udmap_core_strings, only: itoa
   use udmap_core_lapack, only: dgesv, dgbtrf, dgbtrs, dgetrf, dgetrs
   use udmap_baseline_linear_structure, only: structure_type, structure_receptances_type, &
     & structure_receptances
@@ -25,43 +26,27 @@ contains
     type(hbm_settings_type), intent(in) :: settings
     type(error_type), allocatable, intent(out) :: error
     type(structure_receptances_type) :: r0
-    if (st%ndof < 1) then
-      call fatal_error(error, "hbm: the structure is empty", UDMAP_EINPUT)
-      return
-    end if
-    if (.not.(F_E > 0.0_wp) .or. F_E > huge(1.0_wp)) then
-      call fatal_error(error, "hbm: F_E must be positive and finite", UDMAP_EINPUT)
-      return
-    end if
-    if (.not.(f_min > 0.0_wp) .or. .not.(f_max > f_min) .or. f_max > huge(1.0_wp)) then
-      call fatal_error(error, "hbm: need 0 < f_min < f_max (finite)", UDMAP_EINPUT)
-      return
-    end if
-    if (settings%harmonics < 1 .or. settings%harmonics > 64) then
-      call fatal_error(error, "hbm: harmonics must be in 1..64", UDMAP_EINPUT)
-      return
-    end if
-    if (settings%variant /= HBM_CONDENSED .and. settings%variant /= HBM_FULL) then
-      call fatal_error(error, "hbm: variant must be condensed (0) or full (1)", UDMAP_EINPUT)
-      return
-    end if
-    if (.not.(settings%tol > 0.0_wp) .or. .not.(settings%tol_path > 0.0_wp) .or. &
-        & .not.(settings%ds_min > 0.0_wp) .or. &
-        & .not.(settings%ds_max >= settings%ds_min) .or. .not.(settings%ds_initial > 0.0_wp) &
-        & .or. .not.(settings%fd_step > 0.0_wp) .or. .not.(settings%peak_tol > 0.0_wp) .or. &
-        & .not.(settings%max_angle > 0.0_wp) .or. .not.(settings%gamma_limit > 0.0_wp) .or. &
-        & settings%max_iter < 2 .or. settings%max_steps < 1 .or. settings%target_iter < 1 .or. &
-        & settings%aft_samples < 0 .or. settings%aft_max_periods < 1 .or. &
-        & settings%warm_start < 0 .or. settings%warm_start > 2 .or. &
-        & .not.(settings%aft_loop_rtol > 0.0_wp)) then
-      call fatal_error(error, "hbm: invalid numerical settings (tolerances and steps must be "// &
-        & "positive, max_iter >= 2, aft_samples >= 0, warm_start 0, 1 or 2)", UDMAP_EINPUT)
-      return
-    end if
-    if (settings%aft_samples > 0 .and. settings%aft_samples < 2*settings%harmonics + 1) then
-      call fatal_error(error, "hbm: aft_samples must be 0 (exact) or >= 2 H + 1", UDMAP_EINPUT)
-      return
-    end if
+    call require(st%ndof >= 1, "hbm: the structure is empty")
+    call require(F_E > 0.0_wp .and. F_E <= huge(1.0_wp), "hbm: F_E must be positive and finite")
+    call require(f_min > 0.0_wp .and. f_max > f_min .and. f_max <= huge(1.0_wp), &
+      & "hbm: need 0 < f_min < f_max (finite)")
+    call require(settings%harmonics >= 1 .and. settings%harmonics <= 64, &
+      & "hbm: harmonics must be in 1..64")
+    call require(settings%variant == HBM_CONDENSED .or. settings%variant == HBM_FULL, &
+      & "hbm: variant must be condensed (0) or full (1)")
+    call require(settings%tol > 0.0_wp .and. settings%tol_path > 0.0_wp .and. &
+      & settings%ds_min > 0.0_wp .and. settings%ds_max >= settings%ds_min .and. &
+      & settings%ds_initial > 0.0_wp .and. settings%fd_step > 0.0_wp .and. &
+      & settings%peak_tol > 0.0_wp .and. settings%max_angle > 0.0_wp .and. &
+      & settings%gamma_limit > 0.0_wp .and. settings%aft_loop_rtol > 0.0_wp .and. &
+      & settings%max_iter >= 2 .and. settings%max_steps >= 1 .and. settings%target_iter >= 1 &
+      & .and. settings%aft_samples >= 0 .and. settings%aft_max_periods >= 1 .and. &
+      & settings%warm_start >= 0 .and. settings%warm_start <= 2, &
+      & "hbm: invalid numerical settings (tolerances and steps must be positive, "// &
+      & "max_iter >= 2, aft_samples >= 0, warm_start 0, 1 or 2)")
+    call require(settings%aft_samples <= 0 .or. settings%aft_samples >= 2*settings%harmonics + 1, &
+      & "hbm: aft_samples must be 0 (exact) or >= 2 H + 1")
+    if (allocated(error)) return
     p%set = settings
     p%H = settings%harmonics
     p%h0 = merge(1, 0, settings%harmonic0)
@@ -80,7 +65,7 @@ contains
       if (st%kd >= 0) p%kb = (st%kd + 1)*p%b - 1
       p%banded = st%kd >= 0
     end if
-    if (settings%variant == HBM_FULL) call band_entries(st, p%Kij, p%Mij, p%Cij)
+    if (settings%variant == HBM_FULL) call band_entries(st, p%Ie, p%Je, p%Kij, p%Mij, p%Cij)
     allocate(p%el, source=element)
     allocate(p%Mh(p%H), p%JM(p%m, p%m), p%rec(p%H))
     call p%el%load(error)
@@ -93,6 +78,13 @@ contains
       if (allocated(error)) return
       p%Hgg0 = real(r0%gg, wp)
     end if
+  contains
+    !> The input error `message` unless ok; the first failed check is the one reported.
+    subroutine require(ok, message)
+      logical, intent(in) :: ok
+      character(len=*), intent(in) :: message
+      if (.not.ok .and. .not.allocated(error)) call fatal_error(error, message, UDMAP_EINPUT)
+    end subroutine require
   end subroutine setup
 
   ! ------------------------------------------------------------------ residual and Jacobian
@@ -238,36 +230,28 @@ contains
     real(wp), intent(in) :: x(:), omega
     real(wp), intent(out) :: R(:)
     real(wp), intent(out), optional :: Jw(:)
-    integer :: i, j, h, lo, hi, bi, bj, cr, e
+    integer :: h, bi, bj, cr, e
     real(wp) :: kij, mij, cij, Om, a, bb, dm
     R = 0.0_wp
     if (present(Jw)) Jw = 0.0_wp
-    e = 0
-    do i = 1, p%n
-      lo = 1; hi = p%n
-      if (st%kd >= 0) then
-        lo = max(1, i - st%kd); hi = min(p%n, i + st%kd)
-      end if
-      bi = (i - 1)*p%b
-      do j = lo, hi
-        e = e + 1
-        kij = p%Kij(e); mij = p%Mij(e); cij = p%Cij(e)
-        bj = (j - 1)*p%b
-        if (p%h0 == 1) R(bi+1) = R(bi+1) + kij*x(bj+1)
-        do h = 1, p%H
-          cr = p%h0 + 2*h - 1
-          Om = h*omega
-          a = kij - Om**2*mij
-          bb = Om*cij
-          R(bi+cr) = R(bi+cr) + a*x(bj+cr) - bb*x(bj+cr+1)
-          R(bi+cr+1) = R(bi+cr+1) + bb*x(bj+cr) + a*x(bj+cr+1)
-          if (present(Jw)) then
-            ! d/domega of D(h omega) Q_h = h (-2 h omega M + i C) Q_h
-            dm = -2.0_wp*h*Om*mij
-            Jw(bi+cr) = Jw(bi+cr) + dm*x(bj+cr) - h*cij*x(bj+cr+1)
-            Jw(bi+cr+1) = Jw(bi+cr+1) + h*cij*x(bj+cr) + dm*x(bj+cr+1)
-          end if
-        end do
+    do e = 1, size(p%Kij)
+      bi = (p%Ie(e) - 1)*p%b
+      bj = (p%Je(e) - 1)*p%b
+      kij = p%Kij(e); mij = p%Mij(e); cij = p%Cij(e)
+      if (p%h0 == 1) R(bi+1) = R(bi+1) + kij*x(bj+1)
+      do h = 1, p%H
+        cr = p%h0 + 2*h - 1
+        Om = h*omega
+        a = kij - Om**2*mij
+        bb = Om*cij
+        R(bi+cr) = R(bi+cr) + a*x(bj+cr) - bb*x(bj+cr+1)
+        R(bi+cr+1) = R(bi+cr+1) + bb*x(bj+cr) + a*x(bj+cr+1)
+        if (present(Jw)) then
+          ! d/domega of D(h omega) Q_h = h (-2 h omega M + i C) Q_h
+          dm = -2.0_wp*h*Om*mij
+          Jw(bi+cr) = Jw(bi+cr) + dm*x(bj+cr) - h*cij*x(bj+cr+1)
+          Jw(bi+cr+1) = Jw(bi+cr+1) + h*cij*x(bj+cr) + dm*x(bj+cr+1)
+        end if
       end do
     end do
     bi = (st%exc_dof - 1)*p%b
@@ -281,22 +265,18 @@ contains
     end do
   end subroutine full_residual
 
-  !> The entries (i, j) of K, M and C that the full variant assembles, in its loop order (rows
-  !> i, then columns j inside the band), so that the Newton loop reads them in sequence.
-  pure subroutine band_entries(st, Kij, Mij, Cij)
+  !> The entries (i, j) of K, M and C that the full variant assembles, with their row Ie and
+  !> column Je, in its loop order (rows i, then columns j inside the band), so that the Newton
+  !> loop reads them in sequence.
+  pure subroutine band_entries(st, Ie, Je, Kij, Mij, Cij)
     type(structure_type), intent(in) :: st
+    integer, allocatable, intent(out) :: Ie(:), Je(:)
     real(wp), allocatable, intent(out) :: Kij(:), Mij(:), Cij(:)
     integer :: i, j, lo, hi, r, c, e, n
     n = st%ndof
-    e = 0
-    do i = 1, n
-      lo = 1; hi = n
-      if (st%kd >= 0) then
-        lo = max(1, i - st%kd); hi = min(n, i + st%kd)
-      end if
-      e = e + hi - lo + 1
-    end do
-    allocate(Kij(e), Mij(e), Cij(e))
+    lo = n
+    if (st%kd >= 0) lo = min(n, 2*st%kd + 1)
+    allocate(Ie(n*lo), Je(n*lo))
     e = 0
     do i = 1, n
       lo = 1; hi = n
@@ -305,15 +285,21 @@ contains
       end if
       do j = lo, hi
         e = e + 1
-        if (st%kd < 0) then
-          Kij(e) = st%K(i, j); Mij(e) = st%M(i, j); Cij(e) = st%C(i, j)
-        else
-          ! symmetric upper band storage: A(r, c) = X(kd + 1 + r - c, c), r <= c
-          r = min(i, j); c = max(i, j)
-          r = st%kd + 1 + r - c
-          Kij(e) = st%K(r, c); Mij(e) = st%M(r, c); Cij(e) = st%C(r, c)
-        end if
+        Ie(e) = i; Je(e) = j
       end do
+    end do
+    Ie = Ie(1:e); Je = Je(1:e)
+    allocate(Kij(e), Mij(e), Cij(e))
+    do e = 1, size(Ie)
+      i = Ie(e); j = Je(e)
+      if (st%kd < 0) then
+        Kij(e) = st%K(i, j); Mij(e) = st%M(i, j); Cij(e) = st%C(i, j)
+      else
+        ! symmetric upper band storage: A(r, c) = X(kd + 1 + r - c, c), r <= c
+        r = min(i, j); c = max(i, j)
+        r = st%kd + 1 + r - c
+        Kij(e) = st%K(r, c); Mij(e) = st%M(r, c); Cij(e) = st%C(r, c)
+      end if
     end do
   end subroutine band_entries
 
@@ -323,9 +309,8 @@ contains
     type(structure_type), intent(in) :: st
     real(wp), intent(in) :: omega
     type(error_type), allocatable, intent(out) :: error
-    integer :: i, j, h, c, cc, lo, hi, bi, bj, cr, info, ldab, kb, r0, sy, e
+    integer :: i, h, c, cc, bi, bj, cr, info, ldab, kb, r0, sy, e
     real(wp) :: kij, mij, cij, Om, a, bb, gr, gi
-    character(len=12) :: buf
     if (p%set%variant == HBM_CONDENSED) then
       ! J_x = I + blockdiag(H_gg(h omega)) JM, complex products as 2x2 real blocks
       if (.not.allocated(p%Jd)) allocate(p%Jd(p%m, p%m))
@@ -357,30 +342,22 @@ contains
     p%LU = 0.0_wp
     ! entry (row, col) of J_x is stored at LU(r0 + row - col, col) in band storage and at
     ! LU(row, col) in dense storage: LU(base + row - sy*col, col) with base = r0 or 0
-    e = 0
-    do i = 1, p%n
-      lo = 1; hi = p%n
-      if (st%kd >= 0) then
-        lo = max(1, i - st%kd); hi = min(p%n, i + st%kd)
-      end if
-      bi = (i - 1)*p%b
-      do j = lo, hi
-        e = e + 1
-        kij = p%Kij(e); mij = p%Mij(e); cij = p%Cij(e)
-        bj = (j - 1)*p%b
-        if (p%h0 == 1) p%LU(r0+bi+1-sy*(bj+1), bj+1) = p%LU(r0+bi+1-sy*(bj+1), bj+1) + kij
-        do h = 1, p%H
-          cr = p%h0 + 2*h - 1
-          Om = h*omega
-          a = kij - Om**2*mij
-          bb = Om*cij
-          c = bj + cr
-          p%LU(r0+bi+cr-sy*c, c) = p%LU(r0+bi+cr-sy*c, c) + a
-          p%LU(r0+bi+cr+1-sy*c, c) = p%LU(r0+bi+cr+1-sy*c, c) + bb
-          c = bj + cr + 1
-          p%LU(r0+bi+cr-sy*c, c) = p%LU(r0+bi+cr-sy*c, c) - bb
-          p%LU(r0+bi+cr+1-sy*c, c) = p%LU(r0+bi+cr+1-sy*c, c) + a
-        end do
+    do e = 1, size(p%Kij)
+      bi = (p%Ie(e) - 1)*p%b
+      bj = (p%Je(e) - 1)*p%b
+      kij = p%Kij(e); mij = p%Mij(e); cij = p%Cij(e)
+      if (p%h0 == 1) p%LU(r0+bi+1-sy*(bj+1), bj+1) = p%LU(r0+bi+1-sy*(bj+1), bj+1) + kij
+      do h = 1, p%H
+        cr = p%h0 + 2*h - 1
+        Om = h*omega
+        a = kij - Om**2*mij
+        bb = Om*cij
+        c = bj + cr
+        p%LU(r0+bi+cr-sy*c, c) = p%LU(r0+bi+cr-sy*c, c) + a
+        p%LU(r0+bi+cr+1-sy*c, c) = p%LU(r0+bi+cr+1-sy*c, c) + bb
+        c = bj + cr + 1
+        p%LU(r0+bi+cr-sy*c, c) = p%LU(r0+bi+cr-sy*c, c) - bb
+        p%LU(r0+bi+cr+1-sy*c, c) = p%LU(r0+bi+cr+1-sy*c, c) + a
       end do
     end do
     do cc = 1, p%m
@@ -395,9 +372,8 @@ contains
       call dgetrf(p%nx, p%nx, p%LU, p%nx, p%ipiv, info)
     end if
     if (info /= 0) then
-      write(buf, '(i0)') info
       call fatal_error(error, "hbm: dgbtrf/dgetrf failed on the full Jacobian (info = "// &
-        & trim(buf)//")", UDMAP_ENUMERIC)
+        & itoa(info)//")", UDMAP_ENUMERIC)
     end if
   end subroutine factor
 
@@ -411,7 +387,6 @@ contains
     integer, allocatable :: ipiv(:)
     integer :: m, info
     real(wp) :: den
-    character(len=12) :: buf
     if (p%set%variant == HBM_CONDENSED) then
       m = p%m
       allocate(A(m+1, m+1), rhs(m+1, 1), ipiv(m+1))
@@ -423,9 +398,8 @@ contains
       rhs(m+1, 1) = rn
       call dgesv(m+1, 1, A, m+1, ipiv, rhs, m+1, info)
       if (info /= 0) then
-        write(buf, '(i0)') info
         call fatal_error(error, "hbm: dgesv failed on the bordered Jacobian (info = "// &
-          & trim(buf)//")", UDMAP_ENUMERIC)
+          & itoa(info)//")", UDMAP_ENUMERIC)
         return
       end if
       dx = rhs(1:m, 1)
@@ -442,8 +416,7 @@ contains
       call dgetrs('N', p%nx, 2, p%LU, p%nx, p%ipiv, rhs, p%nx, info)
     end if
     if (info /= 0) then
-      write(buf, '(i0)') info
-      call fatal_error(error, "hbm: dgbtrs/dgetrs failed (info = "//trim(buf)//")", &
+      call fatal_error(error, "hbm: dgbtrs/dgetrs failed (info = "//itoa(info)//")", &
         & UDMAP_ENUMERIC)
       return
     end if

@@ -10,7 +10,7 @@ module udmap_baseline_types
   private
   public :: hbm_settings_type, hbm_point_type, hbm_curve_type, HBM_CONDENSED, HBM_FULL, &
     & HBM_MAX_PEAKS, amplitude, amplitude_scale, scaled_dot, converged, problem_type, &
-    & curve_point_type
+    & curve_point_type, seconds_since
 
   !> Variant: condensed onto the damper DOF (one unknown per harmonic) or on all DOFs.
   integer, parameter :: HBM_CONDENSED = 0, HBM_FULL = 1
@@ -103,8 +103,10 @@ module udmap_baseline_types
     real(wp), allocatable :: Jw_last(:)
     !> p%JM holds a damper Jacobian that may be reused
     logical :: jm_valid = .false.
-    !> full variant: the entries (i, j) of K, M, C inside the band, row by row (j = lo..hi)
+    !> full variant: the entries (i, j) of K, M, C inside the band, row by row (j = lo..hi),
+    !> and the row i and column j of each
     real(wp), allocatable :: Kij(:), Mij(:), Cij(:)
+    integer, allocatable :: Ie(:), Je(:)
     integer :: iterations = 0
   end type problem_type
 
@@ -128,6 +130,14 @@ contains
     converged = stepn <= 0.2_wp*prev .and. prev <= 0.5_wp*prev2 .and. stepn**2/prev <= tol
   end function converged
 
+  !> Wall time [s] since the count c0 of system_clock (count rate `rate`).
+  real(wp) function seconds_since(c0, rate)
+    integer(8), intent(in) :: c0, rate
+    integer(8) :: c1
+    call system_clock(c1)
+    seconds_since = real(c1 - c0, wp)/real(rate, wp)
+  end function seconds_since
+
   !> |Gamma_1| of the unknowns.
   pure real(wp) function amplitude(p, x)
     type(problem_type), intent(in) :: p
@@ -149,6 +159,4 @@ contains
     scaled_dot = dot_product(x1(p%goff+1:p%goff+p%m), x2(p%goff+1:p%goff+p%m))/A_s**2 + &
       & w1*w2/p%W_s**2
   end function scaled_dot
-
-
 end module udmap_baseline_types

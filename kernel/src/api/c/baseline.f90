@@ -86,16 +86,10 @@ contains
     type(c_ptr), intent(out) :: contact
     integer(c_int) :: stat
     type(error_type), allocatable :: error
-    type(c_contact_type), pointer :: c
     type(jenkins_element_type) :: jen
-    contact = c_null_ptr
     call clear_error(ehandle)
     call new_jenkins_element(jen, real(kt, wp), real(M_slip, wp), error)
-    if (.not.allocated(error)) then
-      allocate(c)
-      allocate(c%element, source=jen)
-      contact = c_loc(c)
-    end if
+    call hand_over_contact(jen, error, contact)
     stat = set_error(ehandle, error)
   end function udmap_new_contact_jenkins
 
@@ -107,16 +101,10 @@ contains
     type(c_ptr), intent(out) :: contact
     integer(c_int) :: stat
     type(error_type), allocatable :: error
-    type(c_contact_type), pointer :: c
     type(contact_element_type) :: el
-    contact = c_null_ptr
     call clear_error(ehandle)
     call new_contact_element(el, asymmetric_from_c(params), error)
-    if (.not.allocated(error)) then
-      allocate(c)
-      allocate(c%element, source=el)
-      contact = c_loc(c)
-    end if
+    call hand_over_contact(el, error, contact)
     stat = set_error(ehandle, error)
   end function udmap_new_contact_asymmetric
 
@@ -178,7 +166,7 @@ contains
   subroutine udmap_hbm_defaults(settings) bind(C, name="udmap_hbm_defaults")
     type(c_hbm_settings), intent(out) :: settings
     type(hbm_settings_type) :: d
-    call settings_to_c(d, settings)
+    settings = settings_to_c(d)
   end subroutine udmap_hbm_defaults
 
   !> Peaks of the response for n forces (udmap_hbm_point each).
@@ -191,24 +179,8 @@ contains
     real(c_double), intent(in) :: F_E(*)
     type(c_hbm_point), intent(out) :: points(*)
     integer(c_int) :: stat
-    type(error_type), allocatable :: error
-    type(structure_type) :: st
-    type(c_contact_type), pointer :: c
-    type(hbm_settings_type) :: set
-    type(hbm_point_type), allocatable :: pts(:)
-    integer :: i
-    call clear_error(ehandle)
-    call prepare(blade, contact, n, st, c, error, settings, set)
-    if (.not.allocated(error)) then
-      call hbm_peaks(st, c%element, real(f_min, wp), real(f_max, wp), &
-        & real(F_E(1:n), wp), set, pts, error)
-      ! the points before a failure are returned
-      do i = 1, n
-        if (.not.allocated(pts(i)%gamma_h)) exit
-        call point_to_c(pts(i), points(i))
-      end do
-    end if
-    stat = set_error(ehandle, error)
+    stat = hbm_points(ehandle, blade, contact, f_min, f_max, settings, n, F_E, points, &
+      & at_peak=.true.)
   end function udmap_hbm_peaks
 
   !> Response at f_exc for n forces, by continuation from f_min.
@@ -221,24 +193,50 @@ contains
     real(c_double), intent(in) :: F_E(*)
     type(c_hbm_point), intent(out) :: points(*)
     integer(c_int) :: stat
+    stat = hbm_points(ehandle, blade, contact, f_min, f_exc, settings, n, F_E, points, &
+      & at_peak=.false.)
+  end function udmap_hbm_response
+
+  !> The standard method for n forces: the peaks in [f_a, f_b] or, not at_peak, the response at
+  !> f_b reached by continuation from f_a; the points before a failure are returned; the status.
+  function hbm_points(ehandle, blade, contact, f_a, f_b, settings, n, F_E, points, at_peak) &
+      & result(stat)
+    type(c_ptr), intent(in) :: ehandle, blade, contact
+    real(c_double), intent(in) :: f_a, f_b
+    type(c_hbm_settings), intent(in) :: settings
+    integer(c_int), intent(in) :: n
+    real(c_double), intent(in) :: F_E(*)
+    type(c_hbm_point), intent(out) :: points(*)
+    logical, intent(in) :: at_peak
+    integer(c_int) :: stat
     type(error_type), allocatable :: error
     type(structure_type) :: st
     type(c_contact_type), pointer :: c
     type(hbm_settings_type) :: set
-    type(hbm_point_type) :: pt
-    integer :: i
+    type(hbm_point_type), allocatable :: pts(:)
+    integer :: i, m
     call clear_error(ehandle)
     call prepare(blade, contact, n, st, c, error, settings, set)
     if (.not.allocated(error)) then
-      do i = 1, n
-        call hbm_response(st, c%element, real(f_min, wp), real(f_exc, wp), real(F_E(i), wp), &
-          & set, pt, error)
-        if (allocated(error)) exit
-        call point_to_c(pt, points(i))
+      m = n
+      if (at_peak) then
+        call hbm_peaks(st, c%element, real(f_a, wp), real(f_b, wp), real(F_E(1:n), wp), set, &
+          & pts, error)
+      else
+        allocate(pts(n))
+        do m = 0, n - 1
+          call hbm_response(st, c%element, real(f_a, wp), real(f_b, wp), real(F_E(m+1), wp), &
+            & set, pts(m+1), error)
+          if (allocated(error)) exit
+        end do
+      end if
+      do i = 1, m
+        if (.not.allocated(pts(i)%gamma_h)) exit
+        points(i) = point_to_c(pts(i))
       end do
     end if
     stat = set_error(ehandle, error)
-  end function udmap_hbm_response
+  end function hbm_points
 
   !> The continued response curve of one force.
   function udmap_hbm_curve(ehandle, blade, contact, f_min, f_max, settings, F_E, capacity, &
@@ -283,13 +281,9 @@ contains
   subroutine udmap_dti_defaults(settings) bind(C, name="udmap_dti_defaults")
     type(c_dti_settings), intent(out) :: settings
     type(dti_settings_type) :: d
-    settings%steps_per_period = d%steps_per_period
-    settings%ss_tol = d%ss_tol
-    settings%min_periods = d%min_periods
-    settings%max_periods = d%max_periods
-    settings%peak_rtol = d%peak_rtol
-    settings%peak_window = d%peak_window
-    settings%gamma_limit = d%gamma_limit
+    settings = c_dti_settings(steps_per_period=d%steps_per_period, ss_tol=d%ss_tol, &
+      & min_periods=d%min_periods, max_periods=d%max_periods, peak_rtol=d%peak_rtol, &
+      & peak_window=d%peak_window, gamma_limit=d%gamma_limit)
   end subroutine udmap_dti_defaults
 
   !> Steady state by time integration at f_exc for n forces.
@@ -349,13 +343,26 @@ contains
             & dti_from_c(settings), pt, error)
         end if
         if (allocated(error)) exit
-        call dti_point_to_c(pt, points(i))
+        points(i) = dti_point_to_c(pt)
       end do
     end if
     stat = set_error(ehandle, error)
   end function dti_points
 
   ! ------------------------------------------------------------------ helpers
+
+  !> Hands a new contact element to the caller's handle; NULL after an error.
+  subroutine hand_over_contact(element, error, contact)
+    class(hysteretic_element_type), intent(in) :: element
+    type(error_type), allocatable, intent(in) :: error
+    type(c_ptr), intent(out) :: contact
+    type(c_contact_type), pointer :: c
+    contact = c_null_ptr
+    if (allocated(error)) return
+    allocate(c)
+    allocate(c%element, source=element)
+    contact = c_loc(c)
+  end subroutine hand_over_contact
 
   !> The structure of the blade handle, the contact element of the contact handle and, when
   !> given, the settings of the standard method.
@@ -380,30 +387,20 @@ contains
     if (present(settings)) call settings_from_c(settings, set, error)
   end subroutine prepare
 
-  subroutine settings_to_c(s, c)
+  ! The conversions to and from the C structs are structure constructors with keywords: the
+  ! compiler checks that every field of a C struct is set.
+
+  pure function settings_to_c(s) result(c)
     type(hbm_settings_type), intent(in) :: s
-    type(c_hbm_settings), intent(out) :: c
-    c%harmonics = s%harmonics
-    c%harmonic0 = merge(1, 0, s%harmonic0)
-    c%variant = s%variant
-    c%tol = s%tol
-    c%max_iter = s%max_iter
-    c%ds_initial = s%ds_initial
-    c%ds_min = s%ds_min
-    c%ds_max = s%ds_max
-    c%target_iter = s%target_iter
-    c%max_angle = s%max_angle
-    c%max_steps = s%max_steps
-    c%peak_tol = s%peak_tol
-    c%aft_samples = s%aft_samples
-    c%aft_max_periods = s%aft_max_periods
-    c%fd_step = s%fd_step
-    c%gamma_limit = s%gamma_limit
-    c%full_band = merge(1, 0, s%full_band)
-    c%jacobian_reuse = merge(1, 0, s%jacobian_reuse)
-    c%tol_path = s%tol_path
-    c%warm_start = s%warm_start
-  end subroutine settings_to_c
+    type(c_hbm_settings) :: c
+    c = c_hbm_settings(harmonics=s%harmonics, harmonic0=merge(1, 0, s%harmonic0), &
+      & variant=s%variant, tol=s%tol, max_iter=s%max_iter, ds_initial=s%ds_initial, &
+      & ds_min=s%ds_min, ds_max=s%ds_max, target_iter=s%target_iter, max_angle=s%max_angle, &
+      & max_steps=s%max_steps, peak_tol=s%peak_tol, aft_samples=s%aft_samples, &
+      & aft_max_periods=s%aft_max_periods, fd_step=s%fd_step, gamma_limit=s%gamma_limit, &
+      & full_band=merge(1, 0, s%full_band), jacobian_reuse=merge(1, 0, s%jacobian_reuse), &
+      & tol_path=s%tol_path, warm_start=s%warm_start)
+  end function settings_to_c
 
   subroutine settings_from_c(c, s, error)
     type(c_hbm_settings), intent(in) :: c
@@ -413,83 +410,46 @@ contains
       call fatal_error(error, "hbm: harmonics must be in 1..64", UDMAP_EINPUT)
       return
     end if
-    s%harmonics = c%harmonics
-    s%harmonic0 = c%harmonic0 /= 0
-    s%variant = c%variant
-    s%tol = c%tol
-    s%max_iter = c%max_iter
-    s%ds_initial = c%ds_initial
-    s%ds_min = c%ds_min
-    s%ds_max = c%ds_max
-    s%target_iter = c%target_iter
-    s%max_angle = c%max_angle
-    s%max_steps = c%max_steps
-    s%peak_tol = c%peak_tol
-    s%aft_samples = c%aft_samples
-    s%aft_max_periods = c%aft_max_periods
-    s%fd_step = c%fd_step
-    s%gamma_limit = c%gamma_limit
-    s%full_band = c%full_band /= 0
-    s%jacobian_reuse = c%jacobian_reuse /= 0
-    s%tol_path = c%tol_path
-    s%warm_start = c%warm_start
+    ! the fields without a C counterpart keep their defaults
+    s = hbm_settings_type(harmonics=c%harmonics, harmonic0=c%harmonic0 /= 0, &
+      & variant=c%variant, tol=c%tol, max_iter=c%max_iter, ds_initial=c%ds_initial, &
+      & ds_min=c%ds_min, ds_max=c%ds_max, target_iter=c%target_iter, max_angle=c%max_angle, &
+      & max_steps=c%max_steps, peak_tol=c%peak_tol, aft_samples=c%aft_samples, &
+      & aft_max_periods=c%aft_max_periods, fd_step=c%fd_step, gamma_limit=c%gamma_limit, &
+      & full_band=c%full_band /= 0, jacobian_reuse=c%jacobian_reuse /= 0, &
+      & tol_path=c%tol_path, warm_start=c%warm_start)
   end subroutine settings_from_c
 
-  subroutine point_to_c(p, c)
+  !> The C point of p: at most max_harmonics values of gamma_h, the rest 0.
+  pure function point_to_c(p) result(c)
     type(hbm_point_type), intent(in) :: p
-    type(c_hbm_point), intent(out) :: c
-    integer :: h
-    c%F_E = p%F_E
-    c%gamma_P = p%gamma_P
-    c%f_res = p%f_res
-    c%sigma_a = p%sigma_a
-    c%u_E = p%u_E
-    c%k_re = p%k_re
-    c%k_im = p%k_im
-    c%gamma_max = p%gamma_max
-    c%npeaks = p%npeaks
-    c%peaks = p%peaks
-    c%peak_f = p%peak_f
-    c%harmonics = 0
-    c%gamma_h = 0.0_c_double
-    if (allocated(p%gamma_h)) then
-      c%harmonics = int(min(size(p%gamma_h), max_harmonics), c_int)
-      do h = 1, c%harmonics
-        c%gamma_h(h) = p%gamma_h(h)
-      end do
-    end if
-    c%steps = p%steps
-    c%iterations = p%iterations
-    c%aft_calls = p%aft_calls
-    c%seconds = p%seconds
-    c%lift_off = merge(1, 0, p%lift_off)
-  end subroutine point_to_c
+    type(c_hbm_point) :: c
+    real(c_double) :: gamma_h(max_harmonics)
+    integer :: nh
+    gamma_h = 0.0_c_double
+    nh = 0
+    if (allocated(p%gamma_h)) nh = min(size(p%gamma_h), max_harmonics)
+    gamma_h(1:nh) = p%gamma_h(1:nh)
+    c = c_hbm_point(F_E=p%F_E, gamma_P=p%gamma_P, f_res=p%f_res, sigma_a=p%sigma_a, u_E=p%u_E, &
+      & k_re=p%k_re, k_im=p%k_im, gamma_max=p%gamma_max, npeaks=p%npeaks, peaks=p%peaks, &
+      & peak_f=p%peak_f, harmonics=nh, gamma_h=gamma_h, steps=p%steps, &
+      & iterations=p%iterations, aft_calls=p%aft_calls, seconds=p%seconds, &
+      & lift_off=merge(1, 0, p%lift_off))
+  end function point_to_c
 
   pure function dti_from_c(c) result(s)
     type(c_dti_settings), intent(in) :: c
     type(dti_settings_type) :: s
-    s%steps_per_period = c%steps_per_period
-    s%ss_tol = c%ss_tol
-    s%min_periods = c%min_periods
-    s%max_periods = c%max_periods
-    s%peak_rtol = c%peak_rtol
-    s%peak_window = c%peak_window
-    s%gamma_limit = c%gamma_limit
+    s = dti_settings_type(steps_per_period=c%steps_per_period, ss_tol=c%ss_tol, &
+      & min_periods=c%min_periods, max_periods=c%max_periods, peak_rtol=c%peak_rtol, &
+      & peak_window=c%peak_window, gamma_limit=c%gamma_limit)
   end function dti_from_c
 
-  subroutine dti_point_to_c(p, c)
+  pure function dti_point_to_c(p) result(c)
     type(dti_point_type), intent(in) :: p
-    type(c_dti_point), intent(out) :: c
-    c%F_E = p%F_E
-    c%f = p%f
-    c%gamma_1 = p%gamma_1
-    c%sigma_1 = p%sigma_1
-    c%gamma_max = p%gamma_max
-    c%gamma_0 = p%gamma_0
-    c%ss_error = p%ss_error
-    c%periods = p%periods
-    c%runs = p%runs
-    c%seconds = p%seconds
-    c%lift_off = merge(1, 0, p%lift_off)
-  end subroutine dti_point_to_c
+    type(c_dti_point) :: c
+    c = c_dti_point(F_E=p%F_E, f=p%f, gamma_1=p%gamma_1, sigma_1=p%sigma_1, &
+      & gamma_max=p%gamma_max, gamma_0=p%gamma_0, ss_error=p%ss_error, periods=p%periods, &
+      & runs=p%runs, seconds=p%seconds, lift_off=merge(1, 0, p%lift_off))
+  end function dti_point_to_c
 end module udmap_api_c_baseline

@@ -9,7 +9,7 @@ module udmap_api_c_blade
   use udmap_core_kinds, only: wp, pi
   use udmap_core_error, only: error_type, fatal_error, UDMAP_EINPUT, UDMAP_EPHYSICS
   use udmap_api_c_support, only: set_error, clear_error, check_handle, check_input, take_handle, &
-    & handle_slot, indexed_name, c_string, put_out
+    & handle_slot, indexed_name, c_string, put_out, report_error
   ! udmap_beam_params and its conversion, generated from kernel/parameters.toml
   use udmap_api_c_parameters, only: c_beam_params, beam_from_c
   use udmap_blade_type, only: blade_type, receptances_type, new_beam_blade, layer_response
@@ -32,10 +32,7 @@ contains
     call clear_error(error)
     call check_handle(blade, "blade", err)
     call check_handle(params, "params", err)
-    if (allocated(err)) then
-      stat = set_error(error, err)
-      return
-    end if
+    if (report_error(error, err, stat)) return
     out => handle_slot(blade)
     call c_f_pointer(params, cp)
     allocate(b)
@@ -62,10 +59,7 @@ contains
     call check_handle(blade, "blade", err)
     call check_handle(M_path, "M_path", err)
     call check_handle(K_path, "K_path", err)
-    if (allocated(err)) then
-      stat = set_error(error, err)
-      return
-    end if
+    if (report_error(error, err, stat)) return
     out => handle_slot(blade)
     ! Optional paths: NULL means absent.
     if (c_associated(C_path)) C_file = c_string(C_path)

@@ -42,12 +42,9 @@ contains
     integer(c_int) :: stat
     type(damper_type), pointer :: d
     type(error_type), allocatable :: error
-    call clear_error(herr)
-    hdamper = c_null_ptr
-    allocate(d)
+    call start_new(herr, hdamper, d)
     call new_asymmetric_damper(d, asymmetric_from_c(params), error)
-    call finish_new(d, error, hdamper)
-    stat = set_error(herr, error)
+    stat = finish_new(herr, d, error, hdamper)
   end function udmap_new_damper_asymmetric
 
   function udmap_new_damper_jenkins(herr, kt, M_slip, hdamper) result(stat) &
@@ -58,12 +55,9 @@ contains
     integer(c_int) :: stat
     type(damper_type), pointer :: d
     type(error_type), allocatable :: error
-    call clear_error(herr)
-    hdamper = c_null_ptr
-    allocate(d)
+    call start_new(herr, hdamper, d)
     call new_jenkins_damper(d, real(kt, wp), real(M_slip, wp), error)
-    call finish_new(d, error, hdamper)
-    stat = set_error(herr, error)
+    stat = finish_new(herr, d, error, hdamper)
   end function udmap_new_damper_jenkins
 
   function udmap_new_damper_table(herr, n, gamma, k_re, k_im, has_delta_M, delta_M, hdamper) &
@@ -76,23 +70,18 @@ contains
     integer(c_int) :: stat
     type(damper_type), pointer :: d
     type(error_type), allocatable :: error
-    call clear_error(herr)
-    hdamper = c_null_ptr
+    call start_new(herr, hdamper, d)
     call check_input(n >= 2, "udmap_new_damper_table: 'n' must be at least 2", error)
-    if (allocated(error)) then
-      stat = set_error(herr, error)
-      return
+    if (.not.allocated(error)) then
+      if (has_delta_M /= 0) then
+        call new_table_damper(d, real(gamma(1:n), wp), real(k_re(1:n), wp), &
+          & real(k_im(1:n), wp), error, real(delta_M, wp))
+      else
+        call new_table_damper(d, real(gamma(1:n), wp), real(k_re(1:n), wp), &
+          & real(k_im(1:n), wp), error)
+      end if
     end if
-    allocate(d)
-    if (has_delta_M /= 0) then
-      call new_table_damper(d, real(gamma(1:n), wp), real(k_re(1:n), wp), real(k_im(1:n), wp), &
-        & error, real(delta_M, wp))
-    else
-      call new_table_damper(d, real(gamma(1:n), wp), real(k_re(1:n), wp), real(k_im(1:n), wp), &
-        & error)
-    end if
-    call finish_new(d, error, hdamper)
-    stat = set_error(herr, error)
+    stat = finish_new(herr, d, error, hdamper)
   end function udmap_new_damper_table
 
   subroutine udmap_delete_damper(hdamper) bind(C, name="udmap_delete_damper")
@@ -273,16 +262,30 @@ contains
     stat = set_error(herr, error)
   end function udmap_damper_jump_get
 
-  !> Hands the new damper to C, or frees it on error.
-  subroutine finish_new(d, error, hdamper)
-    type(damper_type), pointer, intent(inout) :: d
-    type(error_type), allocatable, intent(in) :: error
+  !> The start of a constructor: the error handle cleared, the output handle NULL and a new
+  !> damper to build.
+  subroutine start_new(herr, hdamper, d)
+    type(c_ptr), intent(in) :: herr
     type(c_ptr), intent(out) :: hdamper
+    type(damper_type), pointer, intent(out) :: d
+    call clear_error(herr)
+    hdamper = c_null_ptr
+    allocate(d)
+  end subroutine start_new
+
+  !> The end of a constructor: hands the new damper to C, or frees it on error; the status.
+  function finish_new(herr, d, error, hdamper) result(stat)
+    type(c_ptr), intent(in) :: herr
+    type(damper_type), pointer, intent(inout) :: d
+    type(error_type), allocatable, intent(inout) :: error
+    type(c_ptr), intent(inout) :: hdamper
+    integer(c_int) :: stat
     if (allocated(error)) then
       deallocate(d)
       hdamper = c_null_ptr
     else
       hdamper = c_loc(d)
     end if
-  end subroutine finish_new
+    stat = set_error(herr, error)
+  end function finish_new
 end module udmap_api_c_damper

@@ -273,30 +273,22 @@ contains
     stat = set_error(errh, error)
   end function udmap_model_backbone_curve
 
-  !> Copies a result point into the C struct (at most max_roots roots: the largest ones).
-  subroutine to_c_point(p, c)
+  !> The C struct of a result point (at most max_roots roots: the largest ones), by a structure
+  !> constructor: the compiler checks that every field is set.
+  pure function to_c_point(p) result(c)
     type(point_type), intent(in) :: p
-    type(c_point_type), intent(out) :: c
+    type(c_point_type) :: c
+    real(c_double) :: roots(max_roots)
     integer :: nr
-    c%F_E = p%F_E
-    c%gamma_P = p%gamma_P
-    c%f_res = p%f_res
-    c%sigma_a = p%sigma_a
-    c%u_E = p%u_E
-    c%k_re = real(p%k, wp)
-    c%k_im = aimag(p%k)
-    c%regime = p%regime
-    c%hcf_ok = merge(1, 0, p%hcf_ok)
-    c%unbounded = merge(1, 0, p%unbounded)
-    c%roots = 0
+    roots = 0
     nr = 0
     if (allocated(p%roots)) nr = min(size(p%roots), max_roots)
-    c%nroots = nr
-    if (nr > 0) c%roots(1:nr) = p%roots(size(p%roots) - nr + 1:)
-    c%gamma_max = p%gamma_max
-    c%sigma_max = p%sigma_max
-    c%harmonics = p%harmonics
-  end subroutine to_c_point
+    if (nr > 0) roots(1:nr) = p%roots(size(p%roots) - nr + 1:)
+    c = c_point_type(F_E=p%F_E, gamma_P=p%gamma_P, f_res=p%f_res, sigma_a=p%sigma_a, &
+      & u_E=p%u_E, k_re=real(p%k, wp), k_im=aimag(p%k), regime=p%regime, &
+      & hcf_ok=merge(1, 0, p%hcf_ok), unbounded=merge(1, 0, p%unbounded), nroots=nr, &
+      & roots=roots, gamma_max=p%gamma_max, sigma_max=p%sigma_max, harmonics=p%harmonics)
+  end function to_c_point
 
   !> int udmap_model_backbone(error, model, n, F_E, udmap_point *): the n resonance peaks.
   function udmap_model_backbone(errh, modelh, n, F_E, points) result(stat) &
@@ -350,7 +342,7 @@ contains
       end if
       if (.not.allocated(error)) then
         do i = 1, n
-          call to_c_point(p(i), points(i))
+          points(i) = to_c_point(p(i))
         end do
         if (.not.present(f_exc)) m%jump = p(1:n)%jump
         call move_alloc(p, m%last)

@@ -7,7 +7,7 @@ module udmap_api_c_reduce
   use udmap_core_kinds, only: wp
   use udmap_core_error, only: error_type
   use udmap_api_c_support, only: set_error, clear_error, check_handle, check_input, take_handle, &
-    & handle_slot, put_out
+    & handle_slot, put_out, report_error
   use udmap_blade_reduce_craig_bampton, only: reduction_type, platform_centred_reduction
   implicit none
   private
@@ -60,10 +60,7 @@ contains
     call check_handle(exc_direction, "exc_direction", err)
     if (n_clamp > 0) call check_handle(clamp_nodes, "clamp_nodes", err)
     if (n_stress > 0) call check_handle(stress_rows, "stress_rows", err)
-    if (allocated(err)) then
-      stat = set_error(error, err)
-      return
-    end if
+    if (report_error(error, err, stat)) return
     call c_f_pointer(k_row, kr, [nnz_k])
     call c_f_pointer(k_col, kc, [nnz_k])
     call c_f_pointer(k_val, kv, [nnz_k])
@@ -160,10 +157,7 @@ contains
     call clear_error(error)
     call check_handle(reduction, "reduction", err)
     call check_handle(info, "info", err)
-    if (allocated(err)) then
-      stat = set_error(error, err)
-      return
-    end if
+    if (report_error(error, err, stat)) return
     call c_f_pointer(reduction, red)
     call put_out(info, [red%f_cut, red%f_check, real(red%cut_count, wp), &
       & real(red%cut_found, wp), real(red%full_count, wp), real(red%full_found, wp), &

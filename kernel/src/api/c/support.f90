@@ -9,7 +9,7 @@ module udmap_api_c_support
   use udmap_core_strings, only: indexed_name
   implicit none
   private
-  public :: c_error_type, set_error, clear_error, error_from_handle
+  public :: c_error_type, set_error, clear_error, error_from_handle, report_error
   public :: check_handle, check_input, take_handle, handle_slot, indexed_name
   public :: c_string_to_fortran, c_string, copy_string, copy_out, put_out
 
@@ -54,6 +54,16 @@ contains
     if (allocated(err%error)) deallocate(err%error)
     if (allocated(error)) call move_alloc(error, err%error)
   end function set_error
+
+  !> Whether `error` is allocated; if so, it is moved into the handle and stat is its status
+  !> (for an early return: `if (report_error(handle, error, stat)) return`).
+  logical function report_error(handle, error, stat) result(reported)
+    type(c_ptr), intent(in) :: handle
+    type(error_type), allocatable, intent(inout) :: error
+    integer(c_int), intent(out) :: stat
+    reported = allocated(error)
+    if (reported) stat = set_error(handle, error)
+  end function report_error
 
   !> Clears the handle's error before a new call.
   subroutine clear_error(handle)
