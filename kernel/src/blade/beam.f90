@@ -115,7 +115,7 @@ contains
     ! Neck: node 0 clamped, node nn is the neck top, rigidly linked to P.
     call element(p%E, p%rho, p%neck_b, p%neck_h, p%neck_L/nn, ke, me)
     do e = 0, nn - 1
-      call element_map(e, nn, -0.5_wp*p%platform_L, g, t)
+      call element_map(e, 0, 0, nn, -0.5_wp*p%platform_L, g, t)
       call scatter(kb, ke, g, t)
       call scatter(mb, me, g, t)
     end do
@@ -125,7 +125,7 @@ contains
     ! Airfoil: node 0 is the root, rigidly linked to P.
     call element(p%E, p%rho, p%airfoil_b, p%airfoil_h, p%airfoil_L/na, ke, me)
     do e = 0, na - 1
-      call airfoil_map(e, g, t)
+      call element_map(e, gamma_dof, -1, 0, 0.5_wp*p%platform_L, g, t)
       call scatter(kb, ke, g, t)
       call scatter(mb, me, g, t)
       if (e == 0) then
@@ -138,45 +138,29 @@ contains
 
   contains
 
-    !> Global DOFs g (0: clamped) and transformation u_e = t q_g of neck element e.
-    pure subroutine element_map(e, nn, c_top, g, t)
-      integer, intent(in) :: e, nn
-      real(wp), intent(in) :: c_top
+    !> Global DOFs g (0: clamped) and transformation u_e = t q_g of element e of a segment:
+    !> its node `clamped` clamped (-1: none), its node `linked` linked to P with lever c,
+    !> node j otherwise free with the global DOFs offset + 2j - 1, offset + 2j.
+    pure subroutine element_map(e, offset, clamped, linked, c, g, t)
+      integer, intent(in) :: e, offset, clamped, linked
+      real(wp), intent(in) :: c
       integer, intent(out) :: g(4)
       real(wp), intent(out) :: t(4, 4)
       integer :: k, node
       t = 0.0_wp
       do k = 0, 1
         node = e + k
-        if (node == 0) then
+        if (node == clamped) then
           g(2*k+1:2*k+2) = 0
-        else if (node < nn) then
-          g(2*k+1:2*k+2) = [2*node-1, 2*node]
+        else if (node == linked) then
+          call platform_link(k, c, g, t)
+        else
+          g(2*k+1:2*k+2) = [offset+2*node-1, offset+2*node]
           t(2*k+1, 2*k+1) = 1.0_wp
           t(2*k+2, 2*k+2) = 1.0_wp
-        else
-          call platform_link(k, c_top, g, t)
         end if
       end do
     end subroutine element_map
-
-    pure subroutine airfoil_map(e, g, t)
-      integer, intent(in) :: e
-      integer, intent(out) :: g(4)
-      real(wp), intent(out) :: t(4, 4)
-      integer :: k, node
-      t = 0.0_wp
-      do k = 0, 1
-        node = e + k
-        if (node == 0) then
-          call platform_link(k, 0.5_wp*p%platform_L, g, t)
-        else
-          g(2*k+1:2*k+2) = [gamma_dof+2*node-1, gamma_dof+2*node]
-          t(2*k+1, 2*k+1) = 1.0_wp
-          t(2*k+2, 2*k+2) = 1.0_wp
-        end if
-      end do
-    end subroutine airfoil_map
 
     !> Node k of the element is linked to P: w = w_P + c gamma_P, theta = gamma_P.
     pure subroutine platform_link(k, c, g, t)

@@ -11,6 +11,7 @@ module udmap_blade_linear_solve
   use udmap_core_kinds, only: wp
   use udmap_core_error, only: error_type, fatal_error, UDMAP_EINPUT, UDMAP_ENUMERIC
   use udmap_core_lapack, only: dpotrf, dpotrs, dpbtrf, dpbtrs, zgetrf, zgetrs, zgbtrf, zgbtrs
+  use udmap_blade_band, only: sym_entry
   use udmap_blade_dd, only: dd_add, dd_add_d, dd_mul_d, sym_matvec_dd
   implicit none
   private
@@ -254,23 +255,9 @@ contains
 
     complex(wp) function d_entry(i, j)
       integer, intent(in) :: i, j
-      d_entry = fk*entry_of(k, kb, i, j) - omega**2*entry_of(m, mb, i, j)
-      if (explicit) d_entry = d_entry + cmplx(0.0_wp, omega*entry_of(c, cb, i, j), wp)
+      d_entry = fk*sym_entry(k, kb, kdu, i, j) - omega**2*sym_entry(m, mb, kdu, i, j)
+      if (explicit) d_entry = d_entry + cmplx(0.0_wp, omega*sym_entry(c, cb, kdu, i, j), wp)
     end function d_entry
-
-    real(wp) function entry_of(a, ab, i, j)
-      real(wp), allocatable, intent(in) :: a(:, :), ab(:, :)
-      integer, intent(in) :: i, j
-      if (allocated(ab)) then
-        if (abs(i - j) > kdu) then
-          entry_of = 0.0_wp
-        else
-          entry_of = ab(kdu+1+min(i, j)-max(i, j), max(i, j))
-        end if
-      else
-        entry_of = a(i, j)
-      end if
-    end function entry_of
 
     subroutine lu_solve(x)
       complex(wp), intent(inout) :: x(:, :)

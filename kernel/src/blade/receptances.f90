@@ -13,11 +13,7 @@ contains
     logical :: deriv
     deriv = .false.
     if (present(derivatives)) deriv = derivatives
-    if (.not.ieee_is_finite(omega)) then
-      call fatal_error(error, "the frequency must be a non-negative finite number", UDMAP_EINPUT)
-      return
-    end if
-    if (omega < 0.0_wp) then
+    if (.not.ieee_is_finite(omega) .or. omega < 0.0_wp) then
       call fatal_error(error, "the frequency must be a non-negative finite number", UDMAP_EINPUT)
       return
     end if

@@ -7,8 +7,7 @@ module udmap_damper_measured
   use udmap_core_error, only: error_type, fatal_error, UDMAP_EINPUT
   implicit none
   private
-  public :: measured_table_type, new_measured_table, measured_stiffness, &
-    & measured_stiffness_derivative
+  public :: measured_table_type, new_measured_table, measured_stiffness
 
   !> Rows (gamma, k_re, k_im) with the PCHIP slopes against ln(gamma).
   type :: measured_table_type
@@ -88,57 +87,48 @@ contains
 
   !> k(gamma): constant below the first row, PCHIP in ln(gamma) inside, beyond the last row
   !> k_Im = (E_last + 2 delta_M (gamma - gamma_last))/(pi gamma^2) and
-  !> k_Re = k_Re,last (gamma_last/gamma)^(3/2) with delta_M, else the last row.
-  pure function measured_stiffness(tab, gamma) result(k)
+  !> k_Re = k_Re,last (gamma_last/gamma)^(3/2) with delta_M, else the last row; with
+  !> derivative = .true. its derivative dk/dgamma instead.
+  pure function measured_stiffness(tab, gamma, derivative) result(k)
     type(measured_table_type), intent(in) :: tab
     real(wp), intent(in) :: gamma
+    logical, intent(in), optional :: derivative
     complex(wp) :: k
     real(wp) :: g, E_last
     integer :: n, i
+    logical :: slope
+    slope = .false.
+    if (present(derivative)) slope = derivative
     n = tab%n
     if (.not. (gamma > tab%gamma(1))) then
-      k = cmplx(tab%k_re(1), tab%k_im(1), wp)
+      if (slope) then
+        k = 0
+      else
+        k = cmplx(tab%k_re(1), tab%k_im(1), wp)
+      end if
     else if (gamma >= tab%gamma(n)) then
       if (tab%has_delta_M) then
         g = tab%gamma(n)
         E_last = pi*g**2*tab%k_im(n)
-        k = cmplx(tab%k_re(n)*(g/gamma)**1.5_wp, &
-          & (E_last/gamma + 2*tab%delta_M*(1 - g/gamma))/(pi*gamma), wp)
+        if (slope) then
+          k = cmplx(-1.5_wp*tab%k_re(n)*(g/gamma)**1.5_wp/gamma, &
+            & -((2*tab%delta_M*(1 - 2*g/gamma) + 2*E_last/gamma)/(pi*gamma))/gamma, wp)
+        else
+          k = cmplx(tab%k_re(n)*(g/gamma)**1.5_wp, &
+            & (E_last/gamma + 2*tab%delta_M*(1 - g/gamma))/(pi*gamma), wp)
+        end if
+      else if (slope) then
+        k = 0
       else
         k = cmplx(tab%k_re(n), tab%k_im(n), wp)
       end if
     else
       i = find_row(tab, gamma)
-      k = cmplx(hermite(tab, i, log(gamma), tab%k_re, tab%d_re), &
-        & hermite(tab, i, log(gamma), tab%k_im, tab%d_im), wp)
+      k = cmplx(hermite(tab, i, log(gamma), tab%k_re, tab%d_re, slope), &
+        & hermite(tab, i, log(gamma), tab%k_im, tab%d_im, slope), wp)
+      if (slope) k = k/gamma
     end if
   end function measured_stiffness
-
-  !> dk/dgamma of measured_stiffness.
-  pure function measured_stiffness_derivative(tab, gamma) result(dk)
-    type(measured_table_type), intent(in) :: tab
-    real(wp), intent(in) :: gamma
-    complex(wp) :: dk
-    real(wp) :: g, E_last
-    integer :: n, i
-    n = tab%n
-    if (.not. (gamma > tab%gamma(1))) then
-      dk = 0
-    else if (gamma >= tab%gamma(n)) then
-      if (tab%has_delta_M) then
-        g = tab%gamma(n)
-        E_last = pi*g**2*tab%k_im(n)
-        dk = cmplx(-1.5_wp*tab%k_re(n)*(g/gamma)**1.5_wp/gamma, &
-          & -((2*tab%delta_M*(1 - 2*g/gamma) + 2*E_last/gamma)/(pi*gamma))/gamma, wp)
-      else
-        dk = 0
-      end if
-    else
-      i = find_row(tab, gamma)
-      dk = cmplx(hermite_slope(tab, i, log(gamma), tab%k_re, tab%d_re), &
-        & hermite_slope(tab, i, log(gamma), tab%k_im, tab%d_im), wp)/gamma
-    end if
-  end function measured_stiffness_derivative
 
   pure integer function find_row(tab, gamma) result(i)
     type(measured_table_type), intent(in) :: tab
@@ -146,26 +136,23 @@ contains
     i = max(1, bisect(tab%gamma(1:tab%n - 1), gamma, right=.true.))
   end function find_row
 
-  pure real(wp) function hermite(tab, i, x, y, d) result(f)
+  !> The cubic Hermite piece of row i at x (values y, slopes d against x), or with slope its
+  !> derivative against x.
+  pure real(wp) function hermite(tab, i, x, y, d, slope) result(f)
     type(measured_table_type), intent(in) :: tab
     integer, intent(in) :: i
     real(wp), intent(in) :: x, y(:), d(:)
+    logical, intent(in) :: slope
     real(wp) :: h, t
     h = tab%x(i+1) - tab%x(i)
     t = (x - tab%x(i))/h
-    f = y(i)*(1 + 2*t)*(1 - t)**2 + h*d(i)*t*(1 - t)**2 + y(i+1)*t**2*(3 - 2*t) &
-      & - h*d(i+1)*t**2*(1 - t)
+    if (slope) then
+      f = (y(i+1) - y(i))*6*t*(1 - t)/h + d(i)*(1 - t)*(1 - 3*t) + d(i+1)*t*(3*t - 2)
+    else
+      f = y(i)*(1 + 2*t)*(1 - t)**2 + h*d(i)*t*(1 - t)**2 + y(i+1)*t**2*(3 - 2*t) &
+        & - h*d(i+1)*t**2*(1 - t)
+    end if
   end function hermite
-
-  pure real(wp) function hermite_slope(tab, i, x, y, d) result(f)
-    type(measured_table_type), intent(in) :: tab
-    integer, intent(in) :: i
-    real(wp), intent(in) :: x, y(:), d(:)
-    real(wp) :: h, t
-    h = tab%x(i+1) - tab%x(i)
-    t = (x - tab%x(i))/h
-    f = (y(i+1) - y(i))*6*t*(1 - t)/h + d(i)*(1 - t)*(1 - 3*t) + d(i+1)*t*(3*t - 2)
-  end function hermite_slope
 
   !> Fritsch-Carlson slopes with the three-point end conditions (as scipy's PchipInterpolator).
   pure subroutine pchip_slopes(x, y, d)

@@ -12,10 +12,8 @@ module udmap_damper_type
     & cf_only_ramp, steady_loop, loop_moment, loop_stiffness
   use udmap_damper_stiffness_table, only: stiffness_table_type, build_stiffness_table, &
     & table_stiffness, table_stiffness_derivative, table_stiffness_exact, table_energy_slope
-  use udmap_damper_jenkins, only: jenkins_stiffness, jenkins_stiffness_derivative, &
-    & jenkins_loop_moment
-  use udmap_damper_measured, only: measured_table_type, new_measured_table, &
-    & measured_stiffness, measured_stiffness_derivative
+  use udmap_damper_jenkins, only: jenkins_stiffness, jenkins_loop_moment
+  use udmap_damper_measured, only: measured_table_type, new_measured_table, measured_stiffness
   implicit none
   private
   public :: asymmetric_params_type, damper_type
@@ -53,7 +51,7 @@ module udmap_damper_type
     !> Table kind.
     type(measured_table_type) :: measured
   contains
-    !> k(gamma) [N m/rad] for an amplitude gamma [rad] (tens of ns).
+    !> k(gamma) [N m/rad] for an amplitude gamma [rad] (tens of ns), or dk/dgamma.
     procedure :: stiffness
     !> dk/dgamma [N m/rad^2] (closed forms; no interpolation).
     procedure :: stiffness_derivative
@@ -181,16 +179,10 @@ contains
     type(damper_type), intent(out) :: damper
     real(wp), intent(in) :: kt, M_slip
     type(error_type), allocatable, intent(out) :: error
-    if (.not. (kt > 0 .and. kt <= huge(kt))) then
-      call fatal_error(error, "jenkins damper: 'kt' must be a positive finite number", &
-        & UDMAP_EINPUT)
-      return
-    end if
-    if (.not. (M_slip > 0 .and. M_slip <= huge(M_slip))) then
-      call fatal_error(error, "jenkins damper: 'M_slip' must be a positive finite number", &
-        & UDMAP_EINPUT)
-      return
-    end if
+    call check_positive(kt, "jenkins damper: 'kt'", "", error)
+    if (allocated(error)) return
+    call check_positive(M_slip, "jenkins damper: 'M_slip'", "", error)
+    if (allocated(error)) return
     damper%kind = DAMPER_JENKINS
     damper%kt = kt
     damper%M_slip = M_slip
@@ -232,22 +224,30 @@ contains
   end subroutine new_table_damper
 
   !> k(gamma) for an amplitude gamma [rad]. gamma <= 0 (or NaN) gives the small-amplitude
-  !> limit; a table without delta_M is held at its last row beyond it (see gamma_max).
-  elemental function stiffness(self, gamma) result(k)
+  !> limit; a table without delta_M is held at its last row beyond it (see gamma_max). With
+  !> derivative = .true. dk/dgamma instead (see stiffness_derivative).
+  elemental function stiffness(self, gamma, derivative) result(k)
     class(damper_type), intent(in) :: self
     real(wp), intent(in) :: gamma
+    logical, intent(in), optional :: derivative
     complex(wp) :: k
+    logical :: slope
+    slope = .false.
+    if (present(derivative)) slope = derivative
     select case (self%kind)
     case (DAMPER_ASYMMETRIC)
-      if (gamma > 0) then
+      if (slope) then
+        k = 0
+        if (gamma > 0) k = table_stiffness_derivative(self%table, gamma/self%CF_scale)/self%CF_scale
+      else if (gamma > 0) then
         k = table_stiffness(self%table, gamma/self%CF_scale)
       else
         k = self%table%k_small
       end if
     case (DAMPER_JENKINS)
-      k = jenkins_stiffness(self%kt, self%M_slip, gamma)
+      k = jenkins_stiffness(self%kt, self%M_slip, gamma, slope)
     case (DAMPER_TABLE)
-      k = measured_stiffness(self%measured, gamma)
+      k = measured_stiffness(self%measured, gamma, slope)
     case default
       k = 0
     end select
@@ -259,17 +259,7 @@ contains
     class(damper_type), intent(in) :: self
     real(wp), intent(in) :: gamma
     complex(wp) :: dk
-    select case (self%kind)
-    case (DAMPER_ASYMMETRIC)
-      dk = 0
-      if (gamma > 0) dk = table_stiffness_derivative(self%table, gamma/self%CF_scale)/self%CF_scale
-    case (DAMPER_JENKINS)
-      dk = jenkins_stiffness_derivative(self%kt, self%M_slip, gamma)
-    case (DAMPER_TABLE)
-      dk = measured_stiffness_derivative(self%measured, gamma)
-    case default
-      dk = 0
-    end select
+    dk = self%stiffness(gamma, derivative=.true.)
   end function stiffness_derivative
 
   !> k(gamma) without the table: for the asymmetric kind a loop traced at this amplitude from
@@ -283,7 +273,7 @@ contains
     type(loop_type) :: lp
     type(loop_workspace_type) :: work
     k = 0
-    call check_amplitude(gamma, "gamma", error)
+    call check_positive(gamma, "damper: amplitude 'gamma'", " [rad]", error)
     if (allocated(error)) return
     if (self%kind /= DAMPER_ASYMMETRIC) then
       k = self%stiffness(gamma)
@@ -307,11 +297,8 @@ contains
         & "(parameter 'CF')", UDMAP_EINPUT)
       return
     end if
-    if (.not. (CF > 0 .and. CF <= huge(CF))) then
-      call fatal_error(error, "set_CF: parameter 'CF' must be a positive finite number", &
-        & UDMAP_EINPUT)
-      return
-    end if
+    call check_positive(CF, "set_CF: parameter 'CF'", "", error)
+    if (allocated(error)) return
     self%params%CF = CF
     self%CF_scale = CF/self%CF_ref
     call update_scaled(self)
@@ -330,7 +317,7 @@ contains
     type(loop_workspace_type) :: work
     integer :: i
     M_r = 0
-    call check_amplitude(gamma_a, "gamma_a", error)
+    call check_positive(gamma_a, "damper: amplitude 'gamma_a'", " [rad]", error)
     if (allocated(error)) return
     if (size(M_r) /= size(tau)) then
       call fatal_error(error, "loop: arrays 'tau' and 'M_r' differ in length", UDMAP_EINPUT)
@@ -399,15 +386,15 @@ contains
     self%M_min = self%CF_scale*self%table%base%M_min
   end subroutine update_scaled
 
-  pure subroutine check_amplitude(gamma, name, error)
-    real(wp), intent(in) :: gamma
-    character(len=*), intent(in) :: name
+  !> An error "<what> must be a positive finite number<unit>" unless 0 < x < infinity.
+  pure subroutine check_positive(x, what, unit, error)
+    real(wp), intent(in) :: x
+    character(len=*), intent(in) :: what, unit
     type(error_type), allocatable, intent(out) :: error
-    if (.not. (gamma > 0 .and. gamma <= huge(gamma))) then
-      call fatal_error(error, "damper: amplitude '"//name//"' must be a positive finite "// &
-        & "number [rad]", UDMAP_EINPUT)
+    if (.not. (x > 0 .and. x <= huge(x))) then
+      call fatal_error(error, what//" must be a positive finite number"//unit, UDMAP_EINPUT)
     end if
-  end subroutine check_amplitude
+  end subroutine check_positive
 
   !> k(gamma) evaluated exactly from the traced topology intervals (asymmetric kind; a few
   !> hundred ns, no interpolation); the other kinds return stiffness.

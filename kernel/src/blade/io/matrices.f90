@@ -40,23 +40,13 @@ contains
         & itoa(am%ncols), UDMAP_EINPUT)
       return
     end if
-    call read_mtx(K_path, ak, error)
+    call read_like_M("K", K_path, ak)
     if (allocated(error)) return
-    if (ak%nrows /= n .or. ak%ncols /= n) then
-      call fatal_error(error, "K ('"//K_path//"') must be "//itoa(n)//" x "//itoa(n)// &
-        & " like M, got "//itoa(ak%nrows)//" x "//itoa(ak%ncols), UDMAP_EINPUT)
-      return
-    end if
     with_c = .false.
     if (present(C_path)) then
       with_c = .true.
-      call read_mtx(C_path, ac, error)
+      call read_like_M("C", C_path, ac)
       if (allocated(error)) return
-      if (ac%nrows /= n .or. ac%ncols /= n) then
-        call fatal_error(error, "C ('"//C_path//"') must be "//itoa(n)//" x "//itoa(n)// &
-          & " like M, got "//itoa(ac%nrows)//" x "//itoa(ac%ncols), UDMAP_EINPUT)
-        return
-      end if
     end if
     if (present(sK_path)) then
       call read_row(sK_path, "stress_K", sk)
@@ -99,6 +89,18 @@ contains
     call finish_import(blade, gamma_dof, exc_dof, zeta, error, sk, sm, kept_modes)
 
   contains
+
+    !> The matrix `name` from `path`, n x n like M.
+    subroutine read_like_M(name, path, a)
+      character(len=*), intent(in) :: name, path
+      type(mtx_type), intent(out) :: a
+      call read_mtx(path, a, error)
+      if (allocated(error)) return
+      if (a%nrows /= n .or. a%ncols /= n) then
+        call fatal_error(error, name//" ('"//path//"') must be "//itoa(n)//" x "//itoa(n)// &
+          & " like M, got "//itoa(a%nrows)//" x "//itoa(a%ncols), UDMAP_EINPUT)
+      end if
+    end subroutine read_like_M
 
     subroutine read_row(path, name, s)
       character(len=*), intent(in) :: path, name

@@ -87,21 +87,12 @@ contains
     end select
 
     ! Size line after comments and blank lines.
-    call next_data_line(ios)
-    if (ios /= 0) then
-      call fail("file ends before the size line")
-      return
-    end if
-    call tokens(line, tok, ntok)
     if (coordinate) then
-      if (ntok /= 3) then
-        call fail("bad size line '"//trim(line)//"', expected 'rows columns entries'")
-        return
-      end if
-    else if (ntok /= 2) then
-      call fail("bad size line '"//trim(line)//"', expected 'rows columns'")
-      return
+      call next_tokens(0, 3, "bad size line '", "', expected 'rows columns entries'", ok1)
+    else
+      call next_tokens(0, 2, "bad size line '", "', expected 'rows columns'", ok1)
     end if
+    if (.not.ok1) return
     call parse_int(tok(1), a%nrows, ok1)
     call parse_int(tok(2), a%ncols, ok2)
     if (.not.(ok1 .and. ok2)) then
@@ -140,17 +131,13 @@ contains
     i = 1
     j = 1
     do k = 1, nnz
-      call next_data_line(ios)
-      if (ios /= 0) then
-        call fail("file ends after "//itoa(k-1)//" of "//itoa(nnz)//" entries")
-        return
-      end if
-      call tokens(line, tok, ntok)
       if (coordinate) then
-        if (ntok /= 3) then
-          call fail("expected 'row column value', got '"//trim(line)//"'")
-          return
-        end if
+        call next_tokens(k, 3, "expected 'row column value', got '", "'", ok1)
+      else
+        call next_tokens(k, 1, "expected one value per line, got '", "'", ok1)
+      end if
+      if (.not.ok1) return
+      if (coordinate) then
         call parse_int(tok(1), i, ok1)
         call parse_int(tok(2), j, ok2)
         if (.not.(ok1 .and. ok2)) then
@@ -165,11 +152,6 @@ contains
         if (a%symmetric .and. i < j) then
           call fail("entry ("//itoa(i)//", "//itoa(j)//") above the diagonal in a symmetric "// &
             & "file (only the lower triangle may be listed)")
-          return
-        end if
-      else
-        if (ntok /= 1) then
-          call fail("expected one value per line, got '"//trim(line)//"'")
           return
         end if
       end if
@@ -206,6 +188,29 @@ contains
         & message, UDMAP_EINPUT)
       close(unit)
     end subroutine fail
+
+    !> The size line (entry = 0) or the line of entry `entry`, split into tok(1:ntok);
+    !> ok = .false. after a failure: the file ends or the line has not `count` tokens
+    !> (message head, the line, tail).
+    subroutine next_tokens(entry, count, head, tail, ok)
+      integer, intent(in) :: entry, count
+      character(len=*), intent(in) :: head, tail
+      logical, intent(out) :: ok
+      integer :: ios
+      ok = .false.
+      call next_data_line(ios)
+      if (ios /= 0) then
+        if (entry == 0) then
+          call fail("file ends before the size line")
+        else
+          call fail("file ends after "//itoa(entry-1)//" of "//itoa(nnz)//" entries")
+        end if
+        return
+      end if
+      call tokens(line, tok, ntok)
+      ok = ntok == count
+      if (.not.ok) call fail(head//trim(line)//tail)
+    end subroutine next_tokens
 
     !> Next line that is neither a comment nor blank; ios /= 0 at the end of the file.
     subroutine next_data_line(ios)

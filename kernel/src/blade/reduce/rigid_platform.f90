@@ -92,20 +92,13 @@ contains
     end do
     allocate(role(m), source=free)
     do k = 1, size(platform_nodes)
-      i = find(platform_nodes(k))
-      if (i == 0) then
-        call fatal_error(error, "platform_nodes: node "//itoa(platform_nodes(k))// &
-          & " is not in the model")
-        return
-      end if
+      call find_listed(platform_nodes(k), "platform_nodes", i)
+      if (allocated(error)) return
       role(i) = on_platform
     end do
     do k = 1, size(clamp_nodes)
-      i = find(clamp_nodes(k))
-      if (i == 0) then
-        call fatal_error(error, "clamp_nodes: node "//itoa(clamp_nodes(k))//" is not in the model")
-        return
-      end if
+      call find_listed(clamp_nodes(k), "clamp_nodes", i)
+      if (allocated(error)) return
       if (role(i) == on_platform) then
         call fatal_error(error, "clamp_nodes: node "//itoa(clamp_nodes(k))// &
           & " is also a platform node")
@@ -113,11 +106,8 @@ contains
       end if
       role(i) = clamped
     end do
-    e_node = find(exc_node)
-    if (e_node == 0) then
-      call fatal_error(error, "exc_node: node "//itoa(exc_node)//" is not in the model")
-      return
-    end if
+    call find_listed(exc_node, "exc_node", e_node)
+    if (allocated(error)) return
     if (role(e_node) /= free) then
       call fatal_error(error, "exc_node: node "//itoa(exc_node)//" is on the platform or clamped")
       return
@@ -216,6 +206,15 @@ contains
       map%idx(k) = col
       map%coef(k) = value
     end subroutine put
+
+    !> The index of node id, an error naming the input `name` when the model has no such node.
+    subroutine find_listed(id, name, i)
+      integer, intent(in) :: id
+      character(len=*), intent(in) :: name
+      integer, intent(out) :: i
+      i = find(id)
+      if (i == 0) call fatal_error(error, name//": node "//itoa(id)//" is not in the model")
+    end subroutine find_listed
 
     integer function find(id)
       integer, intent(in) :: id

@@ -17,20 +17,16 @@ module udmap_blade_reduce_sparse_coo
 
 contains
 
-  !> y = A x for the symmetric A stored by its lower triangle.
+  !> y = A x for the symmetric A stored by its lower triangle (sym_matmul with one row).
   pure subroutine sym_matvec(a, x, y)
     type(coo_type), intent(in) :: a
     real(wp), intent(in) :: x(:)
     real(wp), intent(out) :: y(:)
-    integer(8) :: k
-    integer :: i, j
-    y = 0
-    do k = 1, a%nnz
-      i = a%row(k)
-      j = a%col(k)
-      y(i) = y(i) + a%val(k)*x(j)
-      if (i /= j) y(j) = y(j) + a%val(k)*x(i)
-    end do
+    real(wp), allocatable :: x1(:, :), y1(:, :)
+    x1 = reshape(x, [1, size(x)])
+    allocate(y1(1, size(y)))
+    call sym_matmul(a, x1, y1)
+    y = y1(1, :)
   end subroutine sym_matvec
 
   !> Y = X A for row blocks: X(r, n) holds r row vectors (so each entry touches contiguous

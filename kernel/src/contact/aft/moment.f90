@@ -27,10 +27,9 @@ module udmap_contact_aft_moment
   !> Scratch storage reused between calls (one per caller; not shared between threads).
   type :: aft_workspace_type
     type(event_list_type) :: events
-    real(wp), allocatable :: bp_gamma(:), bp_M(:)   !< breakpoints of the current period
+    type(event_list_type) :: bp                     !< breakpoints of the current period
     integer, allocatable :: bp_seg(:)               !< segment of each breakpoint
     real(wp), allocatable :: bp_tau(:)              !< instant of each breakpoint (integration)
-    integer :: nbp = 0
     class(hysteretic_element_type), allocatable :: start   !< state at the start of a period
     integer :: calls = 0                            !< number of aft_moment calls (statistics)
     logical :: lift_off = .false.                   !< a contact opened in the last call
@@ -63,16 +62,9 @@ contains
     logical :: closed
 
     H = size(G)
-    ws%calls = ws%calls + 1
-    M = (0.0_wp, 0.0_wp)
-    M0 = 0.0_wp
     if (present(periods)) periods = 0
-    if (.not.(abs(G0) <= huge(1.0_wp)) .or. .not.all(abs(G) <= huge(1.0_wp))) then
-      call fatal_error(error, "aft: the waveform of gamma is not finite", UDMAP_EINPUT)
-      return
-    end if
-    call ensure_start(ws, element)
-    call waveform_extrema(G, tau, n)
+    call begin_call(element, ws, G0, G, M0, M, tau, n, error)
+    if (allocated(error)) return
 
     ws%lift_off = .false.
     call element%load(error)
@@ -121,16 +113,49 @@ contains
     end if
 
     ! exact: trace each monotone stretch between extrema, keeping the events
-    allocate(gam(n+1))
-    do k = 1, n + 1
-      gam(k) = G0 + waveform_value(0.0_wp, G, tau(k))
-    end do
-    gam(n+1) = gam(1)
+    gam = extremum_values(G0, G, tau, n)
     call trace_periods(element, ws, gam, n, min_periods, max_periods, loop_rtol, error, periods)
     if (allocated(error)) return
     ws%lift_off = element%lifted()
     call integrate_period(ws, G0, G, tau, gam, M0, M)
   end subroutine aft_moment
+
+  !> The start of aft_moment and aft_moment_jacobian: the call counted, M0 and M zero, the
+  !> waveform checked, the start state ready and the extrema tau(1..n+1) of gamma(tau).
+  subroutine begin_call(element, ws, G0, G, M0, M, tau, n, error)
+    class(hysteretic_element_type), intent(in) :: element
+    type(aft_workspace_type), intent(inout) :: ws
+    real(wp), intent(in) :: G0
+    complex(wp), intent(in) :: G(:)
+    real(wp), intent(out) :: M0
+    complex(wp), intent(out) :: M(:)
+    real(wp), allocatable, intent(out) :: tau(:)
+    integer, intent(out) :: n
+    type(error_type), allocatable, intent(out) :: error
+    ws%calls = ws%calls + 1
+    M = (0.0_wp, 0.0_wp)
+    M0 = 0.0_wp
+    n = 0
+    if (.not.(abs(G0) <= huge(1.0_wp)) .or. .not.all(abs(G) <= huge(1.0_wp))) then
+      call fatal_error(error, "aft: the waveform of gamma is not finite", UDMAP_EINPUT)
+      return
+    end if
+    call ensure_start(ws, element)
+    call waveform_extrema(G, tau, n)
+  end subroutine begin_call
+
+  !> The values of gamma at the extrema tau(1..n+1), the last equal to the first (a period).
+  pure function extremum_values(G0, G, tau, n) result(gam)
+    real(wp), intent(in) :: G0, tau(:)
+    complex(wp), intent(in) :: G(:)
+    integer, intent(in) :: n
+    real(wp) :: gam(n+1)
+    integer :: k
+    do k = 1, n + 1
+      gam(k) = G0 + waveform_value(0.0_wp, G, tau(k))
+    end do
+    gam(n+1) = gam(1)
+  end function extremum_values
 
   !> The element state kept at the start of a period: of the element's type.
   subroutine ensure_start(ws, element)
@@ -159,7 +184,7 @@ contains
     logical :: closed
     do p = 1, max(1, max_periods)
       call ws%start%copy_state(element)
-      ws%nbp = 0
+      ws%bp%n = 0
       call push_bp(ws, gam(1), element%moment(), 1)
       do k = 1, n
         ws%events%n = 0
@@ -217,31 +242,20 @@ contains
 
     H = size(G)
     ok = .false.
-    ws%calls = ws%calls + 1
-    M = (0.0_wp, 0.0_wp)
-    M0 = 0.0_wp
     JM = 0.0_wp
-    if (.not.(abs(G0) <= huge(1.0_wp)) .or. .not.all(abs(G) <= huge(1.0_wp))) then
-      call fatal_error(error, "aft: the waveform of gamma is not finite", UDMAP_EINPUT)
-      return
-    end if
-    call ensure_start(ws, element)
-    call waveform_extrema(G, tau, n)
+    call begin_call(element, ws, G0, G, M0, M, tau, n, error)
+    if (allocated(error)) return
     ! a constant waveform has no extrema to differentiate at: finite differences
     if (n == 0) return
-    allocate(gam(n+1))
-    do k = 1, n + 1
-      gam(k) = G0 + waveform_value(0.0_wp, G, tau(k))
-    end do
-    gam(n+1) = gam(1)
+    gam = extremum_values(G0, G, tau, n)
     call run(gam)
     if (allocated(error)) return
     lift = element%lifted()
     ws%lift_off = lift
     call integrate_period(ws, G0, G, tau, gam, M0, M, B)
-    nb = ws%nbp
-    bg = ws%bp_gamma(1:nb)
-    bM = ws%bp_M(1:nb)
+    nb = ws%bp%n
+    bg = ws%bp%gamma(1:nb)
+    bM = ws%bp%M(1:nb)
     bseg = ws%bp_seg(1:nb)
     allocate(c0(nb), sl(nb), Ac(nb, n), As(nb, n))
     call affine(bg, bM, c0, sl)
@@ -254,17 +268,17 @@ contains
       if (e == 1) gp(n+1) = gp(1)
       call run(gp)
       if (allocated(error)) return
-      if (ws%nbp /= nb) exit
+      if (ws%bp%n /= nb) exit
       if (any(ws%bp_seg(1:nb) /= bseg)) exit
-      call affine(ws%bp_gamma(1:nb), ws%bp_M(1:nb), Ac(:, e), As(:, e))
+      call affine(ws%bp%gamma(1:nb), ws%bp%M(1:nb), Ac(:, e), As(:, e))
       Ac(:, e) = (Ac(:, e) - c0)/d
       As(:, e) = (As(:, e) - sl)/d
       ok = e == n
     end do
     ! ws as the base trace left it (breakpoints and flags)
-    ws%nbp = nb
-    ws%bp_gamma(1:nb) = bg
-    ws%bp_M(1:nb) = bM
+    ws%bp%n = nb
+    ws%bp%gamma(1:nb) = bg
+    ws%bp%M(1:nb) = bM
     ws%bp_seg(1:nb) = bseg
     ws%lift_off = lift
     if (.not.ok) return
@@ -363,27 +377,22 @@ contains
     end subroutine affine
   end subroutine aft_moment_jacobian
 
+  !> Appends a breakpoint (gamma, M_r) on segment seg (the events' storage, the segments
+  !> alongside at the same capacity).
   pure subroutine push_bp(ws, g, Mr, seg)
     type(aft_workspace_type), intent(inout) :: ws
     real(wp), intent(in) :: g, Mr
     integer, intent(in) :: seg
-    real(wp), allocatable :: t1(:), t2(:)
-    integer, allocatable :: t3(:)
-    if (.not.allocated(ws%bp_gamma)) then
-      allocate(ws%bp_gamma(64), ws%bp_M(64), ws%bp_seg(64))
-    else if (ws%nbp >= size(ws%bp_gamma)) then
-      allocate(t1(2*ws%nbp), t2(2*ws%nbp), t3(2*ws%nbp))
-      t1(1:ws%nbp) = ws%bp_gamma(1:ws%nbp)
-      t2(1:ws%nbp) = ws%bp_M(1:ws%nbp)
-      t3(1:ws%nbp) = ws%bp_seg(1:ws%nbp)
-      call move_alloc(t1, ws%bp_gamma)
-      call move_alloc(t2, ws%bp_M)
-      call move_alloc(t3, ws%bp_seg)
+    integer, allocatable :: t(:)
+    call ws%bp%push(g, Mr)
+    if (.not.allocated(ws%bp_seg)) then
+      allocate(ws%bp_seg(size(ws%bp%gamma)))
+    else if (size(ws%bp_seg) < ws%bp%n) then
+      allocate(t(size(ws%bp%gamma)))
+      t(1:size(ws%bp_seg)) = ws%bp_seg
+      call move_alloc(t, ws%bp_seg)
     end if
-    ws%nbp = ws%nbp + 1
-    ws%bp_gamma(ws%nbp) = g
-    ws%bp_M(ws%nbp) = Mr
-    ws%bp_seg(ws%nbp) = seg
+    ws%bp_seg(ws%bp%n) = seg
   end subroutine push_bp
 
   !> Closed-form Fourier integral of the piecewise-linear-in-gamma moment over the period. On
@@ -410,17 +419,17 @@ contains
     ta = tau(1)
     call powers(ta, H, Pa)
     if (.not.allocated(ws%bp_tau)) then
-      allocate(ws%bp_tau(size(ws%bp_gamma)))
-    else if (size(ws%bp_tau) < ws%nbp) then
+      allocate(ws%bp_tau(size(ws%bp%gamma)))
+    else if (size(ws%bp_tau) < ws%bp%n) then
       deallocate(ws%bp_tau)
-      allocate(ws%bp_tau(size(ws%bp_gamma)))
+      allocate(ws%bp_tau(size(ws%bp%gamma)))
     end if
     ws%bp_tau(1) = ta
-    do i = 2, ws%nbp
+    do i = 2, ws%bp%n
       seg = ws%bp_seg(i)
-      ga = ws%bp_gamma(i-1); gb = ws%bp_gamma(i)
-      Ma = ws%bp_M(i-1); Mb = ws%bp_M(i)
-      if (i == ws%nbp .or. ws%bp_seg(min(i+1, ws%nbp)) /= seg) then
+      ga = ws%bp%gamma(i-1); gb = ws%bp%gamma(i)
+      Ma = ws%bp%M(i-1); Mb = ws%bp%M(i)
+      if (i == ws%bp%n .or. ws%bp_seg(min(i+1, ws%bp%n)) /= seg) then
         tb = tau(seg+1)   ! the extremum closing the segment
       else
         tb = solve_time(G0, G, gb, ta, tau(seg+1), gam(seg+1))

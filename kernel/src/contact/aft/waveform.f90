@@ -64,7 +64,7 @@ contains
     real(wp), allocatable :: ts(:), ds(:), roots(:), c1(:), s1(:), ch(:), sh(:), sa(:), cb(:)
     real(wp) :: gr, gi, cn
     complex(wp) :: z, zs
-    real(wp) :: a, b, fa, fb, x, fx, d2, best, v, scale, xn
+    real(wp) :: a, b, fa, fb, x, fx, best, v, scale, xn
     H = size(G)
     n = 0
     scale = sum(abs(G))
@@ -154,15 +154,7 @@ contains
         do k = 1, 100
           fx = waveform_slope(G, x, 1)
           if (abs(fx) <= 8.0_wp*epsilon(1.0_wp)*scale*H) exit
-          if ((fx > 0.0_wp) .eqv. (fa > 0.0_wp)) then
-            a = x; fa = fx
-          else
-            b = x; fb = fx
-          end if
-          d2 = waveform_slope(G, x, 2)
-          xn = 0.5_wp*(a + b)
-          if (d2 /= 0.0_wp) xn = x - fx/d2
-          if (.not.(xn > a .and. xn < b)) xn = 0.5_wp*(a + b)
+          call newton_step(x, fx, waveform_slope(G, x, 2), a, fa, b, fb, xn)
           if (xn == x .or. b - a <= 4.0_wp*epsilon(1.0_wp)*two_pi) exit
           x = xn
         end do
@@ -235,7 +227,7 @@ contains
   pure real(wp) function solve_time(G0, G, gt, ta, tb, gb) result(t)
     real(wp), intent(in) :: G0, gt, ta, tb, gb
     complex(wp), intent(in) :: G(:)
-    real(wp) :: a, b, fa, fb, ft, d, tn, tolf
+    real(wp) :: a, b, fa, fb, ft, tn, tolf
     integer :: it
     a = ta; b = tb
     fa = G0 + waveform_value(0.0_wp, G, a) - gt
@@ -257,17 +249,26 @@ contains
     do it = 1, 100
       ft = G0 + waveform_value(0.0_wp, G, t) - gt
       if (abs(ft) <= tolf) return
-      if ((ft > 0.0_wp) .eqv. (fa > 0.0_wp)) then
-        a = t; fa = ft
-      else
-        b = t; fb = ft
-      end if
-      d = waveform_slope(G, t, 1)
-      tn = 0.5_wp*(a + b)
-      if (d /= 0.0_wp) tn = t - ft/d
-      if (.not.(tn > a .and. tn < b)) tn = 0.5_wp*(a + b)
+      call newton_step(t, ft, waveform_slope(G, t, 1), a, fa, b, fb, tn)
       if (tn == t .or. b - a <= 2.0_wp*epsilon(1.0_wp)*max(abs(a), abs(b), 1.0_wp)) return
       t = tn
     end do
   end function solve_time
+
+  !> One safeguarded Newton step on f inside the bracket [a, b] (f(a), f(b) of opposite
+  !> signs): the bracket shrunk to x (f(x) = fx) keeping the sign change, then the Newton
+  !> step from x with slope dfx, or the midpoint when there is no slope or the step leaves it.
+  pure subroutine newton_step(x, fx, dfx, a, fa, b, fb, xn)
+    real(wp), intent(in) :: x, fx, dfx
+    real(wp), intent(inout) :: a, fa, b, fb
+    real(wp), intent(out) :: xn
+    if ((fx > 0.0_wp) .eqv. (fa > 0.0_wp)) then
+      a = x; fa = fx
+    else
+      b = x; fb = fx
+    end if
+    xn = 0.5_wp*(a + b)
+    if (dfx /= 0.0_wp) xn = x - fx/dfx
+    if (.not.(xn > a .and. xn < b)) xn = 0.5_wp*(a + b)
+  end subroutine newton_step
 end module udmap_contact_aft_waveform

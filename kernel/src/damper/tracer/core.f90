@@ -579,15 +579,21 @@ contains
 
   pure subroutine grow(rec)
     type(branch_record_type), intent(inout) :: rec
-    real(wp), allocatable :: tmp(:)
-    integer :: n
-    n = size(rec%gamma)
-    allocate(tmp(2*n)); tmp(1:n) = rec%gamma; call move_alloc(tmp, rec%gamma)
-    allocate(tmp(2*n)); tmp(1:n) = rec%gamma_p; call move_alloc(tmp, rec%gamma_p)
-    allocate(tmp(2*n)); tmp(1:n) = rec%M; call move_alloc(tmp, rec%M)
-    allocate(tmp(2*n)); tmp(1:n) = rec%M_p; call move_alloc(tmp, rec%M_p)
-    allocate(tmp(2*n)); tmp(1:n) = rec%slope; call move_alloc(tmp, rec%slope)
+    call double_size(rec%gamma)
+    call double_size(rec%gamma_p)
+    call double_size(rec%M)
+    call double_size(rec%M_p)
+    call double_size(rec%slope)
   end subroutine grow
+
+  !> Twice the storage, the entries kept.
+  pure subroutine double_size(a)
+    real(wp), allocatable, intent(inout) :: a(:)
+    real(wp), allocatable :: tmp(:)
+    allocate(tmp(2*size(a)))
+    tmp(1:size(a)) = a
+    call move_alloc(tmp, a)
+  end subroutine double_size
 
   pure subroutine grow_states(rec)
     type(branch_record_type), intent(inout) :: rec
