@@ -11,7 +11,9 @@ import numpy as np
 from .. import hbm
 from ..case import build_blade, build_contact, build_damper, build_model, load_case
 from ..errors import InputError
-from .output import emit, finite, point_json, print_points, print_rows
+from .output import (add_verdicts, add_warning, emit, finite, point_json, print_head,
+                     print_points, print_rows)
+from .units import header, rounded
 
 
 def _with_harmonics(case, args):
@@ -36,18 +38,18 @@ def cmd_table(args) -> None:
                        "k_im_plus": j["k_plus"].imag} for j in damper.jumps]}
 
     def table(d):
-        for key in ("gamma_b", "gamma_s", "M_max", "M_min", "k_stuck", "lift_off"):
-            print(f"{key:>8} = {d[key]}")
-        print_rows(["gamma [rad]", "k_re [N m/rad]", "k_im [N m/rad]"],
-                    [[p["gamma"], p["k_re"], p["k_im"]] for p in d["points"]],
-                    [".6e", ".8g", ".8g"])
+        print_head(d, skip=("jumps",))
+        print_rows([header("gamma"), header("k_re"), header("k_im")],
+                   [[p["gamma"], p["k_re"], p["k_im"]] for p in d["points"]],
+                   ["gamma", "k_re", "k_im"])
         if d["jumps"]:
             print(f"k(gamma) jumps at {len(d['jumps'])} amplitude(s) gamma_c (PHYSICS.md 2.5):")
-            print_rows(["gamma_c [rad]", "k_re(gamma_c-)", "k_im(gamma_c-)", "k_re(gamma_c+)",
-                         "k_im(gamma_c+)"],
-                        [[j["gamma_c"], j["k_re_minus"], j["k_im_minus"], j["k_re_plus"],
-                          j["k_im_plus"]] for j in d["jumps"]],
-                        [".10e", ".8g", ".8g", ".8g", ".8g"])
+            print_rows([header("gamma_c", "gamma_c"), header("k_re", "k_re(gamma_c-)"),
+                        header("k_im", "k_im(gamma_c-)"), header("k_re", "k_re(gamma_c+)"),
+                        header("k_im", "k_im(gamma_c+)")],
+                       [[j["gamma_c"], j["k_re_minus"], j["k_im_minus"], j["k_re_plus"],
+                         j["k_im_plus"]] for j in d["jumps"]],
+                       ["gamma_c", "k_re", "k_im", "k_re", "k_im"])
     emit(args, data, table)
 
 
@@ -58,12 +60,19 @@ def _summary(model, blade, damper) -> dict:
             "lift_off": bool(damper.lift_off)}
 
 
+def _verdicts(data: dict, case) -> None:
+    """hcf_reason on the points, against the F_lim the kernel judges them by (the smaller of
+    F_lim and F_lim_backbone), and the warnings above F_lim."""
+    add_verdicts(data, min(data["F_lim"], data["F_lim_backbone"]), case.analysis["sigma_all"])
+
+
 def cmd_backbone(args) -> None:
     case = _with_harmonics(load_case(args.case), args)
     blade, damper = build_blade(case), build_damper(case)
     model = build_model(case, blade, damper)
     data = _summary(model, blade, damper)
     data["points"] = [point_json(p) for p in model.backbone(args.forces)]
+    _verdicts(data, case)
     emit(args, data, print_points)
 
 
@@ -79,6 +88,7 @@ def cmd_response(args) -> None:
     data["f_exc"] = args.freq
     data["points"] = [point_json(dict(p, jump=False))
                       for p in model.response(args.freq, args.forces)]
+    _verdicts(data, case)
     emit(args, data, print_points)
 
 
@@ -93,13 +103,20 @@ def cmd_curves(args) -> None:
                         "branch": [int(x) for x in c["branch"]],
                         "part": [int(x) for x in c["part"]]} for c in curves]}
 
+    F_lim = model.limit_force()
+    for F in args.forces:
+        if F >= F_lim:
+            add_warning(data, f"F_E = {rounded(F)} N is at or above F_lim = {rounded(F_lim)} N: "
+                              "the damper slips all the cycle and cannot limit the response any "
+                              "more (not admissible)")
+
     def table(d):
         for c in d["curves"]:
-            print(f"F_E = {c['F_E']} N: {len(c['f'])} points")
-            print_rows(["f [Hz]", "gamma_P [rad]", "sigma_a [MPa]", "branch"],
-                        [[f, g, None if s is None else s / 1e6, b]
-                         for f, g, s, b in zip(c["f"], c["gamma_P"], c["sigma_a"], c["branch"])],
-                        [".6f", ".6e", ".4f", "d"])
+            print(f"F_E = {rounded(c['F_E'])} N: {len(c['f'])} points")
+            print_rows([header("f"), header("gamma_P"), header("sigma_a"), "branch"],
+                       [[f, g, s, str(b)]
+                        for f, g, s, b in zip(c["f"], c["gamma_P"], c["sigma_a"], c["branch"])],
+                       ["f", "gamma_P", "sigma_a", ""])
     emit(args, data, table)
 
 
@@ -112,6 +129,7 @@ def cmd_hbm(args) -> None:
     hbm.classify(blade, build_damper(case), a["f_min"], a["f_max"], a["sigma_all"], points)
     data = {"harmonics": args.harmonics, "variant": args.variant,
             "points": [point_json(p) for p in points]}
+    add_verdicts(data, None, a["sigma_all"])
     emit(args, data, print_points)
 
 
@@ -128,10 +146,9 @@ def cmd_dti(args) -> None:
                        for p in points]}
 
     def table(d):
-        print_rows(["F_E [N]", "f [Hz]", "gamma_1 [rad]", "sigma_1 [MPa]", "gamma_max [rad]"],
-                    [[p["F_E"], p["f"], p["gamma_1"],
-                      None if p["sigma_1"] is None else p["sigma_1"] / 1e6, p["gamma_max"]]
-                     for p in d["points"]], [".4g", ".6f", ".6e", ".4f", ".6e"])
+        keys = ("F_E", "f", "gamma_1", "sigma_1", "gamma_max")
+        print_rows([header(k) for k in keys], [[p[k] for k in keys] for p in d["points"]],
+                   list(keys))
     emit(args, data, table)
 
 
@@ -182,8 +199,8 @@ def cmd_reduce(args) -> None:
         rows = [[i + 1, ff[i] if i < len(ff) else None, fr[i] if i < len(fr) else None,
                  (fr[i] - ff[i]) / ff[i] if i < min(len(ff), len(fr)) and ff[i] > 0 else None]
                 for i in range(max(len(ff), len(fr)))]
-        print_rows(["mode", "full [Hz]", "reduced [Hz]", "rel. diff"], rows,
-                    ["d", ".9g", ".9g", ".2e"])
+        print_rows(["mode", "full [Hz]", "reduced [Hz]", "rel. diff [1]"], rows,
+                   ["d", "f", "f", ".2e"])
     emit(args, data, table)
 
 
