@@ -217,3 +217,24 @@ def harmonics_side_by_side(F_E, sigma_1, gamma_1, F_auto, sigma_auto, sigma_max_
     fig.savefig(path, dpi=150)
     plt.close(fig)
     return path
+
+
+def response_vs_force(F_E, gamma_P, F_lim: float, f_exc: float, path, *, regime=None,
+                      gamma_s: float | None = None, gamma_b: float | None = None) -> Path:
+    """Platform rotation amplitude against the excitation force at one excitation frequency
+    (``udmap response --plot``), log-log, with F_lim and 0.5 F_lim marked."""
+    fig, ax = plt.subplots(figsize=(7.2, 5.0))
+    F = np.asarray(F_E, float)
+    g = np.asarray([np.nan if x is None else x for x in gamma_P], float)
+    ax.loglog(F, g, "-", color="0.15", lw=0.8, label=f"$f_{{exc}}$ = {f_exc:g} Hz")
+    if regime is not None:
+        _regime_dots(ax, F, g, regime)
+    for value, name, ls in ((gamma_b, r"$\gamma_b$ (base cycle)", "-."),
+                            (gamma_s, r"$\gamma_s$ (end of stick)", ":")):
+        if value and value > 0:
+            ax.axhline(value, color="tab:purple", lw=1.0, ls=ls, label=name)
+    _force_limits(ax, F_lim)
+    ax.set_xlabel(r"excitation force $F_E$ [N]")
+    ax.set_ylabel(r"platform rotation amplitude $\gamma_P$ [rad]")
+    ax.legend(loc="upper left", fontsize=8)
+    return _finish(fig, ax, path, f"Response at the excitation frequency {f_exc:g} Hz")

@@ -2,6 +2,7 @@
 from __future__ import annotations
 
 import json
+import math
 import os
 import shutil
 from pathlib import Path
@@ -13,7 +14,9 @@ from ..case import build_blade, build_contact, build_damper, build_model, load_c
 from ..errors import InputError
 from .output import (add_verdicts, add_warning, emit, finite, point_json, print_head,
                      print_points, print_rows)
-from .units import header, rounded
+from .files import (CURVE_COLUMNS, POINT_COLUMNS, check_out, curve_rows, point_rows,
+                    write_outputs)
+from .units import header, rounded, units_of
 
 
 def _with_harmonics(case, args):
@@ -66,17 +69,45 @@ def _verdicts(data: dict, case) -> None:
     add_verdicts(data, min(data["F_lim"], data["F_lim_backbone"]), case.analysis["sigma_all"])
 
 
+def _finish(args, paths, data: dict, table, columns, rows, plot=None) -> None:
+    """Writes --out's files (when asked), then prints `data`."""
+    written = []
+    if paths:
+        data.setdefault("warnings", [])
+        data["units"] = units_of(data)
+        written = write_outputs(paths, data, columns, rows, plot)
+    emit(args, data, table)
+    if written and not args.json:
+        for path in written:
+            print(f"wrote {path}")
+
+
+def _limits(data: dict) -> float | None:
+    F = min(data["F_lim"], data["F_lim_backbone"])
+    return F if math.isfinite(F) else None
+
+
 def cmd_backbone(args) -> None:
+    paths = check_out(args, "backbone")
     case = _with_harmonics(load_case(args.case), args)
     blade, damper = build_blade(case), build_damper(case)
     model = build_model(case, blade, damper)
     data = _summary(model, blade, damper)
     data["points"] = [point_json(p) for p in model.backbone(args.forces)]
     _verdicts(data, case)
-    emit(args, data, print_points)
+
+    def plot(path):
+        from .. import plots
+        pts = data["points"]
+        plots.gg_diagram([p["F_E"] for p in pts], [p["sigma_a"] for p in pts],
+                         _limits(data) or max(p["F_E"] for p in pts),
+                         case.analysis["sigma_all"], path, F_marked=[p["F_E"] for p in pts],
+                         sigma_marked=[p["sigma_a"] for p in pts])
+    _finish(args, paths, data, print_points, POINT_COLUMNS, point_rows(data), plot)
 
 
 def cmd_response(args) -> None:
+    paths = check_out(args, "response")
     case = _with_harmonics(load_case(args.case), args)
     a = case.analysis
     if not a["f_min"] <= args.freq <= a["f_max"]:
@@ -89,10 +120,19 @@ def cmd_response(args) -> None:
     data["points"] = [point_json(dict(p, jump=False))
                       for p in model.response(args.freq, args.forces)]
     _verdicts(data, case)
-    emit(args, data, print_points)
+
+    def plot(path):
+        from .. import plots
+        pts = data["points"]
+        plots.response_vs_force([p["F_E"] for p in pts], [p["gamma_P"] for p in pts],
+                                _limits(data) or max(p["F_E"] for p in pts), args.freq, path,
+                                regime=[p["regime"] for p in pts], gamma_s=data["gamma_s"],
+                                gamma_b=data["gamma_b"])
+    _finish(args, paths, data, print_points, POINT_COLUMNS, point_rows(data), plot)
 
 
 def cmd_curves(args) -> None:
+    paths = check_out(args, "curves")
     case = _with_harmonics(load_case(args.case), args)
     model = build_model(case)
     layers = args.layers or case.analysis["layers"]
@@ -117,10 +157,16 @@ def cmd_curves(args) -> None:
                        [[f, g, s, str(b)]
                         for f, g, s, b in zip(c["f"], c["gamma_P"], c["sigma_a"], c["branch"])],
                        ["f", "gamma_P", "sigma_a", ""])
-    emit(args, data, table)
+
+    def plot(path):
+        from .. import plots
+        plots.response_curves(data["curves"], model.backbone(args.forces),
+                              case.analysis["f_min"], case.analysis["f_max"], path)
+    _finish(args, paths, data, table, CURVE_COLUMNS, curve_rows(data), plot)
 
 
 def cmd_hbm(args) -> None:
+    paths = check_out(args, "hbm")
     case = load_case(args.case)
     blade = build_blade(case)
     a = case.analysis
@@ -130,7 +176,16 @@ def cmd_hbm(args) -> None:
     data = {"harmonics": args.harmonics, "variant": args.variant,
             "points": [point_json(p) for p in points]}
     add_verdicts(data, None, a["sigma_all"])
-    emit(args, data, print_points)
+
+    def plot(path):
+        from .. import plots
+        pts = data["points"]
+        F_lim = pts[0].get("F_lim") if pts else None
+        plots.gg_diagram([p["F_E"] for p in pts], [p["sigma_a"] for p in pts],
+                         F_lim if F_lim and math.isfinite(F_lim) else max(args.forces),
+                         a["sigma_all"], path, F_marked=[p["F_E"] for p in pts],
+                         sigma_marked=[p["sigma_a"] for p in pts])
+    _finish(args, paths, data, print_points, POINT_COLUMNS, point_rows(data), plot)
 
 
 def cmd_dti(args) -> None:

@@ -92,6 +92,7 @@ def emit(args, data: dict, table) -> None:
     for text in data["warnings"]:
         print(f"udmap: warning: {text}", file=sys.stderr)
     if args.json:
+        data.pop("units", None)  # last, after the warnings
         data["units"] = units_of(data)
         try:  # all or nothing: a non-finite number is a numerical failure, not half a file
             text = json.dumps(data, indent=2, allow_nan=False)
