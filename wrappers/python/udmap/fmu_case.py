@@ -217,6 +217,9 @@ def write_case_fmu(case: Case, out: Path, fmi: int = 2, source: str = "") -> Pat
             for name in sorted(entries):
                 if not name.endswith("/"):
                     zf.writestr(name, entries[name])
+        mask = os.umask(0)
+        os.umask(mask)
+        os.chmod(tmp, 0o666 & ~mask)  # as any file the user creates (mkstemp makes it 0600)
         os.replace(tmp, out)
     finally:
         if os.path.exists(tmp):
@@ -227,6 +230,8 @@ def write_case_fmu(case: Case, out: Path, fmi: int = 2, source: str = "") -> Pat
 def cmd_fmu(args) -> None:
     if not args.out.endswith(".fmu"):
         raise InputError(f"--out must name a .fmu file, got {args.out!r}")
+    if Path(args.out).exists() and not args.force:
+        raise InputError(f"--out {args.out} exists: pass --force to overwrite it")
     case = load_case(args.case)
     path = write_case_fmu(case, Path(args.out), args.fmi, source=Path(args.case).name)
     if args.json:
@@ -242,6 +247,7 @@ def add_fmu_parser(sub) -> None:
     p.add_argument("case", metavar="CASE", help="case file (JSON)")
     p.add_argument("--out", required=True, help="the FMU to write (NAME.fmu)")
     p.add_argument("--fmi", type=int, choices=(2, 3), default=2, help="FMI version (2 or 3)")
+    p.add_argument("--force", action="store_true", help="overwrite an existing --out file")
     p.add_argument("--json", action="store_true", help="print JSON on stdout")
     p.set_defaults(func=cmd_fmu)
 
