@@ -166,3 +166,41 @@ def test_doe_meta_and_parquet_units(tmp_path):
         assert schema.field(name).metadata == {b"unit": unit.encode()}
     assert schema.field("status").metadata is None
     assert pq.read_table(tmp_path / "d.parquet").num_rows == 4
+
+
+@pytest.mark.parametrize("damper,extra", [
+    ({}, []), ({}, ["--harmonics", "3"]), ({"mu": 0.6}, []), ({"mu": 0.6}, ["--harmonics", "2"]),
+    ({}, ["hbm"])])
+def test_hcf_reason_agrees_with_hcf_ok(damper, extra, write_case, capsys):
+    """On blade A and a lift-off variant (F_lim_backbone < F_lim), one to several harmonics and
+    harmonic balance: the reason is "ok: ..." exactly when hcf_ok holds, and a warning comes
+    exactly with the forces at or above F_lim (regime 3)."""
+    path = write_case("c", damper=damper)
+    command = "hbm" if extra == ["hbm"] else "backbone"
+    forces = "0.3,3,11,24" if command == "hbm" else "0.3,1,3,6,9,11,15,20,21.5,24"
+    args = [command, str(path), "--forces", forces, "--json"]
+    assert main(args + ([] if command == "hbm" else extra)) == 0
+    data = json.loads(capsys.readouterr()[0])
+    for p in data["points"]:
+        assert p["hcf_reason"].startswith("ok: ") == p["hcf_ok"], p
+    above = [p["F_E"] for p in data["points"] if p["regime"] == 3]
+    assert len(data["warnings"]) == len(above)
+    assert all(f"F_E = {F:g} N" in w for F, w in zip(above, data["warnings"]))
+
+
+def test_curves_without_a_known_F_lim(tmp_path, capsys):
+    """A measured table without delta_M has no F_lim: curves answers as before, no warning."""
+    from fmu_harness import write_matrices_table_case
+    path = write_matrices_table_case(tmp_path)
+    data = json.loads(path.read_text())
+    del data["damper"]["delta_M"]
+    path.write_text(json.dumps(data))
+    assert main(["curves", str(path), "--forces", "2,5", "--layers", "8", "--json"]) == 0
+    out, err = capsys.readouterr()
+    assert json.loads(out)["warnings"] == [] and "warning" not in err
+
+
+def test_demo_summary_gives_its_units(tmp_path):
+    from udmap.demo import run_demo
+    run_demo(None, tmp_path, forces=[1.0, 30.0], quiet=True)
+    check_json(dict(json.loads((tmp_path / "summary.json").read_text()), warnings=[]))

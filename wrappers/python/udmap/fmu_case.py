@@ -188,6 +188,26 @@ def _html(what: str, token: str, fmi: int, rows: list, absent: set) -> bytes:
     return "".join(out).encode()
 
 
+def write_atomic(path: Path, writer, prefix: str | None = None) -> Path:
+    """Calls ``writer(tmp)`` on a temporary file beside `path`, gives it mode 0666 less the
+    umask (as any file the user creates; mkstemp makes it 0600) and renames it to `path`: the
+    file is written whole or not at all. Also the command line's --out files."""
+    path = Path(path)
+    fd, tmp = tempfile.mkstemp(prefix=prefix or f".{path.stem}-", suffix=path.suffix,
+                               dir=path.parent)
+    os.close(fd)
+    try:
+        writer(Path(tmp))
+        mask = os.umask(0)
+        os.umask(mask)
+        os.chmod(tmp, 0o666 & ~mask)
+        os.replace(tmp, path)
+    finally:
+        if os.path.exists(tmp):
+            os.unlink(tmp)
+    return path
+
+
 def write_case_fmu(case: Case, out: Path, fmi: int = 2, source: str = "") -> Path:
     """Writes the FMU of `case` to `out` (whole or not at all); returns its path."""
     case = matrices_case(case)
@@ -210,20 +230,13 @@ def write_case_fmu(case: Case, out: Path, fmi: int = 2, source: str = "") -> Pat
         entries[f"resources/{name}"] = data
     out = Path(out)
     out.parent.mkdir(parents=True, exist_ok=True)
-    fd, tmp = tempfile.mkstemp(prefix=".udmap-fmu-", suffix=".tmp", dir=out.parent)
-    os.close(fd)
-    try:
+
+    def write_zip(tmp: Path) -> None:
         with zipfile.ZipFile(tmp, "w", zipfile.ZIP_DEFLATED) as zf:
             for name in sorted(entries):
                 if not name.endswith("/"):
                     zf.writestr(name, entries[name])
-        mask = os.umask(0)
-        os.umask(mask)
-        os.chmod(tmp, 0o666 & ~mask)  # as any file the user creates (mkstemp makes it 0600)
-        os.replace(tmp, out)
-    finally:
-        if os.path.exists(tmp):
-            os.unlink(tmp)
+    write_atomic(out, write_zip, prefix=".udmap-fmu-")
     return out
 
 

@@ -11,7 +11,7 @@ import numpy as np
 
 from .. import hbm
 from ..case import build_blade, build_contact, build_damper, build_model, load_case
-from ..errors import InputError
+from ..errors import InputError, UdmapError
 from .output import (add_verdicts, add_warning, emit, finite, point_json, print_head,
                      print_points, print_rows)
 from .files import (CURVE_COLUMNS, POINT_COLUMNS, check_out, curve_rows, point_rows,
@@ -65,8 +65,9 @@ def _summary(model, blade, damper) -> dict:
 
 def _verdicts(data: dict, case) -> None:
     """hcf_reason on the points, against the F_lim the kernel judges them by (the smaller of
-    F_lim and F_lim_backbone), and the warnings above F_lim."""
-    add_verdicts(data, min(data["F_lim"], data["F_lim_backbone"]), case.analysis["sigma_all"])
+    F_lim and F_lim_backbone; F_lim with more than one harmonic), and the warnings above it."""
+    add_verdicts(data, min(data["F_lim"], data["F_lim_backbone"]), case.analysis["sigma_all"],
+                 F_lim_multi=data["F_lim"])
 
 
 def _finish(args, paths, data: dict, table, columns, rows, plot=None) -> None:
@@ -84,7 +85,7 @@ def _finish(args, paths, data: dict, table, columns, rows, plot=None) -> None:
 
 def _limits(data: dict) -> float | None:
     F = min(data["F_lim"], data["F_lim_backbone"])
-    return F if math.isfinite(F) else None
+    return F if math.isfinite(F) and F < 1e300 else None
 
 
 def cmd_backbone(args) -> None:
@@ -143,7 +144,10 @@ def cmd_curves(args) -> None:
                         "branch": [int(x) for x in c["branch"]],
                         "part": [int(x) for x in c["part"]]} for c in curves]}
 
-    F_lim = model.limit_force()
+    try:
+        F_lim = model.limit_force()
+    except UdmapError:  # no slip moment range (a table without delta_M): no limit known
+        F_lim = math.inf
     for F in args.forces:
         if F >= F_lim:
             add_warning(data, f"F_E = {rounded(F)} N is at or above F_lim = {rounded(F_lim)} N: "

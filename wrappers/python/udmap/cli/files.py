@@ -7,11 +7,10 @@ import csv
 import io
 import json
 import math
-import os
-import tempfile
 from pathlib import Path
 
 from ..errors import InputError, UdmapError
+from ..fmu_case import write_atomic
 
 #: The CSV columns of a point of backbone, response and hbm (JSON fields, SI).
 POINT_COLUMNS = ("F_E", "gamma_P", "f_res", "sigma_a", "u_E", "k_re", "k_im", "gamma_max",
@@ -45,27 +44,6 @@ def check_out(args, name: str) -> list[Path] | None:
         raise InputError(f"--out {out}: {', '.join(existing)} exist(s): pass --force to "
                          "overwrite")
     return paths
-
-
-def _umask() -> int:
-    mask = os.umask(0)
-    os.umask(mask)
-    return mask
-
-
-def write_atomic(path: Path, writer) -> Path:
-    """Calls ``writer(tmp_path)`` then moves the file to `path`, with mode 0666 less the umask."""
-    path = Path(path)
-    fd, tmp = tempfile.mkstemp(prefix=f".{path.stem}-", suffix=path.suffix, dir=path.parent)
-    os.close(fd)
-    try:
-        writer(Path(tmp))
-        os.chmod(tmp, 0o666 & ~_umask())
-        os.replace(tmp, path)
-    finally:
-        if os.path.exists(tmp):
-            os.unlink(tmp)
-    return path
 
 
 def _cell(x) -> str:

@@ -44,7 +44,7 @@ def hcf_reason(p: dict, F_lim, sigma_all) -> str:
     sigma_max with more than one harmonic) at most sigma_all, and F_E at most 0.5 F_lim; by how
     much each failing criterion is exceeded, or the margins when both hold."""
     stress = p.get("hcf_stress") or "sigma_a"
-    half = None if F_lim is None or not math.isfinite(F_lim) else 0.5 * F_lim
+    half = 0.5 * F_lim if _known(F_lim) else None
     failed, margins = [], []
     if half is None:
         failed.append("F_lim unknown: F_E <= 0.5 F_lim cannot be checked")
@@ -68,12 +68,21 @@ def hcf_reason(p: dict, F_lim, sigma_all) -> str:
     return "; ".join(failed) if failed else "not admissible"
 
 
-def add_verdicts(data: dict, F_lim, sigma_all) -> None:
-    """hcf_reason on every point of `data`; a warning per force at or above F_lim."""
+def _known(F_lim) -> bool:
+    """F_lim is known (the kernel gives the largest double when it cannot be computed)."""
+    return F_lim is not None and math.isfinite(F_lim) and F_lim < 1e300
+
+
+def add_verdicts(data: dict, F_lim, sigma_all, F_lim_multi=None) -> None:
+    """hcf_reason on every point of `data`; a warning per force at or above F_lim. The points
+    are judged against `F_lim` (their own ``F_lim`` if they have one), those with more than one
+    harmonic against `F_lim_multi` when given, as the kernel judges them."""
     for p in data["points"]:
         limit = p.get("F_lim", F_lim)
+        if F_lim_multi is not None and (p.get("harmonics") or 1) > 1:
+            limit = F_lim_multi
         p["hcf_reason"] = hcf_reason(p, limit, sigma_all)
-        if limit is not None and math.isfinite(limit) and p["F_E"] >= limit:
+        if _known(limit) and p["F_E"] >= limit:
             add_warning(data, f"F_E = {rounded(p['F_E'])} N is at or above F_lim = "
                               f"{rounded(limit)} N: the damper slips all the cycle and cannot "
                               "limit the response any more (not admissible)")

@@ -15,7 +15,7 @@ UNITS = {
     "F_E": "N", "F_lim": "N", "F_lim_backbone": "N", "F_adm": "N",
     "gamma": "rad", "gamma_P": "rad", "gamma_b": "rad", "gamma_s": "rad", "gamma_c": "rad",
     "gamma_max": "rad", "gamma_1": "rad", "gamma_h": "rad", "roots": "rad",
-    "f": "Hz", "f_res": "Hz", "f_exc": "Hz", "f1_bare": "Hz", "peak_f": "Hz",
+    "f": "Hz", "f_res": "Hz", "f_exc": "Hz", "f1_bare": "Hz", "f_stuck": "Hz", "peak_f": "Hz",
     "freqs_full": "Hz", "freqs_reduced": "Hz",
     "sigma_a": "Pa", "sigma_max": "Pa", "sigma_1": "Pa", "sigma_h": "Pa", "sigma_all": "Pa",
     "u_E": "m",
