@@ -80,7 +80,7 @@ def gg_diagram(F_E, sigma_a, F_lim: float, sigma_all: float, path, *, regime=Non
                alpha=0.07, lw=0)
     _force_limits(ax, F_lim)
     ax.set_xlabel(r"proof excitation force $F_E$ [N]")
-    ax.set_ylabel(r"peak alternating stress $\sigma_a$ at the airfoil root [MPa]")
+    ax.set_ylabel(r"peak alternating stress $\sigma_a$ at the airfoil-platform junction [MPa]")
     ax.legend(loc="upper left", fontsize=9)
     return _finish(fig, ax, path, "GG design diagram (damper performance, witness stress)")
 
@@ -193,7 +193,8 @@ def harmonics_side_by_side(F_E, sigma_1, gamma_1, F_auto, sigma_auto, sigma_max_
              label=r"$\sigma_a$, auto H")
     ax1.plot(F_auto, np.asarray(sigma_max_auto) / 1e6, "s--", color="tab:purple", ms=3.0,
              lw=1.0, label=r"$\sigma_{max}$, auto H (HCF criterion)")
-    ax1.axhline(sigma_all / 1e6, color="0.3", lw=1.0, ls=":")
+    ax1.axhline(sigma_all / 1e6, color="0.3", lw=1.0, ls=":",
+                label=r"$\sigma_{a,all}$ = " + f"{sigma_all / 1e6:g} MPa")
     ax1.set_xlabel(r"$F_E$ [N]")
     ax1.set_ylabel("stress amplitude at the junction [MPa]")
     _force_limits(ax1, F_lim)
