@@ -86,3 +86,17 @@ def test_out_refuses_to_overwrite_without_force(tmp_path, capsys):
 def test_plot_needs_out(capsys):
     status, out, err = _main(["backbone", CASE, "--forces", "1", "--plot"], capsys)
     assert status == 2 and "--plot needs --out" in err
+
+
+def test_curves_plot_without_a_backbone_line(tmp_path, capsys):
+    """A measured table without delta_M: the backbone beyond the table's last row is not
+    known; the curves are plotted without it."""
+    from fmu_harness import write_matrices_table_case
+    path = write_matrices_table_case(tmp_path)
+    data = json.loads(path.read_text())
+    del data["damper"]["delta_M"]
+    path.write_text(json.dumps(data))
+    status, _, err = _main(["curves", path, "--forces", "2,5", "--layers", "8", "--out",
+                            tmp_path / "o", "--plot"], capsys)
+    assert status == 0, err
+    assert (tmp_path / "o" / "curves.png").stat().st_size > 10000

@@ -164,8 +164,16 @@ def cmd_curves(args) -> None:
 
     def plot(path):
         from .. import plots
-        plots.response_curves(data["curves"], model.backbone(args.forces),
-                              case.analysis["f_min"], case.analysis["f_max"], path)
+        g = [x for c in data["curves"] for x in c["gamma_P"]]
+        try:  # the peaks and the backbone line where the model gives them
+            peaks = model.backbone(args.forces)
+            g += [p["gamma_P"] for p in peaks if not p["unbounded"]]
+            g_line = np.geomspace(min(g), 1.5 * max(g), 240)
+            line = (g_line, model.backbone_curve(g_line)[1])
+        except UdmapError:
+            peaks, line = [], None
+        plots.response_curves(data["curves"], peaks, case.analysis["f_min"],
+                              case.analysis["f_max"], path, backbone_curve=line)
     _finish(args, paths, data, table, CURVE_COLUMNS, curve_rows(data), plot)
 
 
