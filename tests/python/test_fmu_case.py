@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import json
 import os
+import stat
 import subprocess
 import sys
 import zipfile
@@ -231,3 +232,21 @@ def test_resources_are_checked_at_instantiation(beam_case, version, tmp_path):
     assert not instantiate(good)
     assert "udmap-case.txt, line" in messages[-1] and "damper kind" in messages[-1]
     case_file.write_text(text)
+
+
+def test_out_is_not_overwritten_without_force_and_follows_the_umask(matrices_table_case,
+                                                                     tmp_path):
+    out = tmp_path / "x.fmu"
+    out.write_bytes(b"someone's file")
+    r = udmap("fmu", matrices_table_case, "--out", out)
+    assert r.returncode == 2 and "pass --force" in r.stderr and r.stdout == ""
+    assert out.read_bytes() == b"someone's file"
+    old = os.umask(0o022)
+    try:
+        r = udmap("fmu", matrices_table_case, "--out", out, "--force")
+    finally:
+        os.umask(old)
+    assert r.returncode == 0, r.stderr
+    assert zipfile.is_zipfile(out)
+    assert stat.S_IMODE(out.stat().st_mode) == 0o644          # not 0600: colleagues can read it
+    assert not list(tmp_path.glob(".udmap-fmu-*"))

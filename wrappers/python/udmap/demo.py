@@ -68,6 +68,14 @@ def _undamped_twin(case, damper):
     return build_model(twin, blade0, damper), blade0
 
 
+#: The units of summary.json's quantities (docs/outputs.md).
+SUMMARY_UNITS = {key: unit for unit, keys in (
+    ("N", ("F_lim", "F_E")), ("rad", ("gamma_b", "gamma_s", "gamma_P", "gamma_max")),
+    ("Hz", ("f1_bare", "f_stuck", "f_res")), ("Pa", ("sigma_all", "sigma_a", "sigma_max")),
+    ("m", ("u_E",)), ("N m", ("M_max", "M_min")), ("N m/rad", ("k_re", "k_im")))
+    for key in keys}
+
+
 def run_demo(case=None, outdir="out/demo", forces=DEMO_FORCES, quiet: bool = False) -> dict:
     """Runs the demo on ``case`` (a Case, a case dict, a path, or None for the embedded blade
     A) and writes the plots and CSV files into ``outdir``. Returns the summary as a dict."""
@@ -229,6 +237,7 @@ def run_demo(case=None, outdir="out/demo", forces=DEMO_FORCES, quiet: bool = Fal
                                                             "sigma_max", "harmonics",
                                                             "hcf_ok")}
                                          for p in harm if not p["unbounded"]]}
+    summary["units"] = SUMMARY_UNITS  # SI, as every JSON output (docs/outputs.md)
     (out / "summary.json").write_text(json.dumps(summary, indent=1, allow_nan=False) + "\n")
     if not quiet:
         print_summary(summary, out)

@@ -188,6 +188,26 @@ def _html(what: str, token: str, fmi: int, rows: list, absent: set) -> bytes:
     return "".join(out).encode()
 
 
+def write_atomic(path: Path, writer, prefix: str | None = None) -> Path:
+    """Calls ``writer(tmp)`` on a temporary file beside `path`, gives it mode 0666 less the
+    umask (as any file the user creates; mkstemp makes it 0600) and renames it to `path`: the
+    file is written whole or not at all. Also the command line's --out files."""
+    path = Path(path)
+    fd, tmp = tempfile.mkstemp(prefix=prefix or f".{path.stem}-", suffix=path.suffix,
+                               dir=path.parent)
+    os.close(fd)
+    try:
+        writer(Path(tmp))
+        mask = os.umask(0)
+        os.umask(mask)
+        os.chmod(tmp, 0o666 & ~mask)
+        os.replace(tmp, path)
+    finally:
+        if os.path.exists(tmp):
+            os.unlink(tmp)
+    return path
+
+
 def write_case_fmu(case: Case, out: Path, fmi: int = 2, source: str = "") -> Path:
     """Writes the FMU of `case` to `out` (whole or not at all); returns its path."""
     case = matrices_case(case)
@@ -210,23 +230,21 @@ def write_case_fmu(case: Case, out: Path, fmi: int = 2, source: str = "") -> Pat
         entries[f"resources/{name}"] = data
     out = Path(out)
     out.parent.mkdir(parents=True, exist_ok=True)
-    fd, tmp = tempfile.mkstemp(prefix=".udmap-fmu-", suffix=".tmp", dir=out.parent)
-    os.close(fd)
-    try:
+
+    def write_zip(tmp: Path) -> None:
         with zipfile.ZipFile(tmp, "w", zipfile.ZIP_DEFLATED) as zf:
             for name in sorted(entries):
                 if not name.endswith("/"):
                     zf.writestr(name, entries[name])
-        os.replace(tmp, out)
-    finally:
-        if os.path.exists(tmp):
-            os.unlink(tmp)
+    write_atomic(out, write_zip, prefix=".udmap-fmu-")
     return out
 
 
 def cmd_fmu(args) -> None:
     if not args.out.endswith(".fmu"):
         raise InputError(f"--out must name a .fmu file, got {args.out!r}")
+    if Path(args.out).exists() and not args.force:
+        raise InputError(f"--out {args.out} exists: pass --force to overwrite it")
     case = load_case(args.case)
     path = write_case_fmu(case, Path(args.out), args.fmi, source=Path(args.case).name)
     if args.json:
@@ -242,6 +260,7 @@ def add_fmu_parser(sub) -> None:
     p.add_argument("case", metavar="CASE", help="case file (JSON)")
     p.add_argument("--out", required=True, help="the FMU to write (NAME.fmu)")
     p.add_argument("--fmi", type=int, choices=(2, 3), default=2, help="FMI version (2 or 3)")
+    p.add_argument("--force", action="store_true", help="overwrite an existing --out file")
     p.add_argument("--json", action="store_true", help="print JSON on stdout")
     p.set_defaults(func=cmd_fmu)
 

@@ -80,7 +80,7 @@ def gg_diagram(F_E, sigma_a, F_lim: float, sigma_all: float, path, *, regime=Non
                alpha=0.07, lw=0)
     _force_limits(ax, F_lim)
     ax.set_xlabel(r"proof excitation force $F_E$ [N]")
-    ax.set_ylabel(r"peak alternating stress $\sigma_a$ at the airfoil root [MPa]")
+    ax.set_ylabel(r"peak alternating stress $\sigma_a$ at the airfoil-platform junction [MPa]")
     ax.legend(loc="upper left", fontsize=9)
     return _finish(fig, ax, path, "GG design diagram (damper performance, witness stress)")
 
@@ -193,7 +193,8 @@ def harmonics_side_by_side(F_E, sigma_1, gamma_1, F_auto, sigma_auto, sigma_max_
              label=r"$\sigma_a$, auto H")
     ax1.plot(F_auto, np.asarray(sigma_max_auto) / 1e6, "s--", color="tab:purple", ms=3.0,
              lw=1.0, label=r"$\sigma_{max}$, auto H (HCF criterion)")
-    ax1.axhline(sigma_all / 1e6, color="0.3", lw=1.0, ls=":")
+    ax1.axhline(sigma_all / 1e6, color="0.3", lw=1.0, ls=":",
+                label=r"$\sigma_{a,all}$ = " + f"{sigma_all / 1e6:g} MPa")
     ax1.set_xlabel(r"$F_E$ [N]")
     ax1.set_ylabel("stress amplitude at the junction [MPa]")
     _force_limits(ax1, F_lim)
@@ -217,3 +218,24 @@ def harmonics_side_by_side(F_E, sigma_1, gamma_1, F_auto, sigma_auto, sigma_max_
     fig.savefig(path, dpi=150)
     plt.close(fig)
     return path
+
+
+def response_vs_force(F_E, gamma_P, F_lim: float, f_exc: float, path, *, regime=None,
+                      gamma_s: float | None = None, gamma_b: float | None = None) -> Path:
+    """Platform rotation amplitude against the excitation force at one excitation frequency
+    (``udmap response --plot``), log-log, with F_lim and 0.5 F_lim marked."""
+    fig, ax = plt.subplots(figsize=(7.2, 5.0))
+    F = np.asarray(F_E, float)
+    g = np.asarray([np.nan if x is None else x for x in gamma_P], float)
+    ax.loglog(F, g, "-", color="0.15", lw=0.8, label=f"$f_{{exc}}$ = {f_exc:g} Hz")
+    if regime is not None:
+        _regime_dots(ax, F, g, regime)
+    for value, name, ls in ((gamma_b, r"$\gamma_b$ (base cycle)", "-."),
+                            (gamma_s, r"$\gamma_s$ (end of stick)", ":")):
+        if value and value > 0:
+            ax.axhline(value, color="tab:purple", lw=1.0, ls=ls, label=name)
+    _force_limits(ax, F_lim)
+    ax.set_xlabel(r"excitation force $F_E$ [N]")
+    ax.set_ylabel(r"platform rotation amplitude $\gamma_P$ [rad]")
+    ax.legend(loc="upper left", fontsize=8)
+    return _finish(fig, ax, path, f"Response at the excitation frequency {f_exc:g} Hz")

@@ -15,6 +15,7 @@ from .args import float_list, harmonics_arg, positive, positive_int
 from .commands import (cmd_backbone, cmd_curves, cmd_demo, cmd_dti, cmd_hbm, cmd_reduce,
                        cmd_response, cmd_table)
 from .doe import add_doe_parser
+from .files import add_file_options
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -41,18 +42,22 @@ def build_parser() -> argparse.ArgumentParser:
                       "(harmonics 0..H in multi-harmonic layers) or auto; overrides "
                       "analysis.harmonics")
     p = add("backbone", cmd_backbone, "resonance peaks (backbone) for each force")
+    add_file_options(p)
     p.add_argument("--harmonics", type=harmonics_arg, default=None, metavar="H|auto",
                    help=harmonics_help)
     p = add("curves", cmd_curves, "non-linear response curves by amplitude-layered mapping")
+    add_file_options(p)
     p.add_argument("--layers", type=positive_int, default=None,
                    help="number of amplitude layers (default from the case, 200)")
     p.add_argument("--harmonics", type=harmonics_arg, default=None, metavar="H|auto",
                    help=harmonics_help)
     p = add("response", cmd_response, "response at a given excitation frequency")
+    add_file_options(p)
     p.add_argument("--freq", type=positive, required=True, help="excitation frequency [Hz]")
     p.add_argument("--harmonics", type=harmonics_arg, default=None, metavar="H|auto",
                    help=harmonics_help)
     p = add("hbm", cmd_hbm, "standard convergence-based method (harmonic balance)")
+    add_file_options(p)
     p.add_argument("--harmonics", type=positive_int, default=1, help="harmonics 1..H (default 1)")
     p.add_argument("--variant", choices=("condensed", "full"), default="condensed",
                    help="Newton on the damper DOF after condensation, or on all DOFs")

@@ -2,6 +2,7 @@
 from __future__ import annotations
 
 import json
+import math
 import os
 import shutil
 from pathlib import Path
@@ -10,8 +11,12 @@ import numpy as np
 
 from .. import hbm
 from ..case import build_blade, build_contact, build_damper, build_model, load_case
-from ..errors import InputError
-from .output import emit, finite, point_json, print_points, print_rows
+from ..errors import InputError, UdmapError
+from .output import (add_verdicts, add_warning, emit, finite, point_json, print_head,
+                     print_points, print_rows)
+from .files import (CURVE_COLUMNS, POINT_COLUMNS, check_out, curve_rows, point_rows,
+                    write_outputs)
+from .units import header, rounded, units_of
 
 
 def _with_harmonics(case, args):
@@ -36,18 +41,18 @@ def cmd_table(args) -> None:
                        "k_im_plus": j["k_plus"].imag} for j in damper.jumps]}
 
     def table(d):
-        for key in ("gamma_b", "gamma_s", "M_max", "M_min", "k_stuck", "lift_off"):
-            print(f"{key:>8} = {d[key]}")
-        print_rows(["gamma [rad]", "k_re [N m/rad]", "k_im [N m/rad]"],
-                    [[p["gamma"], p["k_re"], p["k_im"]] for p in d["points"]],
-                    [".6e", ".8g", ".8g"])
+        print_head(d, skip=("jumps",))
+        print_rows([header("gamma"), header("k_re"), header("k_im")],
+                   [[p["gamma"], p["k_re"], p["k_im"]] for p in d["points"]],
+                   ["gamma", "k_re", "k_im"])
         if d["jumps"]:
             print(f"k(gamma) jumps at {len(d['jumps'])} amplitude(s) gamma_c (PHYSICS.md 2.5):")
-            print_rows(["gamma_c [rad]", "k_re(gamma_c-)", "k_im(gamma_c-)", "k_re(gamma_c+)",
-                         "k_im(gamma_c+)"],
-                        [[j["gamma_c"], j["k_re_minus"], j["k_im_minus"], j["k_re_plus"],
-                          j["k_im_plus"]] for j in d["jumps"]],
-                        [".10e", ".8g", ".8g", ".8g", ".8g"])
+            print_rows([header("gamma_c", "gamma_c"), header("k_re", "k_re(gamma_c-)"),
+                        header("k_im", "k_im(gamma_c-)"), header("k_re", "k_re(gamma_c+)"),
+                        header("k_im", "k_im(gamma_c+)")],
+                       [[j["gamma_c"], j["k_re_minus"], j["k_im_minus"], j["k_re_plus"],
+                         j["k_im_plus"]] for j in d["jumps"]],
+                       ["gamma_c", "k_re", "k_im", "k_re", "k_im"])
     emit(args, data, table)
 
 
@@ -58,16 +63,52 @@ def _summary(model, blade, damper) -> dict:
             "lift_off": bool(damper.lift_off)}
 
 
+def _verdicts(data: dict, case) -> None:
+    """hcf_reason on the points, against the F_lim the kernel judges them by (the smaller of
+    F_lim and F_lim_backbone; F_lim with more than one harmonic), and the warnings above it."""
+    add_verdicts(data, min(data["F_lim"], data["F_lim_backbone"]), case.analysis["sigma_all"],
+                 F_lim_multi=data["F_lim"])
+
+
+def _finish(args, paths, data: dict, table, columns, rows, plot=None) -> None:
+    """Writes --out's files (when asked), then prints `data`."""
+    written = []
+    if paths:
+        data.setdefault("warnings", [])
+        data["units"] = units_of(data)
+        written = write_outputs(paths, data, columns, rows, plot)
+    emit(args, data, table)
+    if written and not args.json:
+        for path in written:
+            print(f"wrote {path}")
+
+
+def _limits(data: dict) -> float | None:
+    F = min(data["F_lim"], data["F_lim_backbone"])
+    return F if math.isfinite(F) and F < 1e300 else None
+
+
 def cmd_backbone(args) -> None:
+    paths = check_out(args, "backbone")
     case = _with_harmonics(load_case(args.case), args)
     blade, damper = build_blade(case), build_damper(case)
     model = build_model(case, blade, damper)
     data = _summary(model, blade, damper)
     data["points"] = [point_json(p) for p in model.backbone(args.forces)]
-    emit(args, data, print_points)
+    _verdicts(data, case)
+
+    def plot(path):
+        from .. import plots
+        pts = data["points"]
+        plots.gg_diagram([p["F_E"] for p in pts], [p["sigma_a"] for p in pts],
+                         _limits(data) or max(p["F_E"] for p in pts),
+                         case.analysis["sigma_all"], path, F_marked=[p["F_E"] for p in pts],
+                         sigma_marked=[p["sigma_a"] for p in pts])
+    _finish(args, paths, data, print_points, POINT_COLUMNS, point_rows(data), plot)
 
 
 def cmd_response(args) -> None:
+    paths = check_out(args, "response")
     case = _with_harmonics(load_case(args.case), args)
     a = case.analysis
     if not a["f_min"] <= args.freq <= a["f_max"]:
@@ -79,10 +120,20 @@ def cmd_response(args) -> None:
     data["f_exc"] = args.freq
     data["points"] = [point_json(dict(p, jump=False))
                       for p in model.response(args.freq, args.forces)]
-    emit(args, data, print_points)
+    _verdicts(data, case)
+
+    def plot(path):
+        from .. import plots
+        pts = data["points"]
+        plots.response_vs_force([p["F_E"] for p in pts], [p["gamma_P"] for p in pts],
+                                _limits(data) or max(p["F_E"] for p in pts), args.freq, path,
+                                regime=[p["regime"] for p in pts], gamma_s=data["gamma_s"],
+                                gamma_b=data["gamma_b"])
+    _finish(args, paths, data, print_points, POINT_COLUMNS, point_rows(data), plot)
 
 
 def cmd_curves(args) -> None:
+    paths = check_out(args, "curves")
     case = _with_harmonics(load_case(args.case), args)
     model = build_model(case)
     layers = args.layers or case.analysis["layers"]
@@ -93,17 +144,41 @@ def cmd_curves(args) -> None:
                         "branch": [int(x) for x in c["branch"]],
                         "part": [int(x) for x in c["part"]]} for c in curves]}
 
+    try:
+        F_lim = model.limit_force()
+    except UdmapError:  # no slip moment range (a table without delta_M): no limit known
+        F_lim = math.inf
+    for F in args.forces:
+        if F >= F_lim:
+            add_warning(data, f"F_E = {rounded(F)} N is at or above F_lim = {rounded(F_lim)} N: "
+                              "the damper slips all the cycle and cannot limit the response any "
+                              "more (not admissible)")
+
     def table(d):
         for c in d["curves"]:
-            print(f"F_E = {c['F_E']} N: {len(c['f'])} points")
-            print_rows(["f [Hz]", "gamma_P [rad]", "sigma_a [MPa]", "branch"],
-                        [[f, g, None if s is None else s / 1e6, b]
-                         for f, g, s, b in zip(c["f"], c["gamma_P"], c["sigma_a"], c["branch"])],
-                        [".6f", ".6e", ".4f", "d"])
-    emit(args, data, table)
+            print(f"F_E = {rounded(c['F_E'])} N: {len(c['f'])} points")
+            print_rows([header("f"), header("gamma_P"), header("sigma_a"), "branch"],
+                       [[f, g, s, str(b)]
+                        for f, g, s, b in zip(c["f"], c["gamma_P"], c["sigma_a"], c["branch"])],
+                       ["f", "gamma_P", "sigma_a", ""])
+
+    def plot(path):
+        from .. import plots
+        g = [x for c in data["curves"] for x in c["gamma_P"]]
+        try:  # the peaks and the backbone line where the model gives them
+            peaks = model.backbone(args.forces)
+            g += [p["gamma_P"] for p in peaks if not p["unbounded"]]
+            g_line = np.geomspace(min(g), 1.5 * max(g), 240)
+            line = (g_line, model.backbone_curve(g_line)[1])
+        except UdmapError:
+            peaks, line = [], None
+        plots.response_curves(data["curves"], peaks, case.analysis["f_min"],
+                              case.analysis["f_max"], path, backbone_curve=line)
+    _finish(args, paths, data, table, CURVE_COLUMNS, curve_rows(data), plot)
 
 
 def cmd_hbm(args) -> None:
+    paths = check_out(args, "hbm")
     case = load_case(args.case)
     blade = build_blade(case)
     a = case.analysis
@@ -112,7 +187,17 @@ def cmd_hbm(args) -> None:
     hbm.classify(blade, build_damper(case), a["f_min"], a["f_max"], a["sigma_all"], points)
     data = {"harmonics": args.harmonics, "variant": args.variant,
             "points": [point_json(p) for p in points]}
-    emit(args, data, print_points)
+    add_verdicts(data, None, a["sigma_all"])
+
+    def plot(path):
+        from .. import plots
+        pts = data["points"]
+        F_lim = pts[0].get("F_lim") if pts else None
+        plots.gg_diagram([p["F_E"] for p in pts], [p["sigma_a"] for p in pts],
+                         F_lim if F_lim and math.isfinite(F_lim) else max(args.forces),
+                         a["sigma_all"], path, F_marked=[p["F_E"] for p in pts],
+                         sigma_marked=[p["sigma_a"] for p in pts])
+    _finish(args, paths, data, print_points, POINT_COLUMNS, point_rows(data), plot)
 
 
 def cmd_dti(args) -> None:
@@ -128,10 +213,9 @@ def cmd_dti(args) -> None:
                        for p in points]}
 
     def table(d):
-        print_rows(["F_E [N]", "f [Hz]", "gamma_1 [rad]", "sigma_1 [MPa]", "gamma_max [rad]"],
-                    [[p["F_E"], p["f"], p["gamma_1"],
-                      None if p["sigma_1"] is None else p["sigma_1"] / 1e6, p["gamma_max"]]
-                     for p in d["points"]], [".4g", ".6f", ".6e", ".4f", ".6e"])
+        keys = ("F_E", "f", "gamma_1", "sigma_1", "gamma_max")
+        print_rows([header(k) for k in keys], [[p[k] for k in keys] for p in d["points"]],
+                   list(keys))
     emit(args, data, table)
 
 
@@ -182,8 +266,8 @@ def cmd_reduce(args) -> None:
         rows = [[i + 1, ff[i] if i < len(ff) else None, fr[i] if i < len(fr) else None,
                  (fr[i] - ff[i]) / ff[i] if i < min(len(ff), len(fr)) and ff[i] > 0 else None]
                 for i in range(max(len(ff), len(fr)))]
-        print_rows(["mode", "full [Hz]", "reduced [Hz]", "rel. diff"], rows,
-                    ["d", ".9g", ".9g", ".2e"])
+        print_rows(["mode", "full [Hz]", "reduced [Hz]", "rel. diff [1]"], rows,
+                   ["d", "f", "f", ".2e"])
     emit(args, data, table)
 
 

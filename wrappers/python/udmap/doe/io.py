@@ -18,9 +18,11 @@ import io
 import json
 import math
 import os
+import re
 from pathlib import Path
 
 from ..errors import InputError
+from ..parameters import FIELDS
 
 SUMMARY_COLUMNS = ("F_lim", "F_lim_backbone", "gamma_b", "M_max", "M_min", "lift_off")
 FORCE_FIELDS = ("gamma_P", "f_res", "sigma_a", "hcf_ok", "jump")
@@ -40,6 +42,42 @@ def columns(spec: dict) -> list[str]:
     for label in spec["labels"]:
         cols += [f"{field}@{label}" for field in FORCE_FIELDS]
     return cols + ["F_adm", "status", "message"]
+
+
+#: SI units of the computed columns (docs/outputs.md); per-force columns take their field's.
+COLUMN_UNITS = {"F_lim": "N", "F_lim_backbone": "N", "gamma_b": "rad", "M_max": "N m",
+                "M_min": "N m", "gamma_P": "rad", "f_res": "Hz", "sigma_a": "Pa", "F_adm": "N"}
+
+
+def _si(unit: str) -> str:
+    """A unit of the parameter table in the outputs' spelling: ``N.m/rad`` -> ``N m/rad``,
+    ``kg.m2`` -> ``kg m^2``."""
+    return re.sub(r"([a-zA-Z])(\d)", r"\1^\2", unit.replace(".", " "))
+
+
+def parameter_unit(spec: dict, path) -> str:
+    """The unit of a varied parameter (``1`` for a dimensionless one), from the parameter
+    table (kernel/parameters.toml)."""
+    section = path[0]
+    kind = spec[section].get("kind") if section != "analysis" else None
+    name = ".".join(str(k) for k in path[1:] if not isinstance(k, int))
+    for sec, knd, field, kw in FIELDS:
+        if sec == section and knd == kind and field == name:
+            return _si(kw["unit"]) if kw.get("unit") else "1"
+    return "1"
+
+
+def column_units(spec: dict) -> dict:
+    """Column -> unit of the CSV (``.meta.json`` ``units``, the Parquet field metadata);
+    columns without a unit (design, flags, status, message) are left out."""
+    units = {p["name"]: parameter_unit(spec, path)
+             for p, path in zip(spec["params"], spec["paths"])}
+    units.update({c: COLUMN_UNITS[c] for c in SUMMARY_COLUMNS if c in COLUMN_UNITS})
+    for label in spec["labels"]:
+        units.update({f"{f}@{label}": COLUMN_UNITS[f] for f in FORCE_FIELDS
+                      if f in COLUMN_UNITS})
+    units["F_adm"] = COLUMN_UNITS["F_adm"]
+    return units
 
 
 def cell(value) -> str:
@@ -180,7 +218,8 @@ class Output:
                 raise InputError(f"--out {self.path} is a directory")
             try:
                 self.path.parent.mkdir(parents=True, exist_ok=True)
-                meta = {"format": META_FORMAT, "columns": self.header, **_jsonable(self.spec)}
+                meta = {"format": META_FORMAT, "columns": self.header,
+                        "units": column_units(self.spec), **_jsonable(self.spec)}
                 tmp = self.meta_path.with_name(self.meta_path.name + ".tmp")
                 tmp.write_text(json.dumps(meta, indent=1))
                 os.replace(tmp, self.meta_path)
@@ -352,10 +391,13 @@ class Output:
         reader = pacsv.open_csv(self.path, convert_options=pacsv.ConvertOptions(
             column_types=types, strings_can_be_null=False, true_values=["true"],
             false_values=["false"]))
+        units = column_units(self.spec)
+        schema = pa.schema([f.with_metadata({"unit": units[f.name]}) if f.name in units else f
+                            for f in reader.schema])
         tmp = self.parquet_path.with_name(self.parquet_path.name + ".tmp")
-        with pq.ParquetWriter(tmp, reader.schema) as writer:  # batch by batch: bounded memory
+        with pq.ParquetWriter(tmp, schema) as writer:  # batch by batch: bounded memory
             for batch in reader:
-                writer.write_batch(batch)
+                writer.write_batch(pa.RecordBatch.from_arrays(batch.columns, schema=schema))
         os.replace(tmp, self.parquet_path)
         return str(self.parquet_path)
 
