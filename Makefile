@@ -6,7 +6,7 @@ JOBS ?= $(shell nproc 2>/dev/null || echo 2)
 APT_PACKAGES := gfortran liblapack-dev libblas-dev libarpack2-dev libmumps-seq-dev calculix-ccx pkg-config valgrind
 # make test-windows: the MinGW-w64 cross compilers and Wine
 WINDOWS_APT_PACKAGES := gcc-mingw-w64-x86-64 gfortran-mingw-w64-x86-64 binutils-mingw-w64-x86-64 wine64
-PY_PACKAGES := numpy scipy matplotlib fmpy pytest wheel dask distributed scikit-build-core
+PY_PACKAGES := numpy scipy matplotlib fmpy pytest wheel dask distributed scikit-build-core pyarrow
 export PYTHONPATH := $(CURDIR)/wrappers/python$(if $(PYTHONPATH),:$(PYTHONPATH))
 export PIP_BREAK_SYSTEM_PACKAGES := 1
 export PIP_DISABLE_PIP_VERSION_CHECK := 1
