@@ -81,6 +81,29 @@ contains
     real(wp), intent(in) :: F_E(:)
     type(point_type), allocatable, intent(out) :: points(:)
     type(error_type), allocatable, intent(out) :: error
+    call layered(model, .true., 0.0_wp, F_E, points, error)
+  end subroutine backbone
+
+  !> The response at the excitation frequency f_exc [Hz] for the forces F_E [N].
+  subroutine response(model, f_exc, F_E, points, error)
+    type(model_type), intent(inout) :: model
+    real(wp), intent(in) :: f_exc
+    real(wp), intent(in) :: F_E(:)
+    type(point_type), allocatable, intent(out) :: points(:)
+    type(error_type), allocatable, intent(out) :: error
+    call layered(model, .false., f_exc, F_E, points, error)
+  end subroutine response
+
+  !> The single-harmonic points for the forces F_E (at_peak: the backbone, else the response
+  !> at f_exc [Hz]), each solved again as a multi-harmonic point when H /= 1: a backbone point
+  !> from the force table where it is on, an unbounded one kept as it is.
+  subroutine layered(model, at_peak, f_exc, F_E, points, error)
+    type(model_type), intent(inout) :: model
+    logical, intent(in) :: at_peak
+    real(wp), intent(in) :: f_exc
+    real(wp), intent(in) :: F_E(:)
+    type(point_type), allocatable, intent(out) :: points(:)
+    type(error_type), allocatable, intent(out) :: error
     type(point_type), allocatable :: p1(:)
     integer :: i, em
     em = starts_modal(model)
@@ -88,7 +111,11 @@ contains
     model%analysis%eigen_method = em
   contains
     subroutine run()
-      call backbone_single(model, F_E, p1, error)
+      if (at_peak) then
+        call backbone_single(model, F_E, p1, error)
+      else
+        call response_single(model, f_exc, F_E, p1, error)
+      end if
       if (model%analysis%harmonics == 1 .or. allocated(error)) then
         call move_alloc(p1, points)
         return
@@ -97,20 +124,20 @@ contains
       if (allocated(error)) return
       allocate(points(size(F_E)))
       do i = 1, size(F_E)
-        if (p1(i)%unbounded) then
+        if (at_peak .and. p1(i)%unbounded) then
           points(i) = p1(i)
           cycle
         end if
-        if (model%force_table .and. table_share*model%analysis%harmonic_tol >= table_tol_min) &
-          & then
+        if (at_peak .and. model%force_table .and. &
+          & table_share*model%analysis%harmonic_tol >= table_tol_min) then
           call table_point(model, p1(i), points(i), error)
         else
-          call multi_point(model, p1(i), .true., points(i), error)
+          call multi_point(model, p1(i), at_peak, points(i), error)
         end if
         if (allocated(error)) return
       end do
     end subroutine run
-  end subroutine backbone
+  end subroutine layered
 
   !> The single-harmonic pass that starts the layers (H /= 1) needs only starts: with the
   !> default eigenvalue start and no direct eigen-solve done yet, it takes the secular
@@ -279,35 +306,6 @@ contains
       & F_lim < huge(1.0_wp)
   end subroutine unpack_point
 
-  !> The response at the excitation frequency f_exc [Hz] for the forces F_E [N].
-  subroutine response(model, f_exc, F_E, points, error)
-    type(model_type), intent(inout) :: model
-    real(wp), intent(in) :: f_exc
-    real(wp), intent(in) :: F_E(:)
-    type(point_type), allocatable, intent(out) :: points(:)
-    type(error_type), allocatable, intent(out) :: error
-    type(point_type), allocatable :: p1(:)
-    integer :: i, em
-    em = starts_modal(model)
-    call run()
-    model%analysis%eigen_method = em
-  contains
-    subroutine run()
-      call response_single(model, f_exc, F_E, p1, error)
-      if (model%analysis%harmonics == 1 .or. allocated(error)) then
-        call move_alloc(p1, points)
-        return
-      end if
-      call ensure_element(model, error)
-      if (allocated(error)) return
-      allocate(points(size(F_E)))
-      do i = 1, size(F_E)
-        call multi_point(model, p1(i), .false., points(i), error)
-        if (allocated(error)) return
-      end do
-    end subroutine run
-  end subroutine response
-
   !> The response curves (PHYSICS.md 3) for the forces F_E [N]. With H > 1 (or auto: the H
   !> of each force's peak) every point of the single-harmonic curve is solved again as a
   !> multi-harmonic layer at its frequency (|P(omega; gamma)| = F_E from its single-harmonic
@@ -376,12 +374,10 @@ contains
     type(model_type), intent(in) :: model
     real(wp), intent(in) :: omega
     integer, intent(in) :: h_cap
-    integer :: r, h
+    integer :: h
     hmax = 0
-    do r = 2, size(model%blade%omega)
-      do h = 2, min(h_cap, HARMONICS_MAX)
-        if (abs(h*omega/model%blade%omega(r) - 1) <= near_mode) hmax = max(hmax, h)
-      end do
+    do h = 2, min(h_cap, HARMONICS_MAX)
+      if (near_bare_mode(model, omega, h)) hmax = h
     end do
   end function harmonics_near_modes
 
@@ -393,17 +389,30 @@ contains
     type(model_type), intent(in) :: model
     real(wp), intent(in) :: omega
     integer, intent(in) :: H
-    integer :: r, k
+    integer :: k
     h_next = 0
     do k = H + 1, HARMONICS_MAX
-      do r = 2, size(model%blade%omega)
-        if (abs(k*omega/model%blade%omega(r) - 1) <= near_mode) then
-          h_next = k
-          return
-        end if
-      end do
+      if (near_bare_mode(model, omega, k)) then
+        h_next = k
+        return
+      end if
     end do
   end function next_near_mode
+
+  !> Whether the harmonic h at omega [rad/s] lies within near_mode of a bare mode above mode 1.
+  logical function near_bare_mode(model, omega, h) result(near)
+    type(model_type), intent(in) :: model
+    real(wp), intent(in) :: omega
+    integer, intent(in) :: h
+    integer :: r
+    near = .false.
+    do r = 2, size(model%blade%omega)
+      if (abs(h*omega/model%blade%omega(r) - 1) <= near_mode) then
+        near = .true.
+        return
+      end if
+    end do
+  end function near_bare_mode
 
   !> The contact element of the model's damper, rebuilt when the damper changed.
   subroutine ensure_element(model, error)

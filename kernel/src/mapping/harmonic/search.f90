@@ -141,8 +141,8 @@ contains
     logical, intent(out), optional :: jump
     type(harmonic_state_type), intent(out), optional :: below
     type(harmonic_state_type) :: s_neg, s_pos
-    real(wp) :: u0, u1, f0, f1, slope, du, u_neg, u_pos, f_neg, f_pos
-    logical :: have_neg, have_pos
+    real(wp) :: u0, u1, f0, f1, slope, u_neg, u_pos, f_neg, f_pos
+    logical :: have_neg, have_pos, converged, moved
     integer :: it
     character(len=160) :: buf
     if (present(jump)) jump = .false.
@@ -156,22 +156,12 @@ contains
       if (allocated(error)) return
       f1 = log(abs(s%P)/F_E)
       call keep_bracket(u1, f1)
-      if (it > 1) then
-        if (u1 /= u0 .and. f1 /= f0) slope = (f1 - f0)/(u1 - u0)
-      end if
-      du = -f1/slope
-      du = max(-0.5_wp, min(0.5_wp, du))
-      if (abs(du) <= rtol .or. f1 == 0) then
-        if (abs(du) > 0) then
-          ! one more exactly at the root
-          u1 = u1 + du
-          call harmonic_peak(ws, blade, exp(u1), omega_lo, omega_hi, rtol, s, error)
-        end if
+      call secant_step(it, rtol, u0, f0, u1, f1, slope, converged, moved)
+      if (converged) then
+        ! one more exactly at the root
+        if (moved) call harmonic_peak(ws, blade, exp(u1), omega_lo, omega_hi, rtol, s, error)
         return
       end if
-      u0 = u1
-      f0 = f1
-      u1 = u1 + du
     end do
     if (.not.(have_neg .and. have_pos)) then
       write(buf, '(a, i0, a, es12.5, a)') "harmonic backbone (H = ", s%H, "): no root found "// &
@@ -292,7 +282,8 @@ contains
     real(wp), intent(in) :: F_E, gamma_start, omega, rtol
     type(harmonic_state_type), intent(inout) :: s
     type(error_type), allocatable, intent(out) :: error
-    real(wp) :: u0, u1, f0, f1, slope, du
+    real(wp) :: u0, u1, f0, f1, slope
+    logical :: converged, moved
     integer :: it
     character(len=160) :: buf
     u1 = log(gamma_start)
@@ -301,25 +292,46 @@ contains
       call harmonic_solve(ws, blade, exp(u1), omega, s, error)
       if (allocated(error)) return
       f1 = log(abs(s%P)/F_E)
-      if (it > 1) then
-        if (u1 /= u0 .and. f1 /= f0) slope = (f1 - f0)/(u1 - u0)
-      end if
-      if (.not.(abs(slope) > 1.0e-3_wp)) slope = sign(1.0e-3_wp, slope)
-      du = -f1/slope
-      du = max(-0.5_wp, min(0.5_wp, du))
-      if (abs(du) <= rtol .or. f1 == 0) then
-        if (abs(du) > 0) then
-          u1 = u1 + du
-          call harmonic_solve(ws, blade, exp(u1), omega, s, error)
-        end if
+      call secant_step(it, rtol, u0, f0, u1, f1, slope, converged, moved, min_slope=1.0e-3_wp)
+      if (converged) then
+        if (moved) call harmonic_solve(ws, blade, exp(u1), omega, s, error)
         return
       end if
-      u0 = u1
-      f0 = f1
-      u1 = u1 + du
     end do
     write(buf, '(a, i0, a, es12.5, a, g0.8, a)') "harmonic response (H = ", s%H, &
       & "): no amplitude found for F_E = ", F_E, " N at ", omega/(2*pi), " Hz"
     call fatal_error(error, trim(buf), UDMAP_ENUMERIC)
   end subroutine harmonic_force_root
+
+  !> One secant step on f(u) = 0 in the searches above: f1 at u1 and, from the second step
+  !> on (it > 1), f0 at u0 the point before. The slope is updated where the two points differ
+  !> (kept at least min_slope in magnitude when given) and the step -f1/slope clamped to 0.5.
+  !> converged: the step was below rtol or f1 is zero; u1 then moves by the step (moved: it was
+  !> not zero, one more evaluation is due there). Otherwise u1 moves by it and (u0, f0) take
+  !> the old point.
+  pure subroutine secant_step(it, rtol, u0, f0, u1, f1, slope, converged, moved, min_slope)
+    integer, intent(in) :: it
+    real(wp), intent(in) :: rtol, f1
+    real(wp), intent(inout) :: u0, f0, u1, slope
+    logical, intent(out) :: converged, moved
+    real(wp), intent(in), optional :: min_slope
+    real(wp) :: du
+    if (it > 1) then
+      if (u1 /= u0 .and. f1 /= f0) slope = (f1 - f0)/(u1 - u0)
+    end if
+    if (present(min_slope)) then
+      if (.not.(abs(slope) > min_slope)) slope = sign(min_slope, slope)
+    end if
+    du = -f1/slope
+    du = max(-0.5_wp, min(0.5_wp, du))
+    converged = abs(du) <= rtol .or. f1 == 0
+    moved = abs(du) > 0
+    if (converged) then
+      if (moved) u1 = u1 + du
+      return
+    end if
+    u0 = u1
+    f0 = f1
+    u1 = u1 + du
+  end subroutine secant_step
 end module udmap_mapping_harmonic_search
