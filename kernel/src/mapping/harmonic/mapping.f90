@@ -21,7 +21,7 @@ module udmap_mapping_harmonic_mapping
   use, intrinsic :: iso_fortran_env, only: int64
   use udmap_core_kinds, only: wp, pi
   use udmap_core_sorting, only: sort_ascending
-  use udmap_core_error, only: error_type, fatal_error, UDMAP_EINPUT
+  use udmap_core_error, only: error_type, fatal_error, require, UDMAP_EINPUT
   use udmap_damper_type, only: DAMPER_ASYMMETRIC, DAMPER_JENKINS
   use udmap_contact_element_jenkins, only: jenkins_element_type, new_jenkins_element
   use udmap_contact_element_asymmetric, only: contact_element_type, new_contact_element
@@ -40,7 +40,8 @@ module udmap_mapping_harmonic_mapping
     & TABLE_SPLIT, LEVEL_MAX
   implicit none
   private
-  public :: backbone, response, response_curves, harmonics_near_modes, set_harmonics
+  public :: backbone, response, response_curves, harmonics_near_modes, set_harmonics, &
+    & check_harmonics
 
   !> The ladder of H tried by the automatic choice.
   integer, parameter :: ladder(10) = [3, 5, 7, 9, 13, 17, 25, 33, 49, 64]
@@ -62,18 +63,23 @@ contains
     integer, intent(in) :: harmonics
     real(wp), intent(in) :: harmonic_tol
     type(error_type), allocatable, intent(out) :: error
-    if (harmonics < 0 .or. harmonics > HARMONICS_MAX) then
-      call fatal_error(error, "analysis.harmonics must be 1, an integer up to 64, or auto (0)", &
-        & UDMAP_EINPUT)
-      return
-    end if
-    if (.not.(harmonic_tol >= 1e-10_wp .and. harmonic_tol <= 0.1_wp)) then
-      call fatal_error(error, "analysis.harmonic_tol must lie in [1e-10, 0.1]", UDMAP_EINPUT)
-      return
-    end if
+    call check_harmonics(harmonics, harmonic_tol, error)
+    if (allocated(error)) return
     model%analysis%harmonics = harmonics
     model%analysis%harmonic_tol = harmonic_tol
   end subroutine set_harmonics
+
+  !> The checks of analysis%harmonics and harmonic_tol, as a series of `require` (the model's
+  !> analysis and set_harmonics).
+  pure subroutine check_harmonics(harmonics, harmonic_tol, error)
+    integer, intent(in) :: harmonics
+    real(wp), intent(in) :: harmonic_tol
+    type(error_type), allocatable, intent(inout) :: error
+    call require(harmonics >= 0 .and. harmonics <= HARMONICS_MAX, &
+      & "analysis.harmonics must be 1, an integer up to 64, or auto (0)", error)
+    call require(harmonic_tol >= 1e-10_wp .and. harmonic_tol <= 0.1_wp, &
+      & "analysis.harmonic_tol must lie in [1e-10, 0.1]", error)
+  end subroutine check_harmonics
 
   !> The peaks of the non-linear response for the forces F_E [N] (PHYSICS.md 4 and 4.1).
   subroutine backbone(model, F_E, points, error)
