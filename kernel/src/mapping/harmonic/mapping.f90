@@ -380,45 +380,31 @@ contains
     type(model_type), intent(in) :: model
     real(wp), intent(in) :: omega
     integer, intent(in) :: h_cap
-    integer :: h
-    hmax = 0
-    do h = 2, min(h_cap, HARMONICS_MAX)
-      if (near_bare_mode(model, omega, h)) hmax = h
-    end do
+    hmax = near_mode_harmonic(model, omega, 2, min(h_cap, HARMONICS_MAX), .true.)
   end function harmonics_near_modes
 
-  !> The smallest harmonic above H whose h omega lies near a bare mode above mode 1 (0: none
-  !> up to HARMONICS_MAX): the next rung of the automatic H reaches it, as truncating just
-  !> below an amplified harmonic can look converged (blade A at 3.97 N: H = 6 and 7 agree to
-  !> 7e-4 in gamma_P, and both are 0.8 % from H = 46 through the 14th harmonic and above).
-  integer function next_near_mode(model, omega, H) result(h_next)
+  !> The lowest (highest: the highest) harmonic h_lo <= h <= h_hi whose h omega [rad/s] lies
+  !> within near_mode of a bare mode above mode 1 (0 if none). The lowest above H is the next
+  !> rung of the automatic H, as truncating just below an amplified harmonic can look
+  !> converged (blade A at 3.97 N: H = 6 and 7 agree to 7e-4 in gamma_P, and both are 0.8 %
+  !> from H = 46 through the 14th harmonic and above).
+  integer function near_mode_harmonic(model, omega, h_lo, h_hi, highest) result(h_near)
     type(model_type), intent(in) :: model
     real(wp), intent(in) :: omega
-    integer, intent(in) :: H
-    integer :: k
-    h_next = 0
-    do k = H + 1, HARMONICS_MAX
-      if (near_bare_mode(model, omega, k)) then
-        h_next = k
-        return
-      end if
+    integer, intent(in) :: h_lo, h_hi
+    logical, intent(in) :: highest
+    integer :: h, r
+    h_near = 0
+    do h = h_lo, h_hi
+      do r = 2, size(model%blade%omega)
+        if (abs(h*omega/model%blade%omega(r) - 1) <= near_mode) then
+          h_near = h
+          if (.not.highest) return
+          exit
+        end if
+      end do
     end do
-  end function next_near_mode
-
-  !> Whether the harmonic h at omega [rad/s] lies within near_mode of a bare mode above mode 1.
-  logical function near_bare_mode(model, omega, h) result(near)
-    type(model_type), intent(in) :: model
-    real(wp), intent(in) :: omega
-    integer, intent(in) :: h
-    integer :: r
-    near = .false.
-    do r = 2, size(model%blade%omega)
-      if (abs(h*omega/model%blade%omega(r) - 1) <= near_mode) then
-        near = .true.
-        return
-      end if
-    end do
-  end function near_bare_mode
+  end function near_mode_harmonic
 
   !> The contact element of the model's damper, rebuilt when the damper changed.
   subroutine ensure_element(model, error)
@@ -497,7 +483,7 @@ contains
         s_prev = s
         out_prev = out
         H = max(ladder(findloc(ladder > H, .true., 1)), &
-          & harmonics_near_modes(model, s%omega, 2*H), next_near_mode(model, s%omega, H))
+          & harmonics_near_modes(model, s%omega, 2*H), near_mode_harmonic(model, s%omega, H + 1, HARMONICS_MAX, .false.))
         call solve_root(s_prev%gamma, s_prev%omega, H, s, error, s_prev)
         if (allocated(error)) return
         call harmonic_outputs(model%harm, s, model%blade%has_stress, out)

@@ -6,6 +6,7 @@
 module udmap_mapping_harmonic_search
   use udmap_core_kinds, only: wp, pi
   use udmap_core_error, only: error_type, fatal_error, UDMAP_ENUMERIC, UDMAP_EPHYSICS
+  use udmap_core_root_finding, only: brent_bracket, brent_step
   use udmap_blade_type, only: blade_type
   use udmap_mapping_harmonic_types, only: harmonic_workspace_type, harmonic_state_type
   use udmap_mapping_harmonic_layer, only: harmonic_solve
@@ -26,7 +27,7 @@ contains
     type(harmonic_state_type), intent(inout) :: s
     type(error_type), allocatable, intent(out) :: error
     real(wp), intent(in), optional :: omega_start
-    real(wp) :: w0, w1, p0, p1, wn, a, b, fa, fb, c, fc, d, e, tol, m, pp, q, r, sfac
+    real(wp) :: w0, w1, p0, p1, wn, a, b, fa, fb, c, fc, d, e, tol, m
     integer :: it
     logical :: bracketed
     character(len=160) :: buf
@@ -72,51 +73,15 @@ contains
       call fatal_error(error, trim(buf), UDMAP_ENUMERIC)
       return
     end if
-    ! Brent on psi in [w0, w1] (s holds w1)
+    ! Brent on psi in [w0, w1] (s holds w1), with a relative tolerance and its own sign test
     a = w0; fa = p0; b = w1; fb = p1
     c = a; fc = fa; d = b - a; e = d
     do it = 1, 100
-      if ((fb > 0) .eqv. (fc > 0)) then
-        c = a; fc = fa; d = b - a; e = d
-      end if
-      if (abs(fc) < abs(fb)) then
-        a = b; b = c; c = a
-        fa = fb; fb = fc; fc = fa
-      end if
+      call brent_bracket((fb > 0) .eqv. (fc > 0), a, b, c, fa, fb, fc, d, e)
       tol = 0.5_wp*rtol*abs(b)
       m = 0.5_wp*(c - b)
       if (abs(m) <= tol .or. fb == 0) exit
-      if (abs(e) >= tol .and. abs(fa) > abs(fb)) then
-        sfac = fb/fa
-        if (a == c) then
-          pp = 2*m*sfac
-          q = 1 - sfac
-        else
-          q = fa/fc
-          r = fb/fc
-          pp = sfac*(2*m*q*(q - r) - (b - a)*(r - 1))
-          q = (q - 1)*(r - 1)*(sfac - 1)
-        end if
-        if (pp > 0) then
-          q = -q
-        else
-          pp = -pp
-        end if
-        if (2*pp < min(3*m*q - abs(tol*q), abs(e*q))) then
-          e = d
-          d = pp/q
-        else
-          d = m; e = m
-        end if
-      else
-        d = m; e = m
-      end if
-      a = b; fa = fb
-      if (abs(d) > tol) then
-        b = b + d
-      else
-        b = b + sign(tol, m)
-      end if
+      call brent_step(a, b, c, fa, fb, fc, d, e, tol, m)
       call harmonic_solve(ws, blade, gamma, b, s, error)
       if (allocated(error)) return
       fb = s%psi
