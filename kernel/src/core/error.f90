@@ -2,7 +2,7 @@
 module udmap_core_error
   implicit none
   private
-  public :: error_type, fatal_error
+  public :: error_type, fatal_error, require
   public :: UDMAP_OK, UDMAP_EINPUT, UDMAP_EPHYSICS, UDMAP_ENUMERIC
 
   !> Status codes shared with the C API and the CLI exit codes.
@@ -28,4 +28,15 @@ contains
     error%message = message
     if (present(stat)) error%stat = stat
   end subroutine fatal_error
+
+  !> One check of a series on the input: sets `error` (UDMAP_EINPUT) with `message` where `ok`
+  !> is false and no earlier check of the series failed, so the first failure is the one
+  !> reported; the caller tests `error` once after the series.
+  pure subroutine require(ok, message, error)
+    logical, intent(in) :: ok
+    character(len=*), intent(in) :: message
+    type(error_type), allocatable, intent(inout) :: error
+    if (allocated(error) .or. ok) return
+    call fatal_error(error, message, UDMAP_EINPUT)
+  end subroutine require
 end module udmap_core_error

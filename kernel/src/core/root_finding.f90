@@ -13,7 +13,8 @@ module udmap_core_root_finding
   use udmap_core_kinds, only: wp
   implicit none
   private
-  public :: brent_type, brent_start, brent_next, brent_update
+  public :: brent_type, brent_start, brent_next, brent_update, brent_bracket, &
+    & brent_step
 
   !> State of one bracketed root search; b is always the best estimate so far.
   type :: brent_type
@@ -46,19 +47,14 @@ contains
     type(brent_type), intent(inout) :: state
     real(wp), intent(out) :: x
     logical, intent(out) :: more
-    real(wp) :: tol1, xm, p, q, r, s
+    real(wp) :: tol1, xm
     more = .false.
     x = state%b
     if (state%converged) return
     associate(a => state%a, b => state%b, c => state%c, fa => state%fa, fb => state%fb, &
         & fc => state%fc, d => state%d, e => state%e)
-      if ((fb > 0 .and. fc > 0) .or. (fb < 0 .and. fc < 0)) then
-        c = a; fc = fa; d = b - a; e = d
-      end if
-      if (abs(fc) < abs(fb)) then
-        a = b; b = c; c = a
-        fa = fb; fb = fc; fc = fa
-      end if
+      call brent_bracket((fb > 0 .and. fc > 0) .or. (fb < 0 .and. fc < 0), a, b, c, fa, fb, &
+        & fc, d, e)
       tol1 = 2*epsilon(1.0_wp)*abs(b) + 0.5_wp*state%tol
       xm = 0.5_wp*(c - b)
       if (abs(xm) <= tol1 .or. fb == 0 .or. state%evaluations >= state%max_evaluations) then
@@ -66,44 +62,71 @@ contains
         x = b
         return
       end if
-      if (abs(e) >= tol1 .and. abs(fa) > abs(fb)) then
-        s = fb/fa
-        if (a == c) then
-          ! secant
-          p = 2*xm*s
-          q = 1 - s
-        else
-          ! inverse quadratic interpolation
-          q = fa/fc
-          r = fb/fc
-          p = s*(2*xm*q*(q - r) - (b - a)*(r - 1))
-          q = (q - 1)*(r - 1)*(s - 1)
-        end if
-        if (p > 0) q = -q
-        p = abs(p)
-        if (2*p < min(3*xm*q - abs(tol1*q), abs(e*q))) then
-          e = d
-          d = p/q
-        else
-          d = xm
-          e = d
-        end if
-      else
-        d = xm
-        e = d
-      end if
-      a = b
-      fa = fb
-      if (abs(d) > tol1) then
-        b = b + d
-      else
-        b = b + sign(tol1, xm)
-      end if
+      call brent_step(a, b, c, fa, fb, fc, d, e, tol1, xm)
       x = b
     end associate
     state%evaluations = state%evaluations + 1
     more = .true.
   end subroutine brent_next
+
+  !> Brent's zeroin before a step: with the new point b on the side of the contrapoint c
+  !> (same_sign: fb and fc alike, by the caller's test) c takes the previous point a and the
+  !> steps d, e restart from the bracket; then b becomes the end with the smaller |f|.
+  pure subroutine brent_bracket(same_sign, a, b, c, fa, fb, fc, d, e)
+    logical, intent(in) :: same_sign
+    real(wp), intent(inout) :: a, b, c, fa, fb, fc, d, e
+    if (same_sign) then
+      c = a; fc = fa; d = b - a; e = d
+    end if
+    if (abs(fc) < abs(fb)) then
+      a = b; b = c; c = a
+      fa = fb; fb = fc; fc = fa
+    end if
+  end subroutine brent_bracket
+
+  !> One step of Brent's zeroin (brent_next; also for callers with their own stopping test):
+  !> from the last two points (a, fa), (b, fb), the contrapoint (c, fc) across the root, the
+  !> tolerance tol at b and xm = (c - b)/2, inverse quadratic interpolation or a secant step
+  !> where it stays well inside the bracket, else bisection; d and e hold the last two steps.
+  !> (a, fa) take the old (b, fb) and b the next abscissa.
+  pure subroutine brent_step(a, b, c, fa, fb, fc, d, e, tol, xm)
+    real(wp), intent(inout) :: a, b, fa, d, e
+    real(wp), intent(in) :: c, fb, fc, tol, xm
+    real(wp) :: p, q, r, s
+    if (abs(e) >= tol .and. abs(fa) > abs(fb)) then
+      s = fb/fa
+      if (a == c) then
+        ! secant
+        p = 2*xm*s
+        q = 1 - s
+      else
+        ! inverse quadratic interpolation
+        q = fa/fc
+        r = fb/fc
+        p = s*(2*xm*q*(q - r) - (b - a)*(r - 1))
+        q = (q - 1)*(r - 1)*(s - 1)
+      end if
+      if (p > 0) q = -q
+      p = abs(p)
+      if (2*p < min(3*xm*q - abs(tol*q), abs(e*q))) then
+        e = d
+        d = p/q
+      else
+        d = xm
+        e = d
+      end if
+    else
+      d = xm
+      e = d
+    end if
+    a = b
+    fa = fb
+    if (abs(d) > tol) then
+      b = b + d
+    else
+      b = b + sign(tol, xm)
+    end if
+  end subroutine brent_step
 
   !> Gives the search the function value at the abscissa returned by brent_next.
   pure subroutine brent_update(state, fx)

@@ -3,7 +3,7 @@ module udmap_core_strings
   use udmap_core_kinds, only: wp
   implicit none
   private
-  public :: itoa, ftoa, indexed_name
+  public :: itoa, ftoa, rtoa, indexed_name
 
 contains
 
@@ -24,6 +24,16 @@ contains
     write(buf, '(g0.10)') x
     s = trim(adjustl(buf))
   end function ftoa
+
+  !> A real in the edit descriptor fmt (such as '(es11.4)'), without blanks.
+  pure function rtoa(x, fmt) result(s)
+    real(wp), intent(in) :: x
+    character(len=*), intent(in) :: fmt
+    character(len=:), allocatable :: s
+    character(len=32) :: buf
+    write(buf, fmt) x
+    s = trim(adjustl(buf))
+  end function rtoa
 
   !> name[i-1]: entry i of an array as the C API and Python index it (0-based).
   pure function indexed_name(name, i) result(s)

@@ -67,7 +67,7 @@ contains
       do i = 1, n
         call blade%receptances(sample(i), r, error, derivatives=.true.)
         if (allocated(error)) return
-        call unpack(r, v, dv)
+        call set_receptances(r, v, dv)
         scale = max(scale, abs(v))
         dscale = max(dscale, abs(dv))
         call exact_modes(band, sample(i), e, de)
@@ -81,9 +81,9 @@ contains
           band%active = .false.
           return
         end if
-        call unpack(r, v, dv)
+        call set_receptances(r, v, dv)
         call band_eval(band, sample(i) + 0.5_wp*band%h, .true., ri)
-        call unpack(ri, e, de)
+        call set_receptances(ri, e, de)
         if (any(abs(e - v) > 1e-13_wp*scale) .or. any(abs(de - dv) > 1e-11_wp*dscale)) then
           band%active = .false.
           exit
@@ -102,12 +102,12 @@ contains
   end subroutine new_band_receptances
 
   !> The five receptances and their derivatives as arrays.
-  pure subroutine unpack(r, v, dv)
+  pure subroutine set_receptances(r, v, dv)
     type(receptances_type), intent(in) :: r
     complex(wp), intent(out) :: v(5), dv(5)
     v = [r%gE, r%gg, r%EE, r%sE, r%sg]
     dv = [r%dgE, r%dgg, r%dEE, r%dsE, r%dsg]
-  end subroutine unpack
+  end subroutine set_receptances
 
   !> The exactly summed modes' share of the five receptances and its d/d omega.
   pure subroutine exact_modes(band, omega, e, de)
@@ -144,7 +144,7 @@ contains
     real(wp), intent(in) :: omega
     logical, intent(in) :: derivatives
     type(receptances_type), intent(out) :: r
-    complex(wp) :: e(5), de(5), v(5), dv(5)
+    complex(wp) :: e(5), de(5)
     real(wp) :: t, h00, h10, h01, h11, d00, d10, d01, d11
     integer :: i
     i = min(max(int((omega - band%omega_lo)/band%h) + 1, 1), band%n - 1)
@@ -154,24 +154,32 @@ contains
     h01 = (3 - 2*t)*t*t
     h11 = (t - 1)*t*t*band%h
     call exact_modes(band, omega, e, de)
-    v = e + h00*band%rem(:, i) + h10*band%drem(:, i) + h01*band%rem(:, i + 1) + &
-      & h11*band%drem(:, i + 1)
-    r%gE = v(1)
-    r%gg = v(2)
-    r%EE = v(3)
-    r%sE = v(4)
-    r%sg = v(5)
+    call store_receptances(hermite(e, h00, h10, h01, h11), r%gE, r%gg, r%EE, r%sE, r%sg)
     if (.not.derivatives) return
     d00 = 6*t*(t - 1)/band%h
     d10 = (3*t - 4)*t + 1
     d01 = -d00
     d11 = (3*t - 2)*t
-    dv = de + d00*band%rem(:, i) + d10*band%drem(:, i) + d01*band%rem(:, i + 1) + &
-      & d11*band%drem(:, i + 1)
-    r%dgE = dv(1)
-    r%dgg = dv(2)
-    r%dEE = dv(3)
-    r%dsE = dv(4)
-    r%dsg = dv(5)
+    call store_receptances(hermite(de, d00, d10, d01, d11), r%dgE, r%dgg, r%dEE, r%dsE, r%dsg)
+  contains
+    !> The exact part x plus the remainder of panel i with the Hermite weights c00..c11.
+    pure function hermite(x, c00, c10, c01, c11) result(v)
+      complex(wp), intent(in) :: x(5)
+      real(wp), intent(in) :: c00, c10, c01, c11
+      complex(wp) :: v(5)
+      v = x + c00*band%rem(:, i) + c10*band%drem(:, i) + c01*band%rem(:, i + 1) + &
+        & c11*band%drem(:, i + 1)
+    end function hermite
   end subroutine band_eval
+
+  !> The five receptances in v (set_receptances' order: gE, gg, EE, sE, sg) into their fields.
+  pure subroutine store_receptances(v, gE, gg, EE, sE, sg)
+    complex(wp), intent(in) :: v(5)
+    complex(wp), intent(out) :: gE, gg, EE, sE, sg
+    gE = v(1)
+    gg = v(2)
+    EE = v(3)
+    sE = v(4)
+    sg = v(5)
+  end subroutine store_receptances
 end module udmap_mapping_band_receptances

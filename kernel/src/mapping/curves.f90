@@ -14,6 +14,7 @@
 module udmap_mapping_curves
   use udmap_core_kinds, only: wp, pi
   use udmap_core_error, only: error_type, fatal_error, UDMAP_EINPUT
+  use udmap_core_arrays, only: grow
   use udmap_blade_type, only: receptances_type, layer_response
   use udmap_mapping_layer, only: layer_amplitude, layer_crossing, bare_receptances
   use udmap_mapping_model_data, only: model_type, point_type, curve_type, check_forces, &
@@ -161,14 +162,12 @@ contains
     type(point_list), intent(inout) :: list
     real(wp), intent(in) :: gamma, omega, sigma
     integer, intent(in) :: kind
-    real(wp), allocatable :: t(:)
-    integer, allocatable :: ti(:)
     if (list%n == list%alloc) then
       list%alloc = max(64, 2*list%alloc)
-      allocate(t(list%alloc)); t(1:list%n) = list%gamma(1:list%n); call move_alloc(t, list%gamma)
-      allocate(t(list%alloc)); t(1:list%n) = list%omega(1:list%n); call move_alloc(t, list%omega)
-      allocate(t(list%alloc)); t(1:list%n) = list%sigma(1:list%n); call move_alloc(t, list%sigma)
-      allocate(ti(list%alloc)); ti(1:list%n) = list%kind(1:list%n); call move_alloc(ti, list%kind)
+      call grow(list%gamma, list%n, list%alloc)
+      call grow(list%omega, list%n, list%alloc)
+      call grow(list%sigma, list%n, list%alloc)
+      call grow(list%kind, list%n, list%alloc)
     end if
     list%n = list%n + 1
     list%gamma(list%n) = gamma

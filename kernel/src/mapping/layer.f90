@@ -107,7 +107,7 @@ contains
     type(receptances_type) :: r, rc(ncache)
     real(wp) :: xc(ncache), s_lo, s_hi, s0, s1, p0, p1, step, d, q, amp, tol, x, w, est, slope
     type(brent_type) :: brent
-    logical :: more, may_predict
+    logical :: more, may_predict, done
     integer :: it, nc, i
 
     s_lo = omega_lo**2
@@ -119,12 +119,8 @@ contains
     may_predict = .false.
     if (present(predict)) may_predict = predict .and. present(dpsi)
     nc = 0
-    call evaluate(s0, p0, r)
-    if (allocated(error)) return
-    if (p0 == 0) then
-      call finish(s0, r)
-      return
-    end if
+    call evaluate_or_finish(s0, p0, done)
+    if (done) return
     amp = layer_amplitude(r, k)
     if (present(dpsi)) then
       slope = dpsi
@@ -162,12 +158,8 @@ contains
         if (s0 >= s_hi) peak%status = PEAK_ABOVE_BAND
         return
       end if
-      call evaluate(s1, p1, r)
-      if (allocated(error)) return
-      if (p1 == 0) then
-        call finish(s1, r)
-        return
-      end if
+      call evaluate_or_finish(s1, p1, done)
+      if (done) return
       ! secant estimate from the last two points, and its error bound
       if (p1 /= p0) then
         slope = (p1 - p0)/(s1 - s0)
@@ -226,6 +218,18 @@ contains
     peak%dpsi = slope
 
   contains
+
+    !> evaluate at s into r; done on an error, or where psi is zero (the peak, finished there).
+    subroutine evaluate_or_finish(s, psi, done)
+      real(wp), intent(in) :: s
+      real(wp), intent(out) :: psi
+      logical, intent(out) :: done
+      call evaluate(s, psi, r)
+      done = allocated(error)
+      if (done .or. psi /= 0) return
+      call finish(s, r)
+      done = .true.
+    end subroutine evaluate_or_finish
 
     !> psi and the receptances at s = omega^2 (kept in a small cache of recent points).
     subroutine evaluate(s, psi, rs)

@@ -17,19 +17,18 @@
 !> response and response_curves.
 module udmap_mapping_model
   use udmap_core_kinds, only: wp, pi
-  use udmap_core_error, only: error_type, fatal_error, UDMAP_EINPUT
+  use udmap_core_error, only: error_type, fatal_error, require, UDMAP_EINPUT
   use udmap_blade_type, only: blade_type
   use udmap_damper_type, only: damper_type
   use udmap_mapping_eigen_start, only: new_secular
   use udmap_mapping_band_receptances, only: new_band_receptances
-  use udmap_mapping_harmonic_types, only: HARMONICS_MAX
   use udmap_mapping_model_data, only: analysis_type, point_type, curve_type, model_type, &
     & check_model_damper, set_damper, limit_force, limit_force_backbone, EIGEN_AUTO, &
     & EIGEN_DIRECT, EIGEN_MODAL, REGIME_STUCK, REGIME_PARTIAL_SLIP, REGIME_FULL_SLIP, &
     & REGIME_LIMIT, BRANCH_LOWER, BRANCH_UPPER, BRANCH_TURNING
   use udmap_mapping_backbone, only: backbone_curve
   use udmap_mapping_harmonic_mapping, only: backbone, response, response_curves, &
-    & harmonics_near_modes, set_harmonics
+    & harmonics_near_modes, set_harmonics, check_harmonics
   use udmap_mapping_admissible, only: admissible_force
   implicit none
   private
@@ -54,49 +53,24 @@ contains
     integer :: r
     character(len=32) :: buf
     associate(a => analysis)
-      if (.not.(a%f_min > 0 .and. a%f_min < huge(1.0_wp))) then
-        call fatal_error(error, "analysis.f_min must be a positive number [Hz]", UDMAP_EINPUT)
-        return
-      end if
-      if (.not.(a%f_max > a%f_min .and. a%f_max < huge(1.0_wp))) then
-        call fatal_error(error, "analysis.f_max must be a number above f_min [Hz]", UDMAP_EINPUT)
-        return
-      end if
-      if (.not.(a%sigma_all > 0 .and. a%sigma_all < huge(1.0_wp))) then
-        call fatal_error(error, "analysis.sigma_all must be a positive number [Pa]", UDMAP_EINPUT)
-        return
-      end if
-      if (.not.(a%rtol >= 1e-15_wp .and. a%rtol <= 1e-3_wp)) then
-        call fatal_error(error, "analysis.rtol must lie in [1e-15, 1e-3]", UDMAP_EINPUT)
-        return
-      end if
-      if (a%grid_per_decade < 2 .or. a%grid_per_decade > 1000) then
-        call fatal_error(error, "analysis.grid_per_decade must lie in [2, 1000]", UDMAP_EINPUT)
-        return
-      end if
-      if (a%eigen_method < EIGEN_AUTO .or. a%eigen_method > EIGEN_MODAL) then
-        call fatal_error(error, "analysis.eigen_method must be 0 (auto), 1 (direct) or "// &
-          & "2 (modal)", UDMAP_EINPUT)
-        return
-      end if
-      if (a%dense_max < 1) then
-        call fatal_error(error, "analysis.dense_max must be positive", UDMAP_EINPUT)
-        return
-      end if
-      if (a%sweep_points < 16 .or. a%sweep_points > 1000000) then
-        call fatal_error(error, "analysis.sweep_points must lie in [16, 1e6]", UDMAP_EINPUT)
-        return
-      end if
-      if (a%harmonics < 0 .or. a%harmonics > HARMONICS_MAX) then
-        call fatal_error(error, "analysis.harmonics must be 1, an integer up to 64, or auto (0)", &
-          & UDMAP_EINPUT)
-        return
-      end if
-      if (.not.(a%harmonic_tol >= 1e-10_wp .and. a%harmonic_tol <= 0.1_wp)) then
-        call fatal_error(error, "analysis.harmonic_tol must lie in [1e-10, 0.1]", UDMAP_EINPUT)
-        return
-      end if
+      call require(a%f_min > 0 .and. a%f_min < huge(1.0_wp), &
+        & "analysis.f_min must be a positive number [Hz]", error)
+      call require(a%f_max > a%f_min .and. a%f_max < huge(1.0_wp), &
+        & "analysis.f_max must be a number above f_min [Hz]", error)
+      call require(a%sigma_all > 0 .and. a%sigma_all < huge(1.0_wp), &
+        & "analysis.sigma_all must be a positive number [Pa]", error)
+      call require(a%rtol >= 1e-15_wp .and. a%rtol <= 1e-3_wp, &
+        & "analysis.rtol must lie in [1e-15, 1e-3]", error)
+      call require(a%grid_per_decade >= 2 .and. a%grid_per_decade <= 1000, &
+        & "analysis.grid_per_decade must lie in [2, 1000]", error)
+      call require(a%eigen_method >= EIGEN_AUTO .and. a%eigen_method <= EIGEN_MODAL, &
+        & "analysis.eigen_method must be 0 (auto), 1 (direct) or 2 (modal)", error)
+      call require(a%dense_max >= 1, "analysis.dense_max must be positive", error)
+      call require(a%sweep_points >= 16 .and. a%sweep_points <= 1000000, &
+        & "analysis.sweep_points must lie in [16, 1e6]", error)
+      call check_harmonics(a%harmonics, a%harmonic_tol, error)
     end associate
+    if (allocated(error)) return
     if (blade%ndof < 1 .or. .not.allocated(blade%phi) .or. .not.allocated(blade%omega)) then
       call fatal_error(error, "model: the blade is not built (no DOFs or no bare modes)", &
         & UDMAP_EINPUT)

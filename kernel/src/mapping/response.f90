@@ -8,6 +8,7 @@
 !> evaluations are needed.
 module udmap_mapping_response
   use udmap_core_kinds, only: wp, pi
+  use udmap_core_strings, only: rtoa
   use udmap_core_error, only: error_type, fatal_error, UDMAP_EINPUT, UDMAP_EPHYSICS
   use udmap_blade_type, only: receptances_type
   use udmap_mapping_layer, only: bare_receptances
@@ -35,14 +36,11 @@ contains
     real(wp), allocatable :: roots(:)
     real(wp) :: F_lim, omega
     integer :: i
-    character(len=32) :: b1, b2, b3
     allocate(points(size(F_E)))
     if (.not.(f_exc >= model%analysis%f_min .and. f_exc <= model%analysis%f_max)) then
-      write(b1, '(g0.6)') f_exc
-      write(b2, '(g0.6)') model%analysis%f_min
-      write(b3, '(g0.6)') model%analysis%f_max
-      call fatal_error(error, "response: f_exc = "//trim(b1)//" Hz must lie in the band ["// &
-        & trim(b2)//", "//trim(b3)//"] Hz", UDMAP_EINPUT)
+      call fatal_error(error, "response: f_exc = "//rtoa(f_exc, "(g0.6)")//" Hz must lie in "// &
+        & "the band ["//rtoa(model%analysis%f_min, "(g0.6)")//", "// &
+        & rtoa(model%analysis%f_max, "(g0.6)")//"] Hz", UDMAP_EINPUT)
       return
     end if
     call check_forces(F_E, "response", error)

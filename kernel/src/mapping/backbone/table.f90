@@ -5,6 +5,7 @@
 !> envelope theorem for the slope).
 module udmap_mapping_backbone_table
   use udmap_core_kinds, only: wp
+  use udmap_core_strings, only: rtoa
   use udmap_core_error, only: error_type, fatal_error, UDMAP_EINPUT, UDMAP_EPHYSICS, &
     & UDMAP_ENUMERIC
   use udmap_mapping_caches, only: layer_peak_type, PEAK_OK, PEAK_BELOW_BAND
@@ -21,6 +22,9 @@ module udmap_mapping_backbone_table
   integer, parameter :: max_decades = 12
   !> Peak tolerance of the grid nodes (which only bracket roots and start searches).
   real(wp), parameter :: table_rtol = 1.0e-7_wp
+  !> The end of the message where the grid would leave a measured table's stiffness range.
+  character(len=*), parameter :: beyond_range = "beyond the damper's stiffness range (a "// &
+    & "measured table without delta_M ends at its last row)"
 
 contains
 
@@ -189,18 +193,15 @@ contains
     real(wp), intent(in) :: gamma
     type(layer_peak_type), intent(in) :: peak
     type(error_type), allocatable, intent(out) :: error
-    character(len=32) :: bg, bl, bh
     character(len=:), allocatable :: where
-    write(bg, '(es11.4)') gamma
-    write(bl, '(g0.6)') model%analysis%f_min
-    write(bh, '(g0.6)') model%analysis%f_max
     if (peak%status == PEAK_BELOW_BAND) then
       where = "f_min; the resonance lies below the band"
     else
       where = "f_max; the resonance lies above the band"
     end if
-    call fatal_error(error, "no resonance in the band ["//trim(bl)//", "//trim(bh)// &
-      & "] Hz: at gamma_P = "//trim(adjustl(bg))//" rad the layer response still grows at "// &
+    call fatal_error(error, "no resonance in the band ["//rtoa(model%analysis%f_min, "(g0.6)")// &
+      & ", "//rtoa(model%analysis%f_max, "(g0.6)")//"] Hz: at gamma_P = "// &
+      & rtoa(gamma, "(es11.4)")//" rad the layer response still grows at "// &
       & where, UDMAP_EPHYSICS)
   end subroutine band_error
 
@@ -329,7 +330,6 @@ contains
     logical, intent(out), optional :: reached
     integer :: gpd, j_cap, j_need
     logical :: capped
-    character(len=32) :: buf
     gpd = model%analysis%grid_per_decade
     j_cap = j_limit(model)
     capped = j_cap < max_decades*gpd
@@ -337,14 +337,12 @@ contains
       j_need = ceiling(gpd*log10(gamma_top/model%table%gamma_ref)) + 1
       if (capped .and. gamma_top <= model%damper%gamma_max) j_need = min(j_need, j_cap)
       if (j_need > j_cap) then
-        write(buf, '(es11.4)') gamma_top
         if (capped) then
-          call fatal_error(error, "backbone: gamma = "//trim(adjustl(buf))//" rad is beyond "// &
-            & "the damper's stiffness range (a measured table without delta_M ends at its "// &
-            & "last row)", UDMAP_EINPUT)
+          call fatal_error(error, "backbone: gamma = "//rtoa(gamma_top, "(es11.4)")//" rad is "// &
+            & beyond_range, UDMAP_EINPUT)
         else
-          call fatal_error(error, "backbone: gamma = "//trim(adjustl(buf))//" rad is more "// &
-            & "than 1e12 gamma_b, out of the model's reach", UDMAP_EINPUT)
+          call fatal_error(error, "backbone: gamma = "//rtoa(gamma_top, "(es11.4)")// &
+            & " rad is more than 1e12 gamma_b, out of the model's reach", UDMAP_EINPUT)
         end if
         return
       end if
@@ -358,15 +356,13 @@ contains
           & (.not.capped .and. t%j_hi >= j_rising(model) .and. &
           & t%node(t%j_hi)%F_bb >= t%node(t%j_hi - 1)%F_bb))))
         if (t%j_hi >= j_cap) then
-          write(buf, '(es11.4)') F_max
           if (capped) then
-            call fatal_error(error, "backbone: the response to F_E = "//trim(adjustl(buf))// &
-              & " N goes beyond the damper's stiffness range (a measured table without "// &
-              & "delta_M ends at its last row)", UDMAP_EINPUT)
+            call fatal_error(error, "backbone: the response to F_E = "// &
+              & rtoa(F_max, "(es11.4)")//" N goes "//beyond_range, UDMAP_EINPUT)
           else if (present(reached)) then
             reached = .false.
           else
-            call fatal_error(error, "backbone: F_E = "//trim(adjustl(buf))//" N is not "// &
+            call fatal_error(error, "backbone: F_E = "//rtoa(F_max, "(es11.4)")//" N is not "// &
               & "reached below 1e12 gamma_b", UDMAP_EPHYSICS)
           end if
           return

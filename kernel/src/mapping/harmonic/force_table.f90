@@ -21,6 +21,7 @@
 module udmap_mapping_harmonic_force_table
   use, intrinsic :: iso_fortran_env, only: int64
   use udmap_core_kinds, only: wp
+  use udmap_core_arrays, only: grow
   use udmap_mapping_harmonic_types, only: table_node_type, force_table_type
   implicit none
   private
@@ -85,8 +86,6 @@ contains
     type(force_table_type), intent(inout) :: t
     real(wp), intent(in) :: u
     integer(int64) :: k
-    integer(int64), allocatable :: grown(:)
-    integer, allocatable :: grown_h(:)
     k = panel_lo(u, 0)
     if (allocated(t%visited)) then
       if (any(t%visited(1:t%n_visit) == k)) then
@@ -97,11 +96,8 @@ contains
       allocate(t%visited(8), t%visited_h(8))
     end if
     if (t%n_visit == size(t%visited)) then
-      allocate(grown(2*size(t%visited)), grown_h(2*size(t%visited)))
-      grown(1:t%n_visit) = t%visited(1:t%n_visit)
-      grown_h(1:t%n_visit) = t%visited_h(1:t%n_visit)
-      call move_alloc(grown, t%visited)
-      call move_alloc(grown_h, t%visited_h)
+      call grow(t%visited, t%n_visit, 2*t%n_visit)
+      call grow(t%visited_h, t%n_visit, 2*t%n_visit)
     end if
     t%n_visit = t%n_visit + 1
     t%visited(t%n_visit) = k
@@ -320,24 +316,15 @@ contains
     type(force_table_type), intent(inout) :: t
     integer(int64), intent(in) :: lo, hi
     integer, intent(in) :: h, status
-    integer(int64), allocatable :: g(:)
-    integer, allocatable :: gs(:), gh(:)
     integer :: n
     if (.not.allocated(t%leaf_lo)) allocate(t%leaf_lo(16), t%leaf_hi(16), t%leaf_status(16), &
       & t%leaf_h(16))
     n = size(t%leaf_lo)
     if (t%n_leaf == n) then
-      allocate(g(2*n))
-      g(1:n) = t%leaf_lo
-      call move_alloc(g, t%leaf_lo)
-      allocate(g(2*n))
-      g(1:n) = t%leaf_hi
-      call move_alloc(g, t%leaf_hi)
-      allocate(gs(2*n), gh(2*n))
-      gs(1:n) = t%leaf_status
-      gh(1:n) = t%leaf_h
-      call move_alloc(gs, t%leaf_status)
-      call move_alloc(gh, t%leaf_h)
+      call grow(t%leaf_lo, n, 2*n)
+      call grow(t%leaf_hi, n, 2*n)
+      call grow(t%leaf_status, n, 2*n)
+      call grow(t%leaf_h, n, 2*n)
     end if
     t%n_leaf = t%n_leaf + 1
     t%leaf_lo(t%n_leaf) = lo

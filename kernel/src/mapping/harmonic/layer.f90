@@ -336,14 +336,16 @@ contains
       end do
     end subroutine residual
 
-    subroutine moments(xv, err)
+    !> The moments for xv (Gamma_1 = gamma, or gamma1 when given).
+    subroutine moments(xv, err, gamma1)
       real(wp), intent(in) :: xv(:)
       type(error_type), allocatable, intent(out) :: err
-      integer :: k
-      s%G(1) = cmplx(gamma, 0.0_wp, wp)
-      do k = 2, H
-        s%G(k) = cmplx(xv(2*k-2), xv(2*k-1), wp)
-      end do
+      real(wp), intent(in), optional :: gamma1
+      if (present(gamma1)) then
+        call set_G(gamma1, xv, H, s%G)
+      else
+        call set_G(gamma, xv, H, s%G)
+      end if
       call aft_moment(ws%element, ws%aft, xv(1), s%G, 0, aft_min_periods, aft_max_periods, &
         & aft_loop_rtol, s%M0, s%M, err)
       ws%traces = ws%traces + 1
@@ -362,10 +364,7 @@ contains
       logical :: lift_base, ok
       integer :: k
       lift_base = ws%aft%lift_off
-      s%G(1) = cmplx(gamma, 0.0_wp, wp)
-      do k = 2, H
-        s%G(k) = cmplx(xv(2*k-2), xv(2*k-1), wp)
-      end do
+      call set_G(gamma, xv, H, s%G)
       call aft_moment_jacobian(ws%element, ws%aft, xv(1), s%G, aft_min_periods, &
         & aft_max_periods, aft_loop_rtol, M0_a, Mc_a, JA, ok, err)
       ws%traces = ws%traces + 1
@@ -398,25 +397,13 @@ contains
       end do
       ! and against Gamma_1
       d = fd_step*gamma
-      s%G(1) = cmplx(gamma + d, 0.0_wp, wp)
-      do k = 2, H
-        s%G(k) = cmplx(xv(2*k-2), xv(2*k-1), wp)
-      end do
-      call aft_moment(ws%element, ws%aft, xv(1), s%G, 0, aft_min_periods, aft_max_periods, &
-        & aft_loop_rtol, s%M0, s%M, err)
-      ws%traces = ws%traces + 1
-      if (allocated(err)) then
-        err%message = "harmonic layer: "//err%message
-        return
-      end if
+      call moments(xv, err, gamma + d)
+      if (allocated(err)) return
       call pack_m(m_pert)
       s%JM1 = (m_pert - m_base)/d
       s%M0 = M0_base
       s%M = Mc_base
-      s%G(1) = cmplx(gamma, 0.0_wp, wp)
-      do k = 2, H
-        s%G(k) = cmplx(xv(2*k-2), xv(2*k-1), wp)
-      end do
+      call set_G(gamma, xv, H, s%G)
       ws%aft%lift_off = lift_base
       s%x_jm = xv
       s%jm_valid = .true.
@@ -476,13 +463,22 @@ contains
   pure subroutine unpack_x(x, s)
     real(wp), intent(in) :: x(:)
     type(harmonic_state_type), intent(inout) :: s
-    integer :: k
     s%G0 = x(1)
-    s%G(1) = cmplx(s%gamma, 0.0_wp, wp)
-    do k = 2, s%H
-      s%G(k) = cmplx(x(2*k-2), x(2*k-1), wp)
-    end do
+    call set_G(s%gamma, x, s%H, s%G)
   end subroutine unpack_x
+
+  !> The harmonics G(1:H) of gamma(t): Gamma_1 = g1 (real) and Gamma_k from the unknowns x
+  !> (Re, Im at 2k-2, 2k-1).
+  pure subroutine set_G(g1, x, H, G)
+    real(wp), intent(in) :: g1, x(:)
+    integer, intent(in) :: H
+    complex(wp), intent(inout) :: G(:)
+    integer :: k
+    G(1) = cmplx(g1, 0.0_wp, wp)
+    do k = 2, H
+      G(k) = cmplx(x(2*k-2), x(2*k-1), wp)
+    end do
+  end subroutine set_G
 
   !> Stress and displacement harmonics of a solved layer (force s%P), and the largest
   !> excursions of gamma(t) and sigma(t) from their means.

@@ -21,7 +21,7 @@ module udmap_mapping_harmonic_mapping
   use, intrinsic :: iso_fortran_env, only: int64
   use udmap_core_kinds, only: wp, pi
   use udmap_core_sorting, only: sort_ascending
-  use udmap_core_error, only: error_type, fatal_error, UDMAP_EINPUT
+  use udmap_core_error, only: error_type, fatal_error, require, UDMAP_EINPUT
   use udmap_damper_type, only: DAMPER_ASYMMETRIC, DAMPER_JENKINS
   use udmap_contact_element_jenkins, only: jenkins_element_type, new_jenkins_element
   use udmap_contact_element_asymmetric, only: contact_element_type, new_contact_element
@@ -40,7 +40,8 @@ module udmap_mapping_harmonic_mapping
     & TABLE_SPLIT, LEVEL_MAX
   implicit none
   private
-  public :: backbone, response, response_curves, harmonics_near_modes, set_harmonics
+  public :: backbone, response, response_curves, harmonics_near_modes, set_harmonics, &
+    & check_harmonics
 
   !> The ladder of H tried by the automatic choice.
   integer, parameter :: ladder(10) = [3, 5, 7, 9, 13, 17, 25, 33, 49, 64]
@@ -62,22 +63,50 @@ contains
     integer, intent(in) :: harmonics
     real(wp), intent(in) :: harmonic_tol
     type(error_type), allocatable, intent(out) :: error
-    if (harmonics < 0 .or. harmonics > HARMONICS_MAX) then
-      call fatal_error(error, "analysis.harmonics must be 1, an integer up to 64, or auto (0)", &
-        & UDMAP_EINPUT)
-      return
-    end if
-    if (.not.(harmonic_tol >= 1e-10_wp .and. harmonic_tol <= 0.1_wp)) then
-      call fatal_error(error, "analysis.harmonic_tol must lie in [1e-10, 0.1]", UDMAP_EINPUT)
-      return
-    end if
+    call check_harmonics(harmonics, harmonic_tol, error)
+    if (allocated(error)) return
     model%analysis%harmonics = harmonics
     model%analysis%harmonic_tol = harmonic_tol
   end subroutine set_harmonics
 
+  !> The checks of analysis%harmonics and harmonic_tol, as a series of `require` (the model's
+  !> analysis and set_harmonics).
+  pure subroutine check_harmonics(harmonics, harmonic_tol, error)
+    integer, intent(in) :: harmonics
+    real(wp), intent(in) :: harmonic_tol
+    type(error_type), allocatable, intent(inout) :: error
+    call require(harmonics >= 0 .and. harmonics <= HARMONICS_MAX, &
+      & "analysis.harmonics must be 1, an integer up to 64, or auto (0)", error)
+    call require(harmonic_tol >= 1e-10_wp .and. harmonic_tol <= 0.1_wp, &
+      & "analysis.harmonic_tol must lie in [1e-10, 0.1]", error)
+  end subroutine check_harmonics
+
   !> The peaks of the non-linear response for the forces F_E [N] (PHYSICS.md 4 and 4.1).
   subroutine backbone(model, F_E, points, error)
     type(model_type), intent(inout) :: model
+    real(wp), intent(in) :: F_E(:)
+    type(point_type), allocatable, intent(out) :: points(:)
+    type(error_type), allocatable, intent(out) :: error
+    call layered(model, .true., 0.0_wp, F_E, points, error)
+  end subroutine backbone
+
+  !> The response at the excitation frequency f_exc [Hz] for the forces F_E [N].
+  subroutine response(model, f_exc, F_E, points, error)
+    type(model_type), intent(inout) :: model
+    real(wp), intent(in) :: f_exc
+    real(wp), intent(in) :: F_E(:)
+    type(point_type), allocatable, intent(out) :: points(:)
+    type(error_type), allocatable, intent(out) :: error
+    call layered(model, .false., f_exc, F_E, points, error)
+  end subroutine response
+
+  !> The single-harmonic points for the forces F_E (at_peak: the backbone, else the response
+  !> at f_exc [Hz]), each solved again as a multi-harmonic point when H /= 1: a backbone point
+  !> from the force table where it is on, an unbounded one kept as it is.
+  subroutine layered(model, at_peak, f_exc, F_E, points, error)
+    type(model_type), intent(inout) :: model
+    logical, intent(in) :: at_peak
+    real(wp), intent(in) :: f_exc
     real(wp), intent(in) :: F_E(:)
     type(point_type), allocatable, intent(out) :: points(:)
     type(error_type), allocatable, intent(out) :: error
@@ -88,7 +117,11 @@ contains
     model%analysis%eigen_method = em
   contains
     subroutine run()
-      call backbone_single(model, F_E, p1, error)
+      if (at_peak) then
+        call backbone_single(model, F_E, p1, error)
+      else
+        call response_single(model, f_exc, F_E, p1, error)
+      end if
       if (model%analysis%harmonics == 1 .or. allocated(error)) then
         call move_alloc(p1, points)
         return
@@ -97,20 +130,20 @@ contains
       if (allocated(error)) return
       allocate(points(size(F_E)))
       do i = 1, size(F_E)
-        if (p1(i)%unbounded) then
+        if (at_peak .and. p1(i)%unbounded) then
           points(i) = p1(i)
           cycle
         end if
-        if (model%force_table .and. table_share*model%analysis%harmonic_tol >= table_tol_min) &
-          & then
+        if (at_peak .and. model%force_table .and. &
+          & table_share*model%analysis%harmonic_tol >= table_tol_min) then
           call table_point(model, p1(i), points(i), error)
         else
-          call multi_point(model, p1(i), .true., points(i), error)
+          call multi_point(model, p1(i), at_peak, points(i), error)
         end if
         if (allocated(error)) return
       end do
     end subroutine run
-  end subroutine backbone
+  end subroutine layered
 
   !> The single-harmonic pass that starts the layers (H /= 1) needs only starts: with the
   !> default eigenvalue start and no direct eigen-solve done yet, it takes the secular
@@ -279,35 +312,6 @@ contains
       & F_lim < huge(1.0_wp)
   end subroutine unpack_point
 
-  !> The response at the excitation frequency f_exc [Hz] for the forces F_E [N].
-  subroutine response(model, f_exc, F_E, points, error)
-    type(model_type), intent(inout) :: model
-    real(wp), intent(in) :: f_exc
-    real(wp), intent(in) :: F_E(:)
-    type(point_type), allocatable, intent(out) :: points(:)
-    type(error_type), allocatable, intent(out) :: error
-    type(point_type), allocatable :: p1(:)
-    integer :: i, em
-    em = starts_modal(model)
-    call run()
-    model%analysis%eigen_method = em
-  contains
-    subroutine run()
-      call response_single(model, f_exc, F_E, p1, error)
-      if (model%analysis%harmonics == 1 .or. allocated(error)) then
-        call move_alloc(p1, points)
-        return
-      end if
-      call ensure_element(model, error)
-      if (allocated(error)) return
-      allocate(points(size(F_E)))
-      do i = 1, size(F_E)
-        call multi_point(model, p1(i), .false., points(i), error)
-        if (allocated(error)) return
-      end do
-    end subroutine run
-  end subroutine response
-
   !> The response curves (PHYSICS.md 3) for the forces F_E [N]. With H > 1 (or auto: the H
   !> of each force's peak) every point of the single-harmonic curve is solved again as a
   !> multi-harmonic layer at its frequency (|P(omega; gamma)| = F_E from its single-harmonic
@@ -376,34 +380,31 @@ contains
     type(model_type), intent(in) :: model
     real(wp), intent(in) :: omega
     integer, intent(in) :: h_cap
-    integer :: r, h
-    hmax = 0
-    do r = 2, size(model%blade%omega)
-      do h = 2, min(h_cap, HARMONICS_MAX)
-        if (abs(h*omega/model%blade%omega(r) - 1) <= near_mode) hmax = max(hmax, h)
-      end do
-    end do
+    hmax = near_mode_harmonic(model, omega, 2, min(h_cap, HARMONICS_MAX), .true.)
   end function harmonics_near_modes
 
-  !> The smallest harmonic above H whose h omega lies near a bare mode above mode 1 (0: none
-  !> up to HARMONICS_MAX): the next rung of the automatic H reaches it, as truncating just
-  !> below an amplified harmonic can look converged (blade A at 3.97 N: H = 6 and 7 agree to
-  !> 7e-4 in gamma_P, and both are 0.8 % from H = 46 through the 14th harmonic and above).
-  integer function next_near_mode(model, omega, H) result(h_next)
+  !> The lowest (highest: the highest) harmonic h_lo <= h <= h_hi whose h omega [rad/s] lies
+  !> within near_mode of a bare mode above mode 1 (0 if none). The lowest above H is the next
+  !> rung of the automatic H, as truncating just below an amplified harmonic can look
+  !> converged (blade A at 3.97 N: H = 6 and 7 agree to 7e-4 in gamma_P, and both are 0.8 %
+  !> from H = 46 through the 14th harmonic and above).
+  integer function near_mode_harmonic(model, omega, h_lo, h_hi, highest) result(h_near)
     type(model_type), intent(in) :: model
     real(wp), intent(in) :: omega
-    integer, intent(in) :: H
-    integer :: r, k
-    h_next = 0
-    do k = H + 1, HARMONICS_MAX
+    integer, intent(in) :: h_lo, h_hi
+    logical, intent(in) :: highest
+    integer :: h, r
+    h_near = 0
+    do h = h_lo, h_hi
       do r = 2, size(model%blade%omega)
-        if (abs(k*omega/model%blade%omega(r) - 1) <= near_mode) then
-          h_next = k
-          return
+        if (abs(h*omega/model%blade%omega(r) - 1) <= near_mode) then
+          h_near = h
+          if (.not.highest) return
+          exit
         end if
       end do
     end do
-  end function next_near_mode
+  end function near_mode_harmonic
 
   !> The contact element of the model's damper, rebuilt when the damper changed.
   subroutine ensure_element(model, error)
@@ -482,7 +483,7 @@ contains
         s_prev = s
         out_prev = out
         H = max(ladder(findloc(ladder > H, .true., 1)), &
-          & harmonics_near_modes(model, s%omega, 2*H), next_near_mode(model, s%omega, H))
+          & harmonics_near_modes(model, s%omega, 2*H), near_mode_harmonic(model, s%omega, H + 1, HARMONICS_MAX, .false.))
         call solve_root(s_prev%gamma, s_prev%omega, H, s, error, s_prev)
         if (allocated(error)) return
         call harmonic_outputs(model%harm, s, model%blade%has_stress, out)

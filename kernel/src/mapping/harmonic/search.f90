@@ -6,6 +6,7 @@
 module udmap_mapping_harmonic_search
   use udmap_core_kinds, only: wp, pi
   use udmap_core_error, only: error_type, fatal_error, UDMAP_ENUMERIC, UDMAP_EPHYSICS
+  use udmap_core_root_finding, only: brent_bracket, brent_step
   use udmap_blade_type, only: blade_type
   use udmap_mapping_harmonic_types, only: harmonic_workspace_type, harmonic_state_type
   use udmap_mapping_harmonic_layer, only: harmonic_solve
@@ -26,7 +27,7 @@ contains
     type(harmonic_state_type), intent(inout) :: s
     type(error_type), allocatable, intent(out) :: error
     real(wp), intent(in), optional :: omega_start
-    real(wp) :: w0, w1, p0, p1, wn, a, b, fa, fb, c, fc, d, e, tol, m, pp, q, r, sfac
+    real(wp) :: w0, w1, p0, p1, wn, a, b, fa, fb, c, fc, d, e, tol, m
     integer :: it
     logical :: bracketed
     character(len=160) :: buf
@@ -72,51 +73,15 @@ contains
       call fatal_error(error, trim(buf), UDMAP_ENUMERIC)
       return
     end if
-    ! Brent on psi in [w0, w1] (s holds w1)
+    ! Brent on psi in [w0, w1] (s holds w1), with a relative tolerance and its own sign test
     a = w0; fa = p0; b = w1; fb = p1
     c = a; fc = fa; d = b - a; e = d
     do it = 1, 100
-      if ((fb > 0) .eqv. (fc > 0)) then
-        c = a; fc = fa; d = b - a; e = d
-      end if
-      if (abs(fc) < abs(fb)) then
-        a = b; b = c; c = a
-        fa = fb; fb = fc; fc = fa
-      end if
+      call brent_bracket((fb > 0) .eqv. (fc > 0), a, b, c, fa, fb, fc, d, e)
       tol = 0.5_wp*rtol*abs(b)
       m = 0.5_wp*(c - b)
       if (abs(m) <= tol .or. fb == 0) exit
-      if (abs(e) >= tol .and. abs(fa) > abs(fb)) then
-        sfac = fb/fa
-        if (a == c) then
-          pp = 2*m*sfac
-          q = 1 - sfac
-        else
-          q = fa/fc
-          r = fb/fc
-          pp = sfac*(2*m*q*(q - r) - (b - a)*(r - 1))
-          q = (q - 1)*(r - 1)*(sfac - 1)
-        end if
-        if (pp > 0) then
-          q = -q
-        else
-          pp = -pp
-        end if
-        if (2*pp < min(3*m*q - abs(tol*q), abs(e*q))) then
-          e = d
-          d = pp/q
-        else
-          d = m; e = m
-        end if
-      else
-        d = m; e = m
-      end if
-      a = b; fa = fb
-      if (abs(d) > tol) then
-        b = b + d
-      else
-        b = b + sign(tol, m)
-      end if
+      call brent_step(a, b, c, fa, fb, fc, d, e, tol, m)
       call harmonic_solve(ws, blade, gamma, b, s, error)
       if (allocated(error)) return
       fb = s%psi
@@ -141,8 +106,8 @@ contains
     logical, intent(out), optional :: jump
     type(harmonic_state_type), intent(out), optional :: below
     type(harmonic_state_type) :: s_neg, s_pos
-    real(wp) :: u0, u1, f0, f1, slope, du, u_neg, u_pos, f_neg, f_pos
-    logical :: have_neg, have_pos
+    real(wp) :: u0, u1, f0, f1, slope, u_neg, u_pos, f_neg, f_pos
+    logical :: have_neg, have_pos, converged, moved
     integer :: it
     character(len=160) :: buf
     if (present(jump)) jump = .false.
@@ -156,22 +121,12 @@ contains
       if (allocated(error)) return
       f1 = log(abs(s%P)/F_E)
       call keep_bracket(u1, f1)
-      if (it > 1) then
-        if (u1 /= u0 .and. f1 /= f0) slope = (f1 - f0)/(u1 - u0)
-      end if
-      du = -f1/slope
-      du = max(-0.5_wp, min(0.5_wp, du))
-      if (abs(du) <= rtol .or. f1 == 0) then
-        if (abs(du) > 0) then
-          ! one more exactly at the root
-          u1 = u1 + du
-          call harmonic_peak(ws, blade, exp(u1), omega_lo, omega_hi, rtol, s, error)
-        end if
+      call secant_step(it, rtol, u0, f0, u1, f1, slope, converged, moved)
+      if (converged) then
+        ! one more exactly at the root
+        if (moved) call harmonic_peak(ws, blade, exp(u1), omega_lo, omega_hi, rtol, s, error)
         return
       end if
-      u0 = u1
-      f0 = f1
-      u1 = u1 + du
     end do
     if (.not.(have_neg .and. have_pos)) then
       write(buf, '(a, i0, a, es12.5, a)') "harmonic backbone (H = ", s%H, "): no root found "// &
@@ -292,7 +247,8 @@ contains
     real(wp), intent(in) :: F_E, gamma_start, omega, rtol
     type(harmonic_state_type), intent(inout) :: s
     type(error_type), allocatable, intent(out) :: error
-    real(wp) :: u0, u1, f0, f1, slope, du
+    real(wp) :: u0, u1, f0, f1, slope
+    logical :: converged, moved
     integer :: it
     character(len=160) :: buf
     u1 = log(gamma_start)
@@ -301,25 +257,46 @@ contains
       call harmonic_solve(ws, blade, exp(u1), omega, s, error)
       if (allocated(error)) return
       f1 = log(abs(s%P)/F_E)
-      if (it > 1) then
-        if (u1 /= u0 .and. f1 /= f0) slope = (f1 - f0)/(u1 - u0)
-      end if
-      if (.not.(abs(slope) > 1.0e-3_wp)) slope = sign(1.0e-3_wp, slope)
-      du = -f1/slope
-      du = max(-0.5_wp, min(0.5_wp, du))
-      if (abs(du) <= rtol .or. f1 == 0) then
-        if (abs(du) > 0) then
-          u1 = u1 + du
-          call harmonic_solve(ws, blade, exp(u1), omega, s, error)
-        end if
+      call secant_step(it, rtol, u0, f0, u1, f1, slope, converged, moved, min_slope=1.0e-3_wp)
+      if (converged) then
+        if (moved) call harmonic_solve(ws, blade, exp(u1), omega, s, error)
         return
       end if
-      u0 = u1
-      f0 = f1
-      u1 = u1 + du
     end do
     write(buf, '(a, i0, a, es12.5, a, g0.8, a)') "harmonic response (H = ", s%H, &
       & "): no amplitude found for F_E = ", F_E, " N at ", omega/(2*pi), " Hz"
     call fatal_error(error, trim(buf), UDMAP_ENUMERIC)
   end subroutine harmonic_force_root
+
+  !> One secant step on f(u) = 0 in the searches above: f1 at u1 and, from the second step
+  !> on (it > 1), f0 at u0 the point before. The slope is updated where the two points differ
+  !> (kept at least min_slope in magnitude when given) and the step -f1/slope clamped to 0.5.
+  !> converged: the step was below rtol or f1 is zero; u1 then moves by the step (moved: it was
+  !> not zero, one more evaluation is due there). Otherwise u1 moves by it and (u0, f0) take
+  !> the old point.
+  pure subroutine secant_step(it, rtol, u0, f0, u1, f1, slope, converged, moved, min_slope)
+    integer, intent(in) :: it
+    real(wp), intent(in) :: rtol, f1
+    real(wp), intent(inout) :: u0, f0, u1, slope
+    logical, intent(out) :: converged, moved
+    real(wp), intent(in), optional :: min_slope
+    real(wp) :: du
+    if (it > 1) then
+      if (u1 /= u0 .and. f1 /= f0) slope = (f1 - f0)/(u1 - u0)
+    end if
+    if (present(min_slope)) then
+      if (.not.(abs(slope) > min_slope)) slope = sign(min_slope, slope)
+    end if
+    du = -f1/slope
+    du = max(-0.5_wp, min(0.5_wp, du))
+    converged = abs(du) <= rtol .or. f1 == 0
+    moved = abs(du) > 0
+    if (converged) then
+      if (moved) u1 = u1 + du
+      return
+    end if
+    u0 = u1
+    f0 = f1
+    u1 = u1 + du
+  end subroutine secant_step
 end module udmap_mapping_harmonic_search

@@ -1,5 +1,6 @@
 !> Sorting of the short lists the kernel keeps (roots of a waveform, event times), and the one
-!> binary search (bisect) of the kernel's ascending tables.
+!> binary search (bisect) of the kernel's ascending tables, one body (sorting_bisect.inc) for
+!> real and integer tables.
 module udmap_core_sorting
   use udmap_core_kinds, only: wp
   implicit none
@@ -32,47 +33,15 @@ contains
     end do
   end subroutine sort_ascending
 
-  pure integer function bisect_real(a, x, right) result(n)
-    real(wp), intent(in) :: a(:), x
-    logical, intent(in), optional :: right
-    integer :: lo, hi, mid
-    logical :: r
-    r = .false.
-    if (present(right)) r = right
-    lo = 1
-    hi = size(a) + 1
-    do while (lo < hi)
-      mid = (lo + hi)/2
-      if (r) then
-        if (a(mid) <= x) then
-          lo = mid + 1
-        else
-          hi = mid
-        end if
-      else
-        if (x <= a(mid)) then
-          hi = mid
-        else
-          lo = mid + 1
-        end if
-      end if
-    end do
-    n = lo - 1
-  end function bisect_real
+#define BISECT_NAME bisect_real
+#define BISECT_TYPE real(wp)
+#include "sorting_bisect.inc"
+#undef BISECT_NAME
+#undef BISECT_TYPE
 
-  pure integer function bisect_int(a, x) result(n)
-    integer, intent(in) :: a(:), x
-    integer :: lo, hi, mid
-    lo = 1
-    hi = size(a) + 1
-    do while (lo < hi)
-      mid = (lo + hi)/2
-      if (x <= a(mid)) then
-        hi = mid
-      else
-        lo = mid + 1
-      end if
-    end do
-    n = lo - 1
-  end function bisect_int
+#define BISECT_NAME bisect_int
+#define BISECT_TYPE integer
+#include "sorting_bisect.inc"
+#undef BISECT_NAME
+#undef BISECT_TYPE
 end module udmap_core_sorting
