@@ -4,7 +4,7 @@
 !> bordered solve of the arc-length system, and the stuck-damper starting guess.
 module udmap_baseline_residual
   use udmap_core_kinds, only: wp, pi
-  use udmap_core_error, only: error_type, fatal_error, UDMAP_EINPUT, UDMAP_ENUMERIC
+  use udmap_core_error, only: error_type, fatal_error, require, UDMAP_EINPUT, UDMAP_ENUMERIC
   use udmap_core_strings, only: itoa
   use udmap_core_lapack, only: dgesv, dgbtrf, dgbtrs, dgetrf, dgetrs
   use udmap_baseline_linear_structure, only: structure_type, structure_receptances_type, &
@@ -26,14 +26,15 @@ contains
     type(hbm_settings_type), intent(in) :: settings
     type(error_type), allocatable, intent(out) :: error
     type(structure_receptances_type) :: r0
-    call require(st%ndof >= 1, "hbm: the structure is empty")
-    call require(F_E > 0.0_wp .and. F_E <= huge(1.0_wp), "hbm: F_E must be positive and finite")
+    call require(st%ndof >= 1, "hbm: the structure is empty", error)
+    call require(F_E > 0.0_wp .and. F_E <= huge(1.0_wp), &
+      & "hbm: F_E must be positive and finite", error)
     call require(f_min > 0.0_wp .and. f_max > f_min .and. f_max <= huge(1.0_wp), &
-      & "hbm: need 0 < f_min < f_max (finite)")
+      & "hbm: need 0 < f_min < f_max (finite)", error)
     call require(settings%harmonics >= 1 .and. settings%harmonics <= 64, &
-      & "hbm: harmonics must be in 1..64")
+      & "hbm: harmonics must be in 1..64", error)
     call require(settings%variant == HBM_CONDENSED .or. settings%variant == HBM_FULL, &
-      & "hbm: variant must be condensed (0) or full (1)")
+      & "hbm: variant must be condensed (0) or full (1)", error)
     call require(settings%tol > 0.0_wp .and. settings%tol_path > 0.0_wp .and. &
       & settings%ds_min > 0.0_wp .and. settings%ds_max >= settings%ds_min .and. &
       & settings%ds_initial > 0.0_wp .and. settings%fd_step > 0.0_wp .and. &
@@ -43,9 +44,9 @@ contains
       & .and. settings%aft_samples >= 0 .and. settings%aft_max_periods >= 1 .and. &
       & settings%warm_start >= 0 .and. settings%warm_start <= 2, &
       & "hbm: invalid numerical settings (tolerances and steps must be positive, "// &
-      & "max_iter >= 2, aft_samples >= 0, warm_start 0, 1 or 2)")
+      & "max_iter >= 2, aft_samples >= 0, warm_start 0, 1 or 2)", error)
     call require(settings%aft_samples <= 0 .or. settings%aft_samples >= 2*settings%harmonics + 1, &
-      & "hbm: aft_samples must be 0 (exact) or >= 2 H + 1")
+      & "hbm: aft_samples must be 0 (exact) or >= 2 H + 1", error)
     if (allocated(error)) return
     p%set = settings
     p%H = settings%harmonics
@@ -78,13 +79,6 @@ contains
       if (allocated(error)) return
       p%Hgg0 = real(r0%gg, wp)
     end if
-  contains
-    !> The input error `message` unless ok; the first failed check is the one reported.
-    subroutine require(ok, message)
-      logical, intent(in) :: ok
-      character(len=*), intent(in) :: message
-      if (.not.ok .and. .not.allocated(error)) call fatal_error(error, message, UDMAP_EINPUT)
-    end subroutine require
   end subroutine setup
 
   ! ------------------------------------------------------------------ residual and Jacobian
