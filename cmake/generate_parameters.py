@@ -348,6 +348,41 @@ def _fortran_wrap(line: str, indent: str = "    ") -> list[str]:
     return out + [line]
 
 
+def _constructor(lhs: str, type_name: str, pairs: list[tuple[str, str]]) -> list[str]:
+    """`lhs = type_name(component=value, ...)`, a keyword structure constructor; the array
+    components (pairs named `name(i)` or `name(i,j)`, listed in array element order) become
+    one array value each. Lines break between values only."""
+    groups: dict[str, list] = {}
+    for comp, value in pairs:
+        base, _, index = comp.partition("(")
+        groups.setdefault(base, []).append((index.rstrip(")"), value))
+    atoms = []
+    for base, entries in groups.items():
+        if entries[0][0] == "":
+            atoms.append(f"{base}={entries[0][1]},")
+            continue
+        order = [tuple(int(x) for x in i.split(",")) for i, _ in entries]
+        assert order == sorted(order, key=lambda k: k[::-1]), f"{base}: not in element order"
+        shape = [max(k[d] for k in order) for d in range(len(order[0]))]
+        values = [v + "," for _, v in entries]
+        values[-1] = values[-1][:-1] + "]"
+        if len(shape) == 1:
+            values[0], values[-1] = f"{base}=[" + values[0], values[-1] + ","
+        else:
+            values[0] = f"{base}=reshape([" + values[0]
+            values[-1] += f", [{', '.join(map(str, shape))}]),"
+        atoms += values
+    atoms[-1] = atoms[-1][:-1] + ")"
+    out, line = [], f"    {lhs} = {type_name}(" + atoms[0]
+    for atom in atoms[1:]:
+        if len(line) + 1 + len(atom) > 98:
+            out.append(line + " &")
+            line = "      & " + atom
+        else:
+            line += " " + atom
+    return out + [line]
+
+
 def legacy_module(t: Table) -> str:
     structs = {(s["section"], s["kind"]): s for s in t.structs}
     uses, publics, decls, funcs = {}, [], [], []
@@ -382,10 +417,11 @@ def legacy_module(t: Table) -> str:
                     f"  pure function {a['legacy_function']}(a) result(p)",
                     f"    real(c_double), intent(in) :: a({a['length']})",
                     f"    type({s['fortran_type']}) :: p"]
+            pairs = []
             for n, c in zip(a["entries"], names):
                 f, _, comp = flat[n]
-                value = f"nint(a({c}))" if _is_int(f) else f"real(a({c}), wp)"
-                body.append(f"    p%{comp} = {value}")
+                pairs.append((comp, f"nint(a({c}))" if _is_int(f) else f"real(a({c}), wp)"))
+            body += _constructor("p", s["fortran_type"], pairs)
             body.append(f"  end function {a['legacy_function']}")
             funcs.append(body)
     out = ["!> The plain-array layout of the legacy API: the arrays hold the fields of the C "
@@ -425,11 +461,9 @@ def c_types_module(t: Table) -> str:
                   f"  pure function {s['from_c']}(c) result(p)",
                   f"    type({s['fortran']}), intent(in) :: c",
                   f"    type({s['fortran_type']}) :: p"]
-        for line in s["lines"]:
-            for n in line:
-                f, _, comp = flat[n]
-                value = f"int(c%{n})" if _is_int(f) else f"c%{n}"
-                funcs.append(f"    p%{comp} = {value}")
+        funcs += _constructor("p", s["fortran_type"], [
+            (flat[n][2], f"int(c%{n})" if _is_int(flat[n][0]) else f"c%{n}")
+            for line in s["lines"] for n in line])
         funcs.append(f"  end function {s['from_c']}")
         if "to_c" not in s:
             continue
@@ -437,11 +471,10 @@ def c_types_module(t: Table) -> str:
                   f"  pure function {s['to_c']}(p) result(c)",
                   f"    type({s['fortran_type']}), intent(in) :: p",
                   f"    type({s['fortran']}) :: c"]
-        for line in s["lines"]:
-            for n in line:
-                f, _, comp = flat[n]
-                value = f"int(p%{comp}, c_int)" if _is_int(f) else f"real(p%{comp}, c_double)"
-                funcs.append(f"    c%{n} = {value}")
+        funcs += _constructor("c", s["fortran"], [
+            (n, f"int(p%{flat[n][2]}, c_int)" if _is_int(flat[n][0])
+             else f"real(p%{flat[n][2]}, c_double)")
+            for line in s["lines"] for n in line])
         funcs.append(f"  end function {s['to_c']}")
     out = ["!> The C API's parameter structs in Fortran and their conversion to the kernel's "
            "types."]

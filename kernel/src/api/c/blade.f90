@@ -91,12 +91,10 @@ contains
     integer(c_int) :: stat
     type(blade_type), pointer :: b
     type(error_type), allocatable :: err
-    call clear_error(error)
-    call check_handle(blade, "blade", err)
+    call blade_from_handle(error, blade, b, err)
     call check_handle(ndof, "ndof", err)
     call check_handle(has_stress, "has_stress", err)
     if (.not.allocated(err)) then
-      call c_f_pointer(blade, b)
       call put_out(ndof, b%ndof)
       call put_out(has_stress, merge(1, 0, b%has_stress))
     end if
@@ -112,12 +110,10 @@ contains
     type(blade_type), pointer :: b
     real(wp), allocatable :: fw(:)
     type(error_type), allocatable :: err
-    call clear_error(error)
-    call check_handle(blade, "blade", err)
+    call blade_from_handle(error, blade, b, err)
     call check_handle(f_hz, "f_hz", err)
     call check_input(nmodes >= 1, "nmodes must be at least 1", err)
     if (.not.allocated(err)) then
-      call c_f_pointer(blade, b)
       allocate(fw(nmodes))
       call b%natural_frequencies(fw, err)
       if (.not.allocated(err)) then
@@ -206,17 +202,25 @@ contains
     integer(c_int) :: stat
     type(blade_type), pointer :: b
     type(error_type), allocatable :: err
-    call clear_error(error)
-    call check_handle(blade, "blade", err)
+    call blade_from_handle(error, blade, b, err)
     call check_handle(dir, "dir", err)
-    if (.not.allocated(err)) then
-      call c_f_pointer(blade, b)
-      call export_blade(b, c_string(dir), err)
-    end if
+    if (.not.allocated(err)) call export_blade(b, c_string(dir), err)
     stat = set_error(error, err)
   end function udmap_blade_export
 
   ! ------------------------------------------------------------------ helpers
+
+  !> Clears the error handle and points b at the blade of the handle `blade`, or sets err
+  !> (the first check of the arguments) if it is NULL.
+  subroutine blade_from_handle(error, blade, b, err)
+    type(c_ptr), intent(in) :: error, blade
+    type(blade_type), pointer, intent(out) :: b
+    type(error_type), allocatable, intent(out) :: err
+    call clear_error(error)
+    call check_handle(blade, "blade", err)
+    b => null()
+    if (.not.allocated(err)) call c_f_pointer(blade, b)
+  end subroutine blade_from_handle
 
   !> Gives a new blade to the caller's handle, or frees it on error.
   subroutine hand_over(b, err, out)

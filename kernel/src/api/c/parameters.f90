@@ -46,73 +46,41 @@ contains
   pure function beam_from_c(c) result(p)
     type(c_beam_params), intent(in) :: c
     type(beam_params_type) :: p
-    p%E = c%E
-    p%rho = c%rho
-    p%zeta = c%zeta
-    p%neck_L = c%neck_L
-    p%neck_h = c%neck_h
-    p%neck_b = c%neck_b
-    p%platform_L = c%platform_L
-    p%platform_m = c%platform_m
-    p%platform_J = c%platform_J
-    p%airfoil_L = c%airfoil_L
-    p%airfoil_h = c%airfoil_h
-    p%airfoil_b = c%airfoil_b
-    p%neck_elements = int(c%neck_elements)
-    p%airfoil_elements = int(c%airfoil_elements)
+    p = beam_params_type(E=c%E, rho=c%rho, zeta=c%zeta, neck_L=c%neck_L, neck_h=c%neck_h, &
+      & neck_b=c%neck_b, platform_L=c%platform_L, platform_m=c%platform_m, &
+      & platform_J=c%platform_J, airfoil_L=c%airfoil_L, airfoil_h=c%airfoil_h, &
+      & airfoil_b=c%airfoil_b, neck_elements=int(c%neck_elements), &
+      & airfoil_elements=int(c%airfoil_elements))
   end function beam_from_c
 
   !> The kernel's asymmetric_params_type of the C struct udmap_asymmetric_params.
   pure function asymmetric_from_c(c) result(p)
     type(udmap_asymmetric_params), intent(in) :: c
     type(asymmetric_params_type) :: p
-    p%CF = c%CF
-    p%mu = c%mu
-    p%pitch = c%pitch
-    p%y_P = c%y_P
-    p%beta_L_deg = c%beta_L_deg
-    p%beta_R_deg = c%beta_R_deg
-    p%flat(1,1) = c%flat1_x
-    p%flat(2,1) = c%flat1_y
-    p%flat(1,2) = c%flat2_x
-    p%flat(2,2) = c%flat2_y
-    p%curved(1) = c%curved_x
-    p%curved(2) = c%curved_y
-    p%kn_flat = c%kn_flat
-    p%kt_flat = c%kt_flat
-    p%kn_curved = c%kn_curved
-    p%kt_curved = c%kt_curved
+    p = asymmetric_params_type(CF=c%CF, mu=c%mu, pitch=c%pitch, y_P=c%y_P, &
+      & beta_L_deg=c%beta_L_deg, beta_R_deg=c%beta_R_deg, flat=reshape([c%flat1_x, c%flat1_y, &
+      & c%flat2_x, c%flat2_y], [2, 2]), curved=[c%curved_x, c%curved_y], kn_flat=c%kn_flat, &
+      & kt_flat=c%kt_flat, kn_curved=c%kn_curved, kt_curved=c%kt_curved)
   end function asymmetric_from_c
 
   !> The kernel's analysis_type of the C struct udmap_analysis.
   pure function analysis_from_c(c) result(p)
     type(c_analysis_type), intent(in) :: c
     type(analysis_type) :: p
-    p%f_min = c%f_min
-    p%f_max = c%f_max
-    p%sigma_all = c%sigma_all
-    p%rtol = c%rtol
-    p%grid_per_decade = int(c%grid_per_decade)
-    p%eigen_method = int(c%eigen_method)
-    p%dense_max = int(c%dense_max)
-    p%sweep_points = int(c%sweep_points)
-    p%harmonics = int(c%harmonics)
-    p%harmonic_tol = c%harmonic_tol
+    p = analysis_type(f_min=c%f_min, f_max=c%f_max, sigma_all=c%sigma_all, rtol=c%rtol, &
+      & grid_per_decade=int(c%grid_per_decade), eigen_method=int(c%eigen_method), &
+      & dense_max=int(c%dense_max), sweep_points=int(c%sweep_points), harmonics=int(c%harmonics), &
+      & harmonic_tol=c%harmonic_tol)
   end function analysis_from_c
 
   !> The C struct udmap_analysis of the kernel's analysis_type.
   pure function analysis_to_c(p) result(c)
     type(analysis_type), intent(in) :: p
     type(c_analysis_type) :: c
-    c%f_min = real(p%f_min, c_double)
-    c%f_max = real(p%f_max, c_double)
-    c%sigma_all = real(p%sigma_all, c_double)
-    c%rtol = real(p%rtol, c_double)
-    c%grid_per_decade = int(p%grid_per_decade, c_int)
-    c%eigen_method = int(p%eigen_method, c_int)
-    c%dense_max = int(p%dense_max, c_int)
-    c%sweep_points = int(p%sweep_points, c_int)
-    c%harmonics = int(p%harmonics, c_int)
-    c%harmonic_tol = real(p%harmonic_tol, c_double)
+    c = c_analysis_type(f_min=real(p%f_min, c_double), f_max=real(p%f_max, c_double), &
+      & sigma_all=real(p%sigma_all, c_double), rtol=real(p%rtol, c_double), &
+      & grid_per_decade=int(p%grid_per_decade, c_int), eigen_method=int(p%eigen_method, c_int), &
+      & dense_max=int(p%dense_max, c_int), sweep_points=int(p%sweep_points, c_int), &
+      & harmonics=int(p%harmonics, c_int), harmonic_tol=real(p%harmonic_tol, c_double))
   end function analysis_to_c
 end module udmap_api_c_parameters

@@ -154,11 +154,10 @@ contains
     integer(c_int) :: stat
     type(error_type), allocatable :: err
     type(reduction_type), pointer :: red
-    call clear_error(error)
-    call check_handle(reduction, "reduction", err)
+    call reduction_from_handle(error, reduction, red, stat)
+    if (stat /= 0) return
     call check_handle(info, "info", err)
     if (report_error(error, err, stat)) return
-    call c_f_pointer(reduction, red)
     call put_out(info, [red%f_cut, red%f_check, real(red%cut_count, wp), &
       & real(red%cut_found, wp), real(red%full_count, wp), real(red%full_found, wp), &
       & real(red%n_t, wp), real(red%n_i, wp), real(red%factor_entries, wp), &

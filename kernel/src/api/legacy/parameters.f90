@@ -59,41 +59,35 @@ contains
   pure function beam_from_array(a) result(p)
     real(c_double), intent(in) :: a(LEGACY_NBEAM)
     type(beam_params_type) :: p
-    p%E = real(a(LEGACY_BEAM_E), wp)
-    p%rho = real(a(LEGACY_BEAM_RHO), wp)
-    p%zeta = real(a(LEGACY_BEAM_ZETA), wp)
-    p%neck_L = real(a(LEGACY_BEAM_NECK_L), wp)
-    p%neck_h = real(a(LEGACY_BEAM_NECK_H), wp)
-    p%neck_b = real(a(LEGACY_BEAM_NECK_B), wp)
-    p%platform_L = real(a(LEGACY_BEAM_PLATFORM_L), wp)
-    p%platform_m = real(a(LEGACY_BEAM_PLATFORM_M), wp)
-    p%platform_J = real(a(LEGACY_BEAM_PLATFORM_J), wp)
-    p%airfoil_L = real(a(LEGACY_BEAM_AIRFOIL_L), wp)
-    p%airfoil_h = real(a(LEGACY_BEAM_AIRFOIL_H), wp)
-    p%airfoil_b = real(a(LEGACY_BEAM_AIRFOIL_B), wp)
-    p%neck_elements = nint(a(LEGACY_BEAM_NECK_ELEMENTS))
-    p%airfoil_elements = nint(a(LEGACY_BEAM_AIRFOIL_ELEMENTS))
+    p = beam_params_type(E=real(a(LEGACY_BEAM_E), wp), rho=real(a(LEGACY_BEAM_RHO), wp), &
+      & zeta=real(a(LEGACY_BEAM_ZETA), wp), neck_L=real(a(LEGACY_BEAM_NECK_L), wp), &
+      & neck_h=real(a(LEGACY_BEAM_NECK_H), wp), neck_b=real(a(LEGACY_BEAM_NECK_B), wp), &
+      & platform_L=real(a(LEGACY_BEAM_PLATFORM_L), wp), &
+      & platform_m=real(a(LEGACY_BEAM_PLATFORM_M), wp), &
+      & platform_J=real(a(LEGACY_BEAM_PLATFORM_J), wp), &
+      & airfoil_L=real(a(LEGACY_BEAM_AIRFOIL_L), wp), &
+      & airfoil_h=real(a(LEGACY_BEAM_AIRFOIL_H), wp), &
+      & airfoil_b=real(a(LEGACY_BEAM_AIRFOIL_B), wp), &
+      & neck_elements=nint(a(LEGACY_BEAM_NECK_ELEMENTS)), &
+      & airfoil_elements=nint(a(LEGACY_BEAM_AIRFOIL_ELEMENTS)))
   end function beam_from_array
 
   !> The asymmetric_params_type of the array DAMPER (whole-number entries rounded).
   pure function asymmetric_from_array(a) result(p)
     real(c_double), intent(in) :: a(LEGACY_NDAMPER_ASYMMETRIC)
     type(asymmetric_params_type) :: p
-    p%CF = real(a(LEGACY_ASYMMETRIC_CF), wp)
-    p%mu = real(a(LEGACY_ASYMMETRIC_MU), wp)
-    p%pitch = real(a(LEGACY_ASYMMETRIC_PITCH), wp)
-    p%y_P = real(a(LEGACY_ASYMMETRIC_Y_P), wp)
-    p%beta_L_deg = real(a(LEGACY_ASYMMETRIC_BETA_L_DEG), wp)
-    p%beta_R_deg = real(a(LEGACY_ASYMMETRIC_BETA_R_DEG), wp)
-    p%flat(1,1) = real(a(LEGACY_ASYMMETRIC_FLAT1_X), wp)
-    p%flat(2,1) = real(a(LEGACY_ASYMMETRIC_FLAT1_Y), wp)
-    p%flat(1,2) = real(a(LEGACY_ASYMMETRIC_FLAT2_X), wp)
-    p%flat(2,2) = real(a(LEGACY_ASYMMETRIC_FLAT2_Y), wp)
-    p%curved(1) = real(a(LEGACY_ASYMMETRIC_CURVED_X), wp)
-    p%curved(2) = real(a(LEGACY_ASYMMETRIC_CURVED_Y), wp)
-    p%kn_flat = real(a(LEGACY_ASYMMETRIC_KN_FLAT), wp)
-    p%kt_flat = real(a(LEGACY_ASYMMETRIC_KT_FLAT), wp)
-    p%kn_curved = real(a(LEGACY_ASYMMETRIC_KN_CURVED), wp)
-    p%kt_curved = real(a(LEGACY_ASYMMETRIC_KT_CURVED), wp)
+    p = asymmetric_params_type(CF=real(a(LEGACY_ASYMMETRIC_CF), wp), &
+      & mu=real(a(LEGACY_ASYMMETRIC_MU), wp), pitch=real(a(LEGACY_ASYMMETRIC_PITCH), wp), &
+      & y_P=real(a(LEGACY_ASYMMETRIC_Y_P), wp), &
+      & beta_L_deg=real(a(LEGACY_ASYMMETRIC_BETA_L_DEG), wp), &
+      & beta_R_deg=real(a(LEGACY_ASYMMETRIC_BETA_R_DEG), wp), &
+      & flat=reshape([real(a(LEGACY_ASYMMETRIC_FLAT1_X), wp), &
+      & real(a(LEGACY_ASYMMETRIC_FLAT1_Y), wp), real(a(LEGACY_ASYMMETRIC_FLAT2_X), wp), &
+      & real(a(LEGACY_ASYMMETRIC_FLAT2_Y), wp)], [2, 2]), &
+      & curved=[real(a(LEGACY_ASYMMETRIC_CURVED_X), wp), real(a(LEGACY_ASYMMETRIC_CURVED_Y), wp)], &
+      & kn_flat=real(a(LEGACY_ASYMMETRIC_KN_FLAT), wp), &
+      & kt_flat=real(a(LEGACY_ASYMMETRIC_KT_FLAT), wp), &
+      & kn_curved=real(a(LEGACY_ASYMMETRIC_KN_CURVED), wp), &
+      & kt_curved=real(a(LEGACY_ASYMMETRIC_KT_CURVED), wp))
   end function asymmetric_from_array
 end module udmap_api_legacy_parameters
