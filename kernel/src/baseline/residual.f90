@@ -129,11 +129,7 @@ contains
       ! restore the moment of the base point (damper_vector overwrote nothing else)
       call unpack_moment(p, Mv)
     end if
-    if (p%set%variant == HBM_CONDENSED) then
-      call condensed_residual(p, st, x, omega, R, error, Jw)
-    else
-      call full_residual(p, st, x, omega, R, Jw)
-    end if
+    call variant_residual(p, st, x, omega, R, error, Jw)
   end subroutine evaluate
 
   !> The damper moment as a real vector in the layout of the gamma unknowns.
@@ -187,7 +183,9 @@ contains
     p%omega_rec = omega
   end subroutine update_receptances
 
-  subroutine condensed_residual(p, st, x, omega, R, error, Jw)
+  !> The residual of the chosen variant at the damper moment in p: condensed on the gamma
+  !> unknowns (receptances at h omega), else the full one (full_residual).
+  subroutine variant_residual(p, st, x, omega, R, error, Jw)
     type(problem_type), intent(inout) :: p
     type(structure_type), intent(in) :: st
     real(wp), intent(in) :: x(:), omega
@@ -196,6 +194,10 @@ contains
     real(wp), intent(out), optional :: Jw(:)
     complex(wp) :: G, Rh, dR
     integer :: h, i
+    if (p%set%variant /= HBM_CONDENSED) then
+      call full_residual(p, st, x, omega, R, Jw)
+      return
+    end if
     call update_receptances(p, st, omega, error)
     if (allocated(error)) return
     if (p%h0 == 1) then
@@ -216,7 +218,7 @@ contains
         Jw(i+1) = aimag(dR)
       end if
     end do
-  end subroutine condensed_residual
+  end subroutine variant_residual
 
   pure subroutine full_residual(p, st, x, omega, R, Jw)
     type(problem_type), intent(in) :: p
@@ -449,12 +451,8 @@ contains
     do c = 1, p%m
       p%JM(c, c) = p%k_stuck
     end do
-    if (p%set%variant == HBM_CONDENSED) then
-      call condensed_residual(p, st, x, omega, R, error, Jw)
-      if (allocated(error)) return
-    else
-      call full_residual(p, st, x, omega, R, Jw)
-    end if
+    call variant_residual(p, st, x, omega, R, error, Jw)
+    if (allocated(error)) return
     call factor(p, st, omega, error)
     if (allocated(error)) return
     call bordered_solve(p, Jw, cx, 1.0_wp, -R, 0.0_wp, dx, dw, error)

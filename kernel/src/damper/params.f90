@@ -1,7 +1,7 @@
 !> Parameters of the asymmetric flat/curved rigid damper (PHYSICS.md 2.1) and their checks.
 module udmap_damper_params
   use udmap_core_kinds, only: wp
-  use udmap_core_error, only: error_type, fatal_error, UDMAP_EINPUT
+  use udmap_core_error, only: error_type, require
   implicit none
   private
   public :: asymmetric_params_type, check_asymmetric_params, blade_a_damper_params
@@ -47,26 +47,24 @@ contains
     type(asymmetric_params_type), intent(in) :: params
     type(error_type), allocatable, intent(out) :: error
 
-    call positive("CF", params%CF, error); if (allocated(error)) return
-    call positive("mu", params%mu, error); if (allocated(error)) return
-    call positive("pitch", params%pitch, error); if (allocated(error)) return
-    call finite("y_P", params%y_P, error); if (allocated(error)) return
-    call angle("beta_L_deg", params%beta_L_deg, error); if (allocated(error)) return
-    call angle("beta_R_deg", params%beta_R_deg, error); if (allocated(error)) return
-    call finite("flat_points[0][0] (flat1_x)", params%flat(1,1), error); if (allocated(error)) return
-    call finite("flat_points[0][1] (flat1_y)", params%flat(2,1), error); if (allocated(error)) return
-    call finite("flat_points[1][0] (flat2_x)", params%flat(1,2), error); if (allocated(error)) return
-    call finite("flat_points[1][1] (flat2_y)", params%flat(2,2), error); if (allocated(error)) return
-    call finite("curved_point[0] (curved_x)", params%curved(1), error); if (allocated(error)) return
-    call finite("curved_point[1] (curved_y)", params%curved(2), error); if (allocated(error)) return
-    call positive("kn_flat", params%kn_flat, error); if (allocated(error)) return
-    call positive("kt_flat", params%kt_flat, error); if (allocated(error)) return
-    call positive("kn_curved", params%kn_curved, error); if (allocated(error)) return
-    call positive("kt_curved", params%kt_curved, error); if (allocated(error)) return
-    if (all(params%flat(:,1) == params%flat(:,2))) then
-      call fatal_error(error, "damper parameter 'flat_points': the two flat points coincide", &
-        & UDMAP_EINPUT)
-    end if
+    call positive("CF", params%CF, error)
+    call positive("mu", params%mu, error)
+    call positive("pitch", params%pitch, error)
+    call finite("y_P", params%y_P, error)
+    call angle("beta_L_deg", params%beta_L_deg, error)
+    call angle("beta_R_deg", params%beta_R_deg, error)
+    call finite("flat_points[0][0] (flat1_x)", params%flat(1,1), error)
+    call finite("flat_points[0][1] (flat1_y)", params%flat(2,1), error)
+    call finite("flat_points[1][0] (flat2_x)", params%flat(1,2), error)
+    call finite("flat_points[1][1] (flat2_y)", params%flat(2,2), error)
+    call finite("curved_point[0] (curved_x)", params%curved(1), error)
+    call finite("curved_point[1] (curved_y)", params%curved(2), error)
+    call positive("kn_flat", params%kn_flat, error)
+    call positive("kt_flat", params%kt_flat, error)
+    call positive("kn_curved", params%kn_curved, error)
+    call positive("kt_curved", params%kt_curved, error)
+    call require(any(params%flat(:,1) /= params%flat(:,2)), &
+      & "damper parameter 'flat_points': the two flat points coincide", error)
   end subroutine check_asymmetric_params
 
   pure logical function is_finite(x)
@@ -74,31 +72,28 @@ contains
     is_finite = x == x .and. abs(x) <= huge(x)
   end function is_finite
 
+  !> The checks of one field, as a series of `require` (the first failure is kept).
   pure subroutine finite(name, x, error)
     character(len=*), intent(in) :: name
     real(wp), intent(in) :: x
-    type(error_type), allocatable, intent(out) :: error
-    if (.not. is_finite(x)) call fatal_error(error, "damper parameter '"//name// &
-      & "' is not a finite number", UDMAP_EINPUT)
+    type(error_type), allocatable, intent(inout) :: error
+    call require(is_finite(x), "damper parameter '"//name//"' is not a finite number", error)
   end subroutine finite
 
   pure subroutine positive(name, x, error)
     character(len=*), intent(in) :: name
     real(wp), intent(in) :: x
-    type(error_type), allocatable, intent(out) :: error
+    type(error_type), allocatable, intent(inout) :: error
     call finite(name, x, error)
-    if (allocated(error)) return
-    if (x <= 0) call fatal_error(error, "damper parameter '"//name//"' must be positive", &
-      & UDMAP_EINPUT)
+    call require(x > 0, "damper parameter '"//name//"' must be positive", error)
   end subroutine positive
 
   pure subroutine angle(name, x, error)
     character(len=*), intent(in) :: name
     real(wp), intent(in) :: x
-    type(error_type), allocatable, intent(out) :: error
+    type(error_type), allocatable, intent(inout) :: error
     call finite(name, x, error)
-    if (allocated(error)) return
-    if (x < 0 .or. x >= 90) call fatal_error(error, "damper parameter '"//name// &
-      & "' must lie in [0, 90) degrees", UDMAP_EINPUT)
+    call require(x >= 0 .and. x < 90, "damper parameter '"//name// &
+      & "' must lie in [0, 90) degrees", error)
   end subroutine angle
 end module udmap_damper_params

@@ -14,7 +14,7 @@
 module udmap_mapping_curves
   use udmap_core_kinds, only: wp, pi
   use udmap_core_error, only: error_type, fatal_error, UDMAP_EINPUT
-  use udmap_core_arrays, only: grow
+  use udmap_core_arrays, only: put
   use udmap_blade_type, only: receptances_type, layer_response
   use udmap_mapping_layer, only: layer_amplitude, layer_crossing, bare_receptances
   use udmap_mapping_model_data, only: model_type, point_type, curve_type, check_forces, &
@@ -30,7 +30,6 @@ module udmap_mapping_curves
   type :: point_list
     integer :: n = 0
     real(wp), allocatable :: gamma(:), omega(:), sigma(:)
-    integer :: alloc = 0
     integer, allocatable :: kind(:)
   end type point_list
 
@@ -162,18 +161,11 @@ contains
     type(point_list), intent(inout) :: list
     real(wp), intent(in) :: gamma, omega, sigma
     integer, intent(in) :: kind
-    if (list%n == list%alloc) then
-      list%alloc = max(64, 2*list%alloc)
-      call grow(list%gamma, list%n, list%alloc)
-      call grow(list%omega, list%n, list%alloc)
-      call grow(list%sigma, list%n, list%alloc)
-      call grow(list%kind, list%n, list%alloc)
-    end if
     list%n = list%n + 1
-    list%gamma(list%n) = gamma
-    list%omega(list%n) = omega
-    list%sigma(list%n) = sigma
-    list%kind(list%n) = kind
+    call put(list%gamma, list%n, gamma)
+    call put(list%omega, list%n, omega)
+    call put(list%sigma, list%n, sigma)
+    call put(list%kind, list%n, kind)
   end subroutine push
 
   !> Stress amplitude F_E |s~| at a point.

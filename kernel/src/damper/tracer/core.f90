@@ -4,6 +4,7 @@
 !> the rates of the forces and of the sliders in each mode), with the breakpoints recorded.
 module udmap_damper_tracer_core
   use udmap_core_kinds, only: wp
+  use udmap_core_arrays, only: put
   use udmap_core_error, only: error_type, fatal_error, UDMAP_EPHYSICS, UDMAP_ENUMERIC
   implicit none
   private
@@ -556,44 +557,20 @@ contains
     real(wp), intent(in) :: slope
     type(branch_record_type), intent(inout) :: rec
     real(wp) :: g(3), s(3), N(3), T(3)
-    integer :: cap
-    if (.not. allocated(rec%gamma)) then
-      cap = 16
-      allocate(rec%gamma(cap), rec%gamma_p(cap), rec%M(cap), rec%M_p(cap), rec%slope(cap))
-    end if
-    if (rec%n == size(rec%gamma)) call grow(rec)
+    rec%n = rec%n + 1
+    call put(rec%gamma, rec%n, st%gamma)
+    call put(rec%gamma_p, rec%n, st%gamma_p)
+    call contact_forces(geo, st%mode, st%q, st%gamma, st%w, g, s, N, T)
+    call put(rec%M, rec%n, sum(geo%cn*N + geo%ct*T))
+    call contact_forces(geo, st%mode, st%q_p, st%gamma_p, st%w_p, g, s, N, T)
+    call put(rec%M_p, rec%n, sum(geo%cn*N + geo%ct*T))
+    call put(rec%slope, rec%n, slope)
     if (rec%keep_states) then
       if (.not. allocated(rec%states)) allocate(rec%states(size(rec%gamma)))
       if (size(rec%states) < size(rec%gamma)) call grow_states(rec)
+      rec%states(rec%n) = st
     end if
-    rec%n = rec%n + 1
-    rec%gamma(rec%n) = st%gamma
-    rec%gamma_p(rec%n) = st%gamma_p
-    call contact_forces(geo, st%mode, st%q, st%gamma, st%w, g, s, N, T)
-    rec%M(rec%n) = sum(geo%cn*N + geo%ct*T)
-    call contact_forces(geo, st%mode, st%q_p, st%gamma_p, st%w_p, g, s, N, T)
-    rec%M_p(rec%n) = sum(geo%cn*N + geo%ct*T)
-    rec%slope(rec%n) = slope
-    if (rec%keep_states) rec%states(rec%n) = st
   end subroutine append_vertex
-
-  pure subroutine grow(rec)
-    type(branch_record_type), intent(inout) :: rec
-    call double_size(rec%gamma)
-    call double_size(rec%gamma_p)
-    call double_size(rec%M)
-    call double_size(rec%M_p)
-    call double_size(rec%slope)
-  end subroutine grow
-
-  !> Twice the storage, the entries kept.
-  pure subroutine double_size(a)
-    real(wp), allocatable, intent(inout) :: a(:)
-    real(wp), allocatable :: tmp(:)
-    allocate(tmp(2*size(a)))
-    tmp(1:size(a)) = a
-    call move_alloc(tmp, a)
-  end subroutine double_size
 
   pure subroutine grow_states(rec)
     type(branch_record_type), intent(inout) :: rec

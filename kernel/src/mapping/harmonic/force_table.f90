@@ -21,7 +21,7 @@
 module udmap_mapping_harmonic_force_table
   use, intrinsic :: iso_fortran_env, only: int64
   use udmap_core_kinds, only: wp
-  use udmap_core_arrays, only: grow
+  use udmap_core_arrays, only: put
   use udmap_mapping_harmonic_types, only: table_node_type, force_table_type
   implicit none
   private
@@ -92,16 +92,10 @@ contains
         table_first_visit = .false.
         return
       end if
-    else
-      allocate(t%visited(8), t%visited_h(8))
-    end if
-    if (t%n_visit == size(t%visited)) then
-      call grow(t%visited, t%n_visit, 2*t%n_visit)
-      call grow(t%visited_h, t%n_visit, 2*t%n_visit)
     end if
     t%n_visit = t%n_visit + 1
-    t%visited(t%n_visit) = k
-    t%visited_h(t%n_visit) = 0
+    call put(t%visited, t%n_visit, k)
+    call put(t%visited_h, t%n_visit, 0)
     table_first_visit = .true.
   end function table_first_visit
 
@@ -316,20 +310,10 @@ contains
     type(force_table_type), intent(inout) :: t
     integer(int64), intent(in) :: lo, hi
     integer, intent(in) :: h, status
-    integer :: n
-    if (.not.allocated(t%leaf_lo)) allocate(t%leaf_lo(16), t%leaf_hi(16), t%leaf_status(16), &
-      & t%leaf_h(16))
-    n = size(t%leaf_lo)
-    if (t%n_leaf == n) then
-      call grow(t%leaf_lo, n, 2*n)
-      call grow(t%leaf_hi, n, 2*n)
-      call grow(t%leaf_status, n, 2*n)
-      call grow(t%leaf_h, n, 2*n)
-    end if
     t%n_leaf = t%n_leaf + 1
-    t%leaf_lo(t%n_leaf) = lo
-    t%leaf_hi(t%n_leaf) = hi
-    t%leaf_status(t%n_leaf) = status
-    t%leaf_h(t%n_leaf) = h
+    call put(t%leaf_lo, t%n_leaf, lo)
+    call put(t%leaf_hi, t%n_leaf, hi)
+    call put(t%leaf_status, t%n_leaf, status)
+    call put(t%leaf_h, t%n_leaf, h)
   end subroutine add_leaf
 end module udmap_mapping_harmonic_force_table
