@@ -79,6 +79,10 @@ if(UDMAP_WITH_MUMPS)
   set(UDMAP_PC_LIBS_PRIVATE "-ldmumps_seq -lmumps_common_seq -lmpiseq_seq ")
 endif()
 configure_file("${PROJECT_SOURCE_DIR}/cmake/udmap.pc.in" "${PROJECT_BINARY_DIR}/udmap.pc" @ONLY)
+# The same from the build tree (the pkg-config convention NAME-uninstalled.pc, which pkg-config
+# prefers when build/ is on PKG_CONFIG_PATH): C and Fortran programs link before an install.
+configure_file("${PROJECT_SOURCE_DIR}/cmake/udmap-uninstalled.pc.in"
+  "${PROJECT_BINARY_DIR}/udmap-uninstalled.pc" @ONLY)
 install(FILES "${PROJECT_BINARY_DIR}/udmap.pc"
   DESTINATION "${UDMAP_INSTALL_PKGCONFIGDIR}" COMPONENT udmap)
 
