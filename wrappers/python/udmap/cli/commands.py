@@ -26,6 +26,10 @@ def _with_harmonics(case, args):
     return case
 
 
+#: Largest platform rotation of the valid range (docs/case-files.md, "Valid range") [rad].
+GAMMA_VALID_MAX = 1.0
+
+
 def cmd_table(args) -> None:
     case = load_case(args.case)
     damper = build_damper(case)
@@ -39,6 +43,13 @@ def cmd_table(args) -> None:
             "jumps": [{"gamma_c": j["gamma_c"], "k_re_minus": j["k_minus"].real,
                        "k_im_minus": j["k_minus"].imag, "k_re_plus": j["k_plus"].real,
                        "k_im_plus": j["k_plus"].imag} for j in damper.jumps]}
+    if np.any(gammas > GAMMA_VALID_MAX):
+        # k(gamma) is defined at any amplitude, but the damper's kinematics (PHYSICS.md 2.1)
+        # take small rotations: docs/case-files.md, "Valid range"
+        add_warning(data, f"gamma above {GAMMA_VALID_MAX:g} rad ({rounded(float(gammas.max()))} "
+                          "rad) is outside the valid range 1e-12 to 1 rad: the damper's "
+                          "small-rotation kinematics do not hold there (was it given in "
+                          "degrees?)")
 
     def table(d):
         print_head(d, skip=("jumps",))
