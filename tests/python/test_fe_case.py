@@ -27,9 +27,10 @@ def backbones(cases, capsys) -> list[dict]:
 
 def test_reduce_writes_a_matrices_case(work, capsys):
     d, deck, case, calls = work
-    status, out, err = run(["reduce", d / "case.json", "--out", d / "red" / "r.json"], capsys)
-    assert status == 2 and "--out: directory not found" in err
-    (d / "red").mkdir()
+    (d / "file").write_text("")
+    status, out, err = run(["reduce", d / "case.json", "--out", d / "file" / "r.json"], capsys)
+    assert status == 2 and "is a file, not a directory" in err and calls == []
+    # a missing --out directory is made
     status, out, err = run(["reduce", d / "case.json", "--out", d / "red" / "r.json", "--json"],
                            capsys)
     assert status == 0, err

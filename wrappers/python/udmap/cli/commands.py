@@ -235,8 +235,8 @@ def cmd_reduce(args) -> None:
     out = Path(args.out)
     if out.suffix.lower() != ".json":
         raise InputError(f"--out must name a .json case file, got {args.out}")
-    if not out.parent.is_dir():
-        raise InputError(f"--out: directory not found: {out.parent}")
+    if out.parent.exists() and not out.parent.is_dir():
+        raise InputError(f"--out: {out.parent} is a file, not a directory")
     case = load_case(args.case)
     if case.fe is None:
         raise InputError(f"blade.kind: reduce needs an 'fe' blade ({args.case})")
@@ -244,6 +244,7 @@ def cmd_reduce(args) -> None:
     src = Path(case.fe["cache_dir"])
     blade = {"kind": "matrices"}
     moves = []
+    out.parent.mkdir(parents=True, exist_ok=True)   # a missing directory is made, like --out DIR
     for key, name in case.fe["files"].items():
         target = out.parent / f"{out.stem}_{name}"
         tmp = target.with_name(f".{target.name}.tmp")
