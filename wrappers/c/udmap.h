@@ -168,6 +168,8 @@ typedef struct {
                            layers; 0 automatic (raised until the outputs change by less than
                            harmonic_tol) */
   double harmonic_tol;  /* relative change that stops the automatic choice, default 1e-3 */
+  double ibpa_deg;      /* interblade phase angle [deg] of the traveling wave (PHYSICS.md 2.6),
+                           default 0 (in phase) */
 } udmap_analysis;
 /* generated:end udmap_analysis */
 

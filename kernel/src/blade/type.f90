@@ -86,6 +86,10 @@ module udmap_blade_type
     integer :: ndof = 0, gamma_dof = 0, exc_dof = 0
     !> Stress rows present.
     logical :: has_stress = .false.
+    !> Platform translations (PHYSICS.md 2.6) as rows of q: u_P = platform_uv(:,1).q
+    !> (circumferential), v_P = platform_uv(:,2).q (radial; a zero row: held); not allocated
+    !> when the blade does not know them (traveling waves are then refused).
+    real(wp), allocatable :: platform_uv(:, :)
     !> Damping is the explicit matrix C (else C = beta K).
     logical :: explicit_C = .false.
     !> Modal damping ratio of mode 1 and the stiffness-proportional factor beta = 2 zeta/omega_1.
@@ -170,6 +174,9 @@ contains
     blade%kd = beam_kd
     blade%zeta = params%zeta
     blade%has_stress = .true.
+    ! w points along -x (PHYSICS.md 2.6): u_P = -w_P; the beam has no radial DOF (v_P held)
+    allocate(blade%platform_uv(blade%ndof, 2), source=0.0_wp)
+    blade%platform_uv(blade%gamma_dof - 1, 1) = -1
     if (blade%ndof <= blade_dense_limit) then
       call band_to_dense(blade%Kb, blade%kd, blade%K)
       call band_to_dense(blade%Mb, blade%kd, blade%M)

@@ -71,6 +71,8 @@ module udmap_mapping_model_data
     integer :: harmonics = 1
     !> Relative change of the outputs that stops the automatic choice of H.
     real(wp) :: harmonic_tol = 1e-3_wp
+    !> Interblade phase angle phi [deg] of the traveling wave (PHYSICS.md 2.6); 0 in phase.
+    real(wp) :: ibpa_deg = 0
   end type analysis_type
 
   !> One point of the non-linear response: at resonance (backbone) or at a given frequency.

@@ -112,6 +112,13 @@ FIELDS = (
         doc='1, harmonics 0..H, or auto (PHYSICS.md 4.1)')),
     ('analysis', None, 'harmonic_tol', dict(type='real', lo=1e-10, hi=0.1, default=0.001,
         doc="relative change that stops harmonics auto (the kernel's limits)")),
+    ('analysis', None, 'blades', dict(type='int', lo=2, hi=10000, default='optional',
+        doc='blades N of the wheel, with engine_order (PHYSICS.md 2.6); excludes ibpa_deg')),
+    ('analysis', None, 'engine_order', dict(type='int', lo=0, hi=1000000, default='optional',
+        doc='engine order EO (taken modulo blades): interblade phase 2 pi EO/N; needs blades')),
+    ('analysis', None, 'ibpa_deg', dict(type='real', lo=-360, hi=360, unit='deg', default=0.0,
+        doc=('interblade phase angle phi (PHYSICS.md 2.6), 0 in phase; excludes '
+         'blades/engine_order'))),
 )
 #: Top-level fields besides the sections: (name, Field keywords).
 TOP_LEVEL = (
@@ -148,7 +155,8 @@ FLAT_NAMES = {
         ('grid_per_decade', 'grid_per_decade', ()), ('layers', 'layers', ()),
         ('eigen_method', 'eigen_method', ()), ('dense_max', 'dense_max', ()),
         ('sweep_points', 'sweep_points', ()), ('harmonics', 'harmonics', ()),
-        ('harmonic_tol', 'harmonic_tol', ())),
+        ('harmonic_tol', 'harmonic_tol', ()), ('blades', 'blades', ()),
+        ('engine_order', 'engine_order', ()), ('ibpa_deg', 'ibpa_deg', ())),
 }
 #: Items of the FMU's resources/udmap-case.txt (fmu/case.c): (section, kind) ->
 #: ((name, type), ...).
@@ -226,4 +234,5 @@ class Analysis(ctypes.Structure):
         ('sweep_points', ctypes.c_int),
         ('harmonics', ctypes.c_int),
         ('harmonic_tol', ctypes.c_double),
+        ('ibpa_deg', ctypes.c_double),
     ]

@@ -38,6 +38,7 @@ module udmap_api_c_parameters
     integer(c_int) :: sweep_points
     integer(c_int) :: harmonics
     real(c_double) :: harmonic_tol
+    real(c_double) :: ibpa_deg
   end type c_analysis_type
 
 contains
@@ -70,7 +71,7 @@ contains
     p = analysis_type(f_min=c%f_min, f_max=c%f_max, sigma_all=c%sigma_all, rtol=c%rtol, &
       & grid_per_decade=int(c%grid_per_decade), eigen_method=int(c%eigen_method), &
       & dense_max=int(c%dense_max), sweep_points=int(c%sweep_points), harmonics=int(c%harmonics), &
-      & harmonic_tol=c%harmonic_tol)
+      & harmonic_tol=c%harmonic_tol, ibpa_deg=c%ibpa_deg)
   end function analysis_from_c
 
   !> The C struct udmap_analysis of the kernel's analysis_type.
@@ -81,6 +82,7 @@ contains
       & sigma_all=real(p%sigma_all, c_double), rtol=real(p%rtol, c_double), &
       & grid_per_decade=int(p%grid_per_decade, c_int), eigen_method=int(p%eigen_method, c_int), &
       & dense_max=int(p%dense_max, c_int), sweep_points=int(p%sweep_points, c_int), &
-      & harmonics=int(p%harmonics, c_int), harmonic_tol=real(p%harmonic_tol, c_double))
+      & harmonics=int(p%harmonics, c_int), harmonic_tol=real(p%harmonic_tol, c_double), &
+      & ibpa_deg=real(p%ibpa_deg, c_double))
   end function analysis_to_c
 end module udmap_api_c_parameters
