@@ -20,7 +20,8 @@ module udmap_damper_tracer
   implicit none
   private
   public :: new_damper_geometry, virgin_state, ramp_CF, advance, restoring_moment, &
-    & full_slip_moment, trace_gamma, trace_to_plateau, record_start, reset_record, same_forces
+    & full_slip_moment, trace_gamma, trace_to_plateau, record_start, reset_record, same_forces, &
+    & trace_path, platform_actions
 
 contains
 
@@ -56,6 +57,9 @@ contains
       geo%bt(:,i) = [t(1), t(2), r(1)*t(2) - r(2)*t(1)]
       geo%cn(i) = dot_product(n, a)
       geo%ct(i) = dot_product(t, a)
+      geo%pn(:,i) = [n(1), n(2), geo%cn(i)]
+      geo%pt(:,i) = [t(1), t(2), geo%ct(i)]
+      geo%side(i) = merge(1, 2, i <= 2)
     end do
     geo%mu = params%mu
     geo%beta_deg = [params%beta_L_deg, params%beta_R_deg]
@@ -79,7 +83,7 @@ contains
     type(damper_state_type), intent(in) :: state
     real(wp) :: M
     real(wp) :: g(3), s(3), N(3), T(3)
-    call contact_forces(geo, state%mode, state%q, state%gamma, state%w, g, s, N, T)
+    call contact_forces(geo, state%mode, state%q, state%gamma, state%w, g, s, N, T, state%off)
     M = sum(geo%cn*N + geo%ct*T)
   end function restoring_moment
 
@@ -90,8 +94,8 @@ contains
     type(damper_state_type), intent(in) :: a, b
     real(wp), intent(in) :: F_scale
     real(wp) :: g(3), s(3), Na(3), Ta(3), Nb(3), Tb(3)
-    call contact_forces(geo, a%mode, a%q, a%gamma, a%w, g, s, Na, Ta)
-    call contact_forces(geo, b%mode, b%q, b%gamma, b%w, g, s, Nb, Tb)
+    call contact_forces(geo, a%mode, a%q, a%gamma, a%w, g, s, Na, Ta, a%off)
+    call contact_forces(geo, b%mode, b%q, b%gamma, b%w, g, s, Nb, Tb, b%off)
     same_forces = all(a%mode == b%mode) .and. all(abs(Na - Nb) <= 1e-10_wp*F_scale) &
       & .and. all(abs(Ta - Tb) <= 1e-10_wp*F_scale)
   end function same_forces
@@ -135,6 +139,69 @@ contains
     end if
     M_r = restoring_moment(geo, state)
   end subroutine advance
+
+  !> Exact quasi-static path on a straight line from the platforms' coordinates state%X to
+  !> X_to (PHYSICS.md 2.6: side 1 the flat-side platform, side 2 the curved-side one), every
+  !> transition resolved. A straight line in X moves every contact linearly, so the tracer
+  !> runs with a geometry whose lever arms are the contacts' travel along the segment and the
+  !> load parameter going from 0 to 1; the start of the segment enters as the offsets.
+  subroutine trace_path(geo, state, X_to, error)
+    type(damper_geometry_type), intent(in) :: geo
+    type(damper_state_type), intent(inout) :: state
+    real(wp), intent(in) :: X_to(6)
+    type(error_type), allocatable, intent(out) :: error
+    type(damper_geometry_type) :: seg
+    real(wp) :: dX(6), travel, dM
+    integer :: i, k
+    if (.not. all(abs(X_to) <= huge(1.0_wp))) then
+      call fatal_error(error, "trace_path: the platform coordinates are not finite numbers")
+      return
+    end if
+    dX = X_to - state%X
+    seg = geo
+    do i = 1, 3
+      k = 3*(geo%side(i) - 1)
+      seg%cn(i) = dot_product(geo%pn(:,i), dX(k+1:k+3))
+      seg%ct(i) = dot_product(geo%pt(:,i), dX(k+1:k+3))
+    end do
+    seg%rate_scale = max(maxval(geo%kn*abs(seg%cn)), maxval(geo%kt*abs(seg%ct)))
+    if (seg%rate_scale > 0) then
+      call set_offsets(state%X)
+      state%gamma = 0
+      state%direction = 1
+      call trace_core(seg, state, 1, 1, 1.0_wp, 0.0_wp, .true., travel, dM, error)
+      if (allocated(error)) return
+    end if
+    state%X = X_to
+    call set_offsets(X_to)
+    state%gamma = 0
+  contains
+    subroutine set_offsets(X)
+      real(wp), intent(in) :: X(6)
+      integer :: j, m
+      do j = 1, 3
+        m = 3*(geo%side(j) - 1)
+        state%off(1,j) = dot_product(geo%pn(:,j), X(m+1:m+3))
+        state%off(2,j) = dot_product(geo%pt(:,j), X(m+1:m+3))
+      end do
+    end subroutine set_offsets
+  end subroutine trace_path
+
+  !> The damper's restoring actions on its two platforms (PHYSICS.md 2.6): A(:,k) = (F_x, F_y,
+  !> moment about P) of the contact forces on the damper from side k's contacts; the
+  !> platform feels -A. In phase, A(3,1) + A(3,2) is the restoring moment M_r of 2.1.
+  pure function platform_actions(geo, state) result(A)
+    type(damper_geometry_type), intent(in) :: geo
+    type(damper_state_type), intent(in) :: state
+    real(wp) :: A(3,2)
+    real(wp) :: g(3), s(3), N(3), T(3)
+    integer :: i
+    call contact_forces(geo, state%mode, state%q, state%gamma, state%w, g, s, N, T, state%off)
+    A = 0
+    do i = 1, 3
+      A(:, geo%side(i)) = A(:, geo%side(i)) + N(i)*geo%pn(:,i) + T(i)*geo%pt(:,i)
+    end do
+  end function platform_actions
 
   !> Traces gamma to `target` (p-derivative `target_p`), appending the vertices to `rec` and
   !> narrowing `val` to the range of p over which the event sequence holds.

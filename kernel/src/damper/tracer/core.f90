@@ -41,6 +41,14 @@ module udmap_damper_tracer_core
     real(wp) :: rate_scale = 0
     !> Moment rate per unit gamma (rate_scale times the largest lever arm) [N m/rad].
     real(wp) :: moment_scale = 0
+    !> Rigid platform kinematics (PHYSICS.md 2.6): contact i touches platform side(i) (1: the
+    !> flat side, blade j; 2: the curved side, blade j + 1) with centre P; a platform motion
+    !> (u_P, v_P, gamma_P) moves the contact point by n.(...) = pn(:,i).(u_P, v_P, gamma_P)
+    !> along the normal and pt(:,i).(...) along the tangent (pn = (n_x, n_y, cn),
+    !> pt = (t_x, t_y, ct)). These are also the generalised directions of the contact force
+    !> on the platform's coordinates.
+    real(wp) :: pn(3,3) = 0, pt(3,3) = 0
+    integer :: side(3) = 0
   end type damper_geometry_type
 
   !> State of the damper on its loading path: DOFs, sliders, contact states, loads.
@@ -58,6 +66,12 @@ module udmap_damper_tracer_core
     !> Derivatives of q, w, gamma with respect to the path parameter p (loop amplitude);
     !> zero unless the targets depend on p.
     real(wp) :: q_p(3) = 0, w_p(3) = 0, gamma_p = 0
+    !> Platform displacement at each contact beyond gamma (cn, ct): off(1,i) along the
+    !> normal, off(2,i) along the tangent [m]; zero on in-phase paths (PHYSICS.md 2.6).
+    real(wp) :: off(2,3) = 0
+    !> Both platforms' coordinates (u_P, v_P, gamma_P of side 1, then of side 2) on a
+    !> traveling-wave path (trace_path).
+    real(wp) :: X(6) = 0
   end type damper_state_type
 
   !> Range [lo, hi] of the parameter p around p0 in which the traced event sequence holds.
@@ -86,15 +100,21 @@ contains
   !> Normal approach g, tangential displacement s and forces N, T of the three contacts for
   !> the states `mode` at (q, gamma, w). Linear and homogeneous in (q, gamma, w), so it also
   !> maps p-derivatives to p-derivatives.
-  pure subroutine contact_forces(geo, mode, q, gamma, w, g, s, N, T)
+  pure subroutine contact_forces(geo, mode, q, gamma, w, g, s, N, T, off)
     type(damper_geometry_type), intent(in) :: geo
     integer, intent(in) :: mode(3)
     real(wp), intent(in) :: q(3), gamma, w(3)
     real(wp), intent(out) :: g(3), s(3), N(3), T(3)
+    !> The state's platform offsets (damper_state_type%off); absent: none.
+    real(wp), intent(in), optional :: off(2,3)
     integer :: i
     do i = 1, 3
       g(i) = -(geo%bn(1,i)*q(1) + geo%bn(2,i)*q(2) + geo%bn(3,i)*q(3)) + gamma*geo%cn(i)
       s(i) = geo%bt(1,i)*q(1) + geo%bt(2,i)*q(2) + geo%bt(3,i)*q(3) - gamma*geo%ct(i)
+      if (present(off)) then
+        g(i) = g(i) + off(1,i)
+        s(i) = s(i) - off(2,i)
+      end if
       select case (mode(i))
       case (CONTACT_STICK)
         N(i) = geo%kn(i)*g(i)
@@ -162,7 +182,7 @@ contains
       call resolve_mode(geo, st, dgam, dcf, pred, rt, error)
       if (allocated(error)) return
 
-      call contact_forces(geo, st%mode, st%q, st%gamma, st%w, g, s, N, T)
+      call contact_forces(geo, st%mode, st%q, st%gamma, st%w, g, s, N, T, st%off)
       call contact_forces(geo, st%mode, st%q_p, st%gamma_p, st%w_p, gp, sp, Np, Tp)
       ! Candidate events: travel to each boundary the states move towards.
       nc = 0
@@ -317,7 +337,7 @@ contains
     real(wp) :: g(3), s(3), N(3), T(3), gp(3), sp(3), Np(3), Tp(3)
     integer :: i
     if (all(st%mode == CONTACT_STICK)) return
-    call contact_forces(geo, st%mode, st%q, st%gamma, st%w, g, s, N, T)
+    call contact_forces(geo, st%mode, st%q, st%gamma, st%w, g, s, N, T, st%off)
     call contact_forces(geo, st%mode, st%q_p, st%gamma_p, st%w_p, gp, sp, Np, Tp)
     do i = 1, 3
       if (st%mode(i) /= CONTACT_STICK) then
@@ -343,7 +363,7 @@ contains
     logical :: ok, any_regular
     character(len=120) :: buf
 
-    call contact_forces(geo, st%mode, st%q, st%gamma, st%w, g, s, N, T)
+    call contact_forces(geo, st%mode, st%q, st%gamma, st%w, g, s, N, T, st%off)
     tolF = force_tolerance(geo, st)
     tolR = TOL_RATE*(geo%rate_scale*abs(dgam) + abs(dcf))
     sig0 = 0
@@ -432,7 +452,7 @@ contains
       real(wp) :: gg(3), ss(3), NN(3), TT(3), gp(3), sp(3), Np(3), Tp(3)
       integer :: j
       if (all(old == st%mode)) return
-      call contact_forces(geo, st%mode, st%q, st%gamma, st%w, gg, ss, NN, TT)
+      call contact_forces(geo, st%mode, st%q, st%gamma, st%w, gg, ss, NN, TT, st%off)
       call contact_forces(geo, st%mode, st%q_p, st%gamma_p, st%w_p, gp, sp, Np, Tp)
       do j = 1, 3
         if ((old(j) == CONTACT_OPEN) .neqv. (st%mode(j) == CONTACT_OPEN)) then
@@ -448,7 +468,7 @@ contains
     type(damper_geometry_type), intent(in) :: geo
     type(damper_state_type), intent(in) :: st
     real(wp) :: g(3), s(3), N(3), T(3)
-    call contact_forces(geo, st%mode, st%q, st%gamma, st%w, g, s, N, T)
+    call contact_forces(geo, st%mode, st%q, st%gamma, st%w, g, s, N, T, st%off)
     force_tolerance = TOL_FORCE*max(abs(st%CF), maxval(abs(N)), maxval(abs(T)))
   end function force_tolerance
 
@@ -560,7 +580,7 @@ contains
     rec%n = rec%n + 1
     call put(rec%gamma, rec%n, st%gamma)
     call put(rec%gamma_p, rec%n, st%gamma_p)
-    call contact_forces(geo, st%mode, st%q, st%gamma, st%w, g, s, N, T)
+    call contact_forces(geo, st%mode, st%q, st%gamma, st%w, g, s, N, T, st%off)
     call put(rec%M, rec%n, sum(geo%cn*N + geo%ct*T))
     call contact_forces(geo, st%mode, st%q_p, st%gamma_p, st%w_p, g, s, N, T)
     call put(rec%M_p, rec%n, sum(geo%cn*N + geo%ct*T))

@@ -78,4 +78,4 @@ def build_model(case: Case, blade: Blade | None = None, damper: Damper | None = 
                  rtol=a["rtol"], grid_per_decade=a["grid_per_decade"],
                  eigen_method=EIGEN_METHODS[a["eigen_method"]], dense_max=a["dense_max"],
                  sweep_points=a["sweep_points"], harmonics=a["harmonics"],
-                 harmonic_tol=a["harmonic_tol"])
+                 harmonic_tol=a["harmonic_tol"], ibpa_deg=a.get("ibpa_deg", 0.0))

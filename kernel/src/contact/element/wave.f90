@@ -1,0 +1,164 @@
+!> The asymmetric damper between two blades of a traveling wave (PHYSICS.md 2.6): its trace
+!> along the periodic motion of both platforms and the Fourier projection of its action on
+!> blade 0. Shared by the traveling-wave layers of the mapping and the standard method.
+!>
+!> Blade 0's platform moves as p(tau) = P_0 + Re(sum_h P_h e^{i h tau}), p = (u_P, v_P,
+!> gamma_P); the damper's flat contacts follow p(tau), its curved contact p(tau + phi). The
+!> action on blade 0 is the flat-side action plus the curved-side action delayed by phi,
+!> A(tau) = A_flat(tau) + A_curved(tau - phi), so harmonic h of A is
+!> A_flat,h + e^{-i h phi} A_curved,h. Loading history: virgin state, CF ramp with both platforms
+!> at rest, a proportional ramp of both platforms to their values at tau = 0, then periods
+!> until the state at the start of a period repeats.
+!>
+!> The path between `samples` equally spaced instants is a straight line in the platforms'
+!> coordinates, traced exactly (udmap_damper_tracer: trace_path); the harmonics are the
+!> discrete Fourier transform of the action at the instants (the classical AFT: error
+!> O(1/samples^2) against the smooth path, the same for every method that calls this).
+module udmap_contact_element_wave
+  use udmap_core_kinds, only: wp, pi
+  use udmap_core_error, only: error_type, fatal_error, UDMAP_EINPUT
+  use udmap_damper_tracer_core, only: damper_geometry_type, damper_state_type, CONTACT_OPEN, &
+    & CONTACT_SLIP_POS, CONTACT_SLIP_NEG
+  use udmap_damper_tracer, only: virgin_state, ramp_CF, trace_path, platform_actions, same_forces
+  implicit none
+  private
+  public :: wave_aft, wave_settings_type, wave_result_type, wave_static_action
+
+  !> How the trace is run.
+  type :: wave_settings_type
+    !> Instants per period.
+    integer :: samples = 128
+    !> Periods after the ramp: at least, at most.
+    integer :: min_periods = 2, max_periods = 16
+  end type wave_settings_type
+
+  !> What a trace found besides the harmonics.
+  type :: wave_result_type
+    !> Energy dissipated per cycle in the damper [J], from the traced samples.
+    real(wp) :: energy = 0
+    !> A contact slipped / was open at some instant of the steady period.
+    logical :: slipped = .false., lifted = .false.
+    !> Each contact slipped at some instant of the steady period.
+    logical :: contact_slipped(3) = .false.
+    !> Periods traced after the ramp; the last one closed (the state repeated).
+    integer :: periods = 0
+    logical :: closed = .false.
+  end type wave_result_type
+
+contains
+
+  !> The static action on blade 0 of the damper loaded by CF with both platforms at rest.
+  subroutine wave_static_action(geo, CF, A_ref, error)
+    type(damper_geometry_type), intent(in) :: geo
+    real(wp), intent(in) :: CF
+    real(wp), intent(out) :: A_ref(3)
+    type(error_type), allocatable, intent(out) :: error
+    type(damper_state_type) :: st
+    real(wp) :: A(3,2)
+    A_ref = 0
+    call virgin_state(geo, st)
+    call ramp_CF(geo, st, CF, error)
+    if (allocated(error)) return
+    A = platform_actions(geo, st)
+    A_ref = A(:,1) + A(:,2)
+  end subroutine wave_static_action
+
+  !> Harmonics A0 (static) and A(:,h), h = 1..size(P,2), of the damper's restoring action on
+  !> blade 0 for blade 0's platform harmonics P0 (static) and P(:,h), at the interblade phase
+  !> phi [rad].
+  subroutine wave_aft(geo, CF, phi, P0, P, settings, A0, A, error, res)
+    type(damper_geometry_type), intent(in) :: geo
+    real(wp), intent(in) :: CF, phi, P0(3)
+    complex(wp), intent(in) :: P(:, :)
+    type(wave_settings_type), intent(in) :: settings
+    real(wp), intent(out) :: A0(3)
+    complex(wp), intent(out) :: A(:, :)
+    type(error_type), allocatable, intent(out) :: error
+    type(wave_result_type), intent(out), optional :: res
+    type(damper_state_type) :: st, start
+    real(wp), allocatable :: X(:, :), AL(:, :), AR(:, :)
+    complex(wp), allocatable :: e(:, :)
+    real(wp) :: tau, Ak(3,2), energy, F_scale
+    integer :: ns, j, k, per, H
+    logical :: closed, slipped, lifted, cs(3)
+
+    ns = settings%samples
+    H = size(P, 2)
+    A0 = 0
+    A = (0.0_wp, 0.0_wp)
+    if (ns < 2*H + 2) then
+      call fatal_error(error, "wave_aft: too few samples for the harmonics", UDMAP_EINPUT)
+      return
+    end if
+    allocate(X(6, 0:ns-1), AL(3, ns), AR(3, ns), e(H, ns))
+    do j = 0, ns - 1
+      tau = 2*pi*j/ns
+      X(1:3, j) = motion(tau)
+      X(4:6, j) = motion(tau + phi)
+    end do
+    call virgin_state(geo, st)
+    call ramp_CF(geo, st, CF, error)
+    if (allocated(error)) return
+    F_scale = max(CF, 1e-300_wp)
+    call trace_path(geo, st, X(:, 0), error)
+    if (allocated(error)) return
+    closed = .false.
+    do per = 1, settings%max_periods
+      start = st
+      slipped = .false.
+      lifted = .false.
+      cs = .false.
+      energy = 0
+      do j = 1, ns
+        call trace_path(geo, st, X(:, mod(j, ns)), error)
+        if (allocated(error)) return
+        Ak = platform_actions(geo, st)
+        ! trapezoid on the samples: the work of the actions on their platforms
+        if (j > 1) energy = energy + 0.5_wp*(dot_product(AL(:, j-1) + Ak(:,1), &
+          & X(1:3, mod(j, ns)) - X(1:3, j-1)) + dot_product(AR(:, j-1) + Ak(:,2), &
+          & X(4:6, mod(j, ns)) - X(4:6, j-1)))
+        AL(:, j) = Ak(:,1)
+        AR(:, j) = Ak(:,2)
+        cs = cs .or. st%mode == CONTACT_SLIP_POS .or. st%mode == CONTACT_SLIP_NEG
+        slipped = any(cs)
+        lifted = lifted .or. any(st%mode == CONTACT_OPEN)
+      end do
+      ! the first segment of the period closes the trapezoid sum
+      energy = energy + 0.5_wp*(dot_product(AL(:, ns) + AL(:, 1), X(1:3, 1) - X(1:3, 0)) + &
+        & dot_product(AR(:, ns) + AR(:, 1), X(4:6, 1) - X(4:6, 0)))
+      closed = same_forces(geo, start, st, F_scale)
+      if (per >= settings%min_periods .and. closed) exit
+    end do
+    ! harmonics of the action on blade 0 (instants tau_j = 2 pi j/ns, j = 1..ns)
+    do j = 1, ns
+      do k = 1, H
+        e(k, j) = exp(cmplx(0.0_wp, -k*2*pi*j/ns, wp))
+      end do
+    end do
+    A0 = (sum(AL, dim=2) + sum(AR, dim=2))/ns
+    do k = 1, H
+      A(:, k) = (matmul(cmplx(AL, 0.0_wp, wp), e(k, :)) + &
+        & exp(cmplx(0.0_wp, -k*phi, wp))*matmul(cmplx(AR, 0.0_wp, wp), e(k, :)))*(2.0_wp/ns)
+    end do
+    if (present(res)) then
+      res%energy = energy
+      res%slipped = slipped
+      res%contact_slipped = cs
+      res%lifted = lifted
+      res%periods = min(per, settings%max_periods)
+      res%closed = closed
+    end if
+
+  contains
+
+    pure function motion(t) result(x_t)
+      real(wp), intent(in) :: t
+      real(wp) :: x_t(3)
+      integer :: m
+      x_t = P0
+      do m = 1, H
+        x_t = x_t + real(P(:, m)*exp(cmplx(0.0_wp, m*t, wp)), wp)
+      end do
+    end function motion
+  end subroutine wave_aft
+end module udmap_contact_element_wave

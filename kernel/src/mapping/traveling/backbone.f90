@@ -1,0 +1,243 @@
+!> Resonance peaks and the limit force of a traveling wave (PHYSICS.md 2.6, sections 4 and 5
+!> at the interblade phase phi).
+!>
+!> F_bb(gamma) is the minimum over omega of the force of the layer gamma
+!> (udmap_mapping_traveling_layer); a requested F_E is the root of F_bb(gamma) = F_E, found by
+!> bracketing outward from the in-phase answer and Brent's method on ln gamma. The outputs
+!> follow from the solved layer at its peak: gamma_P (first harmonic), f_res, sigma_a and u_E
+!> (first-harmonic amplitudes), k = A_gamma,1/gamma_P, the largest excursions at H > 1.
+!>
+!> F_lim(phi): the supremum of F_bb with zeta = 0 is the energy balance of the bare first
+!> mode at large amplitude: the work that friction takes from blade 0 per cycle grows as
+!> W(a) ~ W' a, the work of the force F along the mode as pi F a |psi_E/psi_g|, so
+!> F_lim = W'/(pi |psi_E/psi_g|) (at phi = 0: 2 Delta_M/(pi |phi_E/phi_g|), section 5).
+module udmap_mapping_traveling_backbone
+  use udmap_core_kinds, only: wp, pi
+  use udmap_core_error, only: error_type, fatal_error, UDMAP_EINPUT, UDMAP_EPHYSICS
+  use udmap_core_strings, only: ftoa
+  use udmap_core_root_finding, only: brent_type, brent_start, brent_next, brent_update
+  use udmap_blade_platform, only: platform_rows
+  use udmap_damper_type, only: DAMPER_ASYMMETRIC
+  use udmap_contact_element_wave, only: wave_aft, wave_settings_type
+  use udmap_mapping_model_data, only: model_type, point_type, REGIME_STUCK, &
+    & REGIME_PARTIAL_SLIP, REGIME_FULL_SLIP, REGIME_LIMIT
+  use udmap_mapping_harmonic_mapping, only: inphase_backbone => backbone
+  use udmap_mapping_harmonic_layer, only: largest_excursion
+  use udmap_mapping_traveling_layer, only: traveling_type, wave_layer_type, new_traveling, &
+    & wave_peak
+  implicit none
+  private
+  public :: wave_backbone, wave_limit_force, interblade_phase, new_model_traveling
+
+  !> Relative tolerance of the backbone roots in gamma (the layers are solved to ~1e-11).
+  real(wp), parameter :: root_rtol = 1.0e-10_wp
+
+contains
+
+  !> The interblade phase angle of the model's analysis [rad], in (-pi, pi].
+  pure real(wp) function interblade_phase(model) result(phi)
+    type(model_type), intent(in) :: model
+    phi = modulo(model%analysis%ibpa_deg + 180.0_wp, 360.0_wp) - 180.0_wp
+    if (phi == -180.0_wp) phi = 180.0_wp
+    phi = phi*pi/180
+  end function interblade_phase
+
+  !> The traveling-wave coupling of the model's blade and (asymmetric) damper.
+  subroutine new_model_traveling(model, tw, error)
+    type(model_type), intent(in) :: model
+    type(traveling_type), intent(out) :: tw
+    type(error_type), allocatable, intent(out) :: error
+    if (model%damper%kind /= DAMPER_ASYMMETRIC) then
+      call fatal_error(error, "traveling wave: only the asymmetric damper depends on phi", &
+        & UDMAP_EINPUT)
+      return
+    end if
+    call new_traveling(tw, model%blade, model%damper%geometry, model%damper%params%CF, &
+      & interblade_phase(model), max(model%analysis%harmonics, 1), model%omega_lo, &
+      & model%omega_hi, error)
+  end subroutine new_model_traveling
+
+  !> F_lim(phi) [N] (see the module's header).
+  subroutine wave_limit_force(model, F_lim, error)
+    type(model_type), intent(in) :: model
+    real(wp), intent(out) :: F_lim
+    type(error_type), allocatable, intent(out) :: error
+    type(traveling_type) :: tw
+    real(wp), allocatable :: B(:, :)
+    real(wp) :: psi(3), psi_E, a_c, W(2), amp(2), A0(3)
+    complex(wp) :: P(3, 1), A(3, 1)
+    type(wave_settings_type) :: settings
+    integer :: k
+    F_lim = 0
+    call new_model_traveling(model, tw, error)
+    if (allocated(error)) return
+    allocate(B(model%blade%ndof, 3))
+    call platform_rows(model%blade, B)
+    psi = matmul(model%blade%phi(:, 1), B)
+    psi_E = model%blade%phi(model%blade%exc_dof, 1)
+    psi = psi/psi(3)
+    psi_E = psi_E/model%blade%phi(model%blade%gamma_dof, 1)
+    ! far beyond the rotation that CF deflects the contacts by: the plateaus dominate
+    a_c = max(tw%CF, 1e-300_wp)/tw%geo%rate_scale
+    amp = [1e4_wp, 2e4_wp]*a_c
+    settings%samples = tw%settings%samples
+    do k = 1, 2
+      P(:, 1) = cmplx(amp(k)*psi, 0.0_wp, wp)
+      call wave_aft(tw%geo, tw%CF, tw%phi, [0.0_wp, 0.0_wp, 0.0_wp], P, settings, A0, A, error)
+      if (allocated(error)) return
+      W(k) = pi*sum(aimag(A(:, 1)*conjg(P(:, 1))))
+    end do
+    if (.not. ((W(2) - W(1)) > 0)) then
+      call fatal_error(error, "traveling wave: the damper dissipates no energy at large "// &
+        & "amplitude (no limit force)", UDMAP_EPHYSICS)
+      return
+    end if
+    F_lim = (W(2) - W(1))/(amp(2) - amp(1))/(pi*abs(psi_E))
+  end subroutine wave_limit_force
+
+  !> The peaks of the traveling wave for the forces F_E [N].
+  subroutine wave_backbone(model, F_E, points, error)
+    type(model_type), intent(inout) :: model
+    real(wp), intent(in) :: F_E(:)
+    type(point_type), allocatable, intent(out) :: points(:)
+    type(error_type), allocatable, intent(out) :: error
+    type(traveling_type) :: tw
+    type(wave_layer_type) :: L
+    type(point_type), allocatable :: guess(:)
+    real(wp) :: F_lim, omega_g, F_cur, w
+    integer :: i, H_saved
+    real(wp) :: ibpa_saved
+
+    call new_model_traveling(model, tw, error)
+    if (allocated(error)) return
+    call wave_limit_force(model, F_lim, error)
+    if (allocated(error)) return
+    ! the in-phase single-harmonic peaks start the search
+    H_saved = model%analysis%harmonics
+    ibpa_saved = model%analysis%ibpa_deg
+    model%analysis%harmonics = 1
+    model%analysis%ibpa_deg = 0
+    call inphase_backbone(model, F_E, guess, error)
+    model%analysis%harmonics = H_saved
+    model%analysis%ibpa_deg = ibpa_saved
+    if (allocated(error)) return
+    allocate(points(size(F_E)))
+    omega_g = 0
+    do i = 1, size(F_E)
+      points(i)%F_E = F_E(i)
+      points(i)%harmonics = tw%H
+      if (model%undamped .and. F_E(i) >= F_lim) then
+        points(i)%regime = REGIME_LIMIT
+        points(i)%unbounded = .true.
+        allocate(points(i)%roots(0))
+        cycle
+      end if
+      if (omega_g == 0 .and. guess(i)%f_res > 0) omega_g = 2*pi*guess(i)%f_res
+      call peak_of_force(F_E(i), max(guess(i)%gamma_P, tiny(1.0_wp)), omega_g, points(i), error)
+      if (allocated(error)) return
+      omega_g = 2*pi*points(i)%f_res
+    end do
+
+  contains
+
+    !> Root gamma of F_bb(gamma) = F and the outputs there.
+    subroutine peak_of_force(F, gamma0, omega0, pt, err)
+      real(wp), intent(in) :: F, gamma0, omega0
+      type(point_type), intent(inout) :: pt
+      type(error_type), allocatable, intent(out) :: err
+      type(brent_type) :: bs
+      real(wp) :: lo, hi, glo, ghi, g, x
+      logical :: more
+      integer :: k
+      w = omega0
+      F_cur = F
+      lo = log(gamma0)
+      glo = excess(lo, err)
+      if (allocated(err)) return
+      hi = lo
+      ghi = glo
+      do k = 1, 80
+        if (glo*ghi <= 0 .and. lo /= hi) exit
+        if (ghi < 0) then
+          lo = hi
+          glo = ghi
+          hi = hi + log(2.0_wp)
+          ghi = excess(hi, err)
+        else
+          hi = lo
+          ghi = glo
+          lo = lo - log(2.0_wp)
+          glo = excess(lo, err)
+        end if
+        if (allocated(err)) return
+      end do
+      if (glo*ghi > 0) then
+        call fatal_error(err, "traveling wave: no peak found for F_E = "//ftoa(F)//" N at phi = "// &
+          & ftoa(tw%phi)//" rad", UDMAP_EPHYSICS)
+        return
+      end if
+      call brent_start(bs, lo, glo, hi, ghi, root_rtol)
+      do
+        call brent_next(bs, x, more)
+        if (.not. more) exit
+        g = excess(x, err)
+        if (allocated(err)) return
+        call brent_update(bs, g)
+      end do
+      g = excess(x, err)
+      if (allocated(err)) return
+      call fill_point(exp(x), F, pt)
+    end subroutine peak_of_force
+
+    !> ln F_bb(e^x) - ln F_cur at the layer e^x (leaves L at its peak, w at its frequency).
+    real(wp) function excess(xg, err)
+      real(wp), intent(in) :: xg
+      type(error_type), allocatable, intent(out) :: err
+      real(wp) :: Fbb
+      excess = 0
+      call wave_peak(tw, exp(xg), w, L, Fbb, err)
+      if (allocated(err)) return
+      w = L%omega
+      excess = log(Fbb) - log(F_cur)
+    end function excess
+
+    subroutine fill_point(gamma, F, pt)
+      real(wp), intent(in) :: gamma, F
+      type(point_type), intent(inout) :: pt
+      complex(wp), allocatable :: Z(:)
+      real(wp) :: s
+      integer :: h
+      s = F/abs(L%F)
+      pt%gamma_P = gamma
+      pt%f_res = L%omega/(2*pi)
+      pt%sigma_a = s*abs(L%sigma(1))
+      pt%u_E = s*abs(L%uE(1))
+      pt%k = L%A(3, 1)/gamma
+      pt%roots = [gamma]
+      if (.not. L%trace%slipped) then
+        pt%regime = REGIME_STUCK
+      else if (all(L%trace%contact_slipped)) then
+        pt%regime = REGIME_FULL_SLIP
+      else
+        pt%regime = REGIME_PARTIAL_SLIP
+      end if
+      if (F >= F_lim) pt%regime = REGIME_LIMIT
+      pt%hcf_ok = F <= 0.5_wp*F_lim .and. pt%sigma_a <= model%analysis%sigma_all
+      pt%gamma_max = gamma
+      pt%sigma_max = pt%sigma_a
+      if (tw%H > 1) then
+        Z = L%P(3, :)
+        pt%gamma_max = largest_excursion(Z)
+        Z = L%sigma*s
+        pt%sigma_max = largest_excursion(Z)
+        allocate(pt%gamma_h(0:tw%H), pt%sigma_h(0:tw%H))
+        pt%gamma_h(0) = abs(L%P0(3))
+        pt%sigma_h(0) = 0
+        do h = 1, tw%H
+          pt%gamma_h(h) = abs(L%P(3, h))
+          pt%sigma_h(h) = s*abs(L%sigma(h))
+        end do
+      end if
+    end subroutine fill_point
+  end subroutine wave_backbone
+end module udmap_mapping_traveling_backbone
