@@ -18,6 +18,8 @@ module udmap_blade_platform
   !> between coordinate a and E, sp(b) and sE from a unit force to the stress, EE at E.
   type :: platform_receptances_type
     complex(wp) :: pp(3,3) = 0, pE(3) = 0, sp(3) = 0, sE = 0, EE = 0
+    !> d/domega of pp and pE (on request): -Z_a^T D'(omega) Z_b, D' = -2 omega M + i C.
+    complex(wp) :: dpp(3,3) = 0, dpE(3) = 0
   end type platform_receptances_type
 
 contains
@@ -38,13 +40,14 @@ contains
   end subroutine platform_rows
 
   !> Platform receptances at omega [rad/s] (omega = 0: static).
-  subroutine platform_receptances(blade, omega, r, error)
+  subroutine platform_receptances(blade, omega, r, error, derivatives)
     type(blade_type), intent(in) :: blade
     real(wp), intent(in) :: omega
     type(platform_receptances_type), intent(out) :: r
     type(error_type), allocatable, intent(out) :: error
-    complex(wp), allocatable :: D(:, :), Z(:, :)
-    real(wp), allocatable :: B(:, :), K(:, :), M(:, :), s(:)
+    logical, intent(in), optional :: derivatives
+    complex(wp), allocatable :: D(:, :), Z(:, :), dD(:, :), Y(:, :)
+    real(wp), allocatable :: B(:, :), K(:, :), M(:, :), s(:), Cd(:, :)
     integer, allocatable :: ipiv(:)
     integer :: n, info, a, c
     n = blade%ndof
@@ -63,17 +66,14 @@ contains
     end if
     if (blade%explicit_C) then
       if (allocated(blade%C)) then
-        D = cmplx(K - omega**2*M, omega*blade%C, wp)
+        Cd = blade%C
       else
-        block
-          real(wp), allocatable :: C(:, :)
-          call band_to_dense(blade%Cb, blade%kd, C)
-          D = cmplx(K - omega**2*M, omega*C, wp)
-        end block
+        call band_to_dense(blade%Cb, blade%kd, Cd)
       end if
     else
-      D = cmplx(K - omega**2*M, omega*blade%beta*K, wp)
+      Cd = blade%beta*K
     end if
+    D = cmplx(K - omega**2*M, omega*Cd, wp)
     allocate(B(n, 3), Z(n, 4), ipiv(n))
     call platform_rows(blade, B)
     Z(:, 1:3) = B
@@ -93,6 +93,18 @@ contains
       r%pE(c) = sum(B(:, c)*Z(:, 4))
     end do
     r%EE = Z(blade%exc_dof, 4)
+    if (present(derivatives)) then
+      if (derivatives) then
+        dD = cmplx(-2*omega*M, Cd, wp)
+        Y = matmul(dD, Z)
+        do c = 1, 3
+          do a = 1, 3
+            r%dpp(a, c) = -sum(Z(:, a)*Y(:, c))
+          end do
+          r%dpE(c) = -sum(Z(:, c)*Y(:, 4))
+        end do
+      end if
+    end if
     if (blade%has_stress) then
       s = blade%s_K - omega**2*blade%s_M
       do c = 1, 3

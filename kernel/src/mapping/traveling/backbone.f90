@@ -146,7 +146,7 @@ contains
       type(point_type), intent(inout) :: pt
       type(error_type), allocatable, intent(out) :: err
       type(brent_type) :: bs
-      real(wp) :: lo, hi, glo, ghi, g, x
+      real(wp) :: lo, hi, glo, ghi, g, x, slope, step
       logical :: more
       integer :: k
       w = omega0
@@ -154,23 +154,33 @@ contains
       lo = log(gamma0)
       glo = excess(lo, err)
       if (allocated(err)) return
+      ! secant steps in (ln gamma, ln F_bb) (slope 1 to start: F_bb grows like gamma in stick
+      ! and towards the limit), capped at a factor 4, until the root is bracketed
       hi = lo
       ghi = glo
+      slope = 1
       do k = 1, 80
         if (glo*ghi <= 0 .and. lo /= hi) exit
-        if (ghi < 0) then
-          lo = hi
-          glo = ghi
-          hi = hi + log(2.0_wp)
-          ghi = excess(hi, err)
-        else
-          hi = lo
-          ghi = glo
-          lo = lo - log(2.0_wp)
-          glo = excess(lo, err)
-        end if
+        step = -ghi/max(slope, 0.05_wp)
+        step = sign(min(abs(step), log(4.0_wp)), step)
+        if (abs(step) < 1e-6_wp) step = sign(1e-6_wp, step)
+        x = hi + step
+        g = excess(x, err)
         if (allocated(err)) return
+        if (x /= hi .and. g /= ghi) slope = (g - ghi)/(x - hi)
+        lo = hi
+        glo = ghi
+        hi = x
+        ghi = g
       end do
+      if (lo > hi) then
+        x = lo
+        lo = hi
+        hi = x
+        g = glo
+        glo = ghi
+        ghi = g
+      end if
       if (glo*ghi > 0) then
         call fatal_error(err, "traveling wave: no peak found for F_E = "//ftoa(F)//" N at phi = "// &
           & ftoa(tw%phi)//" rad", UDMAP_EPHYSICS)

@@ -15,7 +15,8 @@ module udmap_mapping_traveling_layer
   use udmap_core_kinds, only: wp, pi
   use udmap_core_error, only: error_type, fatal_error, UDMAP_EINPUT, UDMAP_ENUMERIC, UDMAP_EPHYSICS
   use udmap_core_strings, only: ftoa
-  use udmap_core_lapack, only: dgesv
+  use udmap_core_lapack, only: dgetrf, dgetrs
+  use udmap_core_root_finding, only: brent_type, brent_start, brent_next, brent_update
   use udmap_blade_type, only: blade_type
   use udmap_blade_platform, only: platform_receptances_type, platform_receptances
   use udmap_damper_tracer_core, only: damper_geometry_type
@@ -26,7 +27,7 @@ module udmap_mapping_traveling_layer
   public :: traveling_type, wave_layer_type, new_traveling, wave_layer_solve, wave_peak
 
   !> Relative finite-difference step, Newton tolerance (to the layer's scale) and cap.
-  real(wp), parameter :: fd_step = 1.0e-7_wp, newton_tol = 1.0e-11_wp
+  real(wp), parameter :: fd_step = 1.0e-7_wp, newton_tol = 1.0e-13_wp
   integer, parameter :: newton_max = 40
   !> Relative frequency tolerance of the peak.
   real(wp), parameter :: peak_rtol = 1.0e-11_wp
@@ -65,6 +66,16 @@ module udmap_mapping_traveling_layer
     complex(wp), allocatable :: sigma(:), uE(:)
     type(wave_result_type) :: trace
     logical :: solved = .false.
+    !> d|F|^2/domega at the solution [N^2 s/rad].
+    real(wp) :: psi = 0
+    !> The Jacobian of the balance, its LU factors and dF/dx (kept for the next solve).
+    real(wp), allocatable :: J(:, :), LU(:, :)
+    complex(wp), allocatable :: Fx(:)
+    integer, allocatable :: ipiv(:)
+    logical :: J_valid = .false.
+    !> Where the Jacobian was taken; the bracket width of the last peak search [rad/s].
+    real(wp), allocatable :: x_J(:)
+    real(wp) :: bracket = 0
   end type wave_layer_type
 
 contains
@@ -110,18 +121,23 @@ contains
   end function n_unknowns
 
   !> Solves the layer (gamma, omega), starting from what L holds (a neighbouring solution;
-  !> zeros for a cold start). Sets L%F, the harmonics and the stress.
+  !> zeros for a cold start). Sets L%F, the harmonics, the stress and psi = d|F|^2/domega
+  !> (total: the platform's harmonics follow omega, dx/domega = -J^-1 dR/domega; the damper's
+  !> action does not depend on omega, so this needs no trace beyond the Jacobian's).
   subroutine wave_layer_solve(tw, gamma, omega, L, error)
     type(traveling_type), intent(inout) :: tw
     real(wp), intent(in) :: gamma, omega
     type(wave_layer_type), intent(inout) :: L
     type(error_type), allocatable, intent(out) :: error
     type(platform_receptances_type), allocatable :: r(:)
-    real(wp), allocatable :: x(:), R0(:), Rt(:), J(:, :), dx(:), xt(:), sc(:)
+    real(wp), allocatable :: x(:), R0(:), Rt(:), dx(:), xt(:), sc(:), Rw(:)
     integer, allocatable :: ipiv(:)
-    integer :: n, it, k, h, info, ls, attempt
-    real(wp) :: rn, rnt, t
-    logical :: done
+    integer :: n, it, h, info, ls, attempt
+    real(wp) :: rn, rnt, t, rn_prev
+    complex(wp) :: F0, dF
+    complex(wp), allocatable :: A_x(:, :)
+    real(wp) :: A0_x(3)
+    logical :: done, fresh
 
     if (.not. (gamma > 0 .and. gamma < huge(1.0_wp)) .or. .not. (omega > 0)) then
       call fatal_error(error, "traveling layer: gamma and omega must be positive", UDMAP_EINPUT)
@@ -132,57 +148,75 @@ contains
       allocate(L%P(3, tw%H), L%A(3, tw%H), L%sigma(tw%H), L%uE(tw%H))
       L%P = 0
     end if
+    if (.not. allocated(L%J)) allocate(L%J(n, n), L%LU(n, n), L%Fx(n), L%ipiv(n), L%x_J(n))
     if (L%gamma > 0 .and. L%gamma /= gamma) then
       L%P = L%P*(gamma/L%gamma)
       L%P0 = L%P0*(gamma/L%gamma)
+      L%J_valid = .false.
     end if
     L%gamma = gamma
     L%omega = omega
     allocate(r(tw%H))
     do h = 1, tw%H
-      call platform_receptances(tw%blade, h*omega, r(h), error)
+      call platform_receptances(tw%blade, h*omega, r(h), error, derivatives=.true.)
       if (allocated(error)) return
     end do
-    allocate(x(n), R0(n), Rt(n), J(n, n), dx(n), xt(n), sc(n), ipiv(n))
+    allocate(x(n), R0(n), Rt(n), dx(n), xt(n), sc(n), ipiv(n), Rw(n))
     call scales(sc)
     do attempt = 1, 2
       if (attempt == 2) then
         ! a warm start that led Newton astray: the cold start decides
         L%P = 0
         L%P0 = 0
+        L%J_valid = .false.
       end if
       call pack(x)
-      call residual(x, R0, error)
+      call residual(x, R0, F0, error)
       if (allocated(error)) return
       rn = wnorm(R0)
-      done = .false.
+      done = rn == 0
+      rn_prev = huge(1.0_wp)
+      ! chord Newton: the Jacobian of a neighbouring solve while it contracts, renewed when not
       do it = 1, newton_max
-        do k = 1, n
-          xt = x
-          xt(k) = x(k) + fd_step*sc(k)
-          call residual(xt, Rt, error)
+        if (done) exit
+        fresh = .false.
+        if (.not. L%J_valid .or. rn > 0.25_wp*rn_prev) then
+          call jacobian(x, R0, F0, error)
           if (allocated(error)) return
-          J(:, k) = (Rt - R0)/(fd_step*sc(k))
-        end do
+          fresh = .true.
+        end if
         dx = -R0
-        call dgesv(n, 1, J, n, ipiv, dx, n, info)
-        if (info /= 0) exit
+        call dgetrs('N', n, 1, L%LU, n, L%ipiv, dx, n, info)
+        if (maxval(abs(dx)/sc) <= newton_tol) then
+          ! at the rounding floor of the residual: the step is the last correction
+          x = x + dx
+          call residual(x, R0, F0, error)
+          if (allocated(error)) return
+          done = .true.
+          exit
+        end if
         t = 1
         do ls = 1, 8
           xt = x + t*dx
-          call residual(xt, Rt, error)
+          call residual(xt, Rt, F0, error)
           if (allocated(error)) return
           rnt = wnorm(Rt)
           if (rnt < rn .or. rnt == 0) exit
           t = t/2
         end do
+        if (.not. (rnt < rn .or. rnt == 0)) then
+          ! no descent along a stale Jacobian: renew it; along a fresh one: give up
+          if (fresh) exit
+          L%J_valid = .false.
+          call residual(x, R0, F0, error)
+          if (allocated(error)) return
+          cycle
+        end if
+        rn_prev = rn
         x = xt
         R0 = Rt
         rn = rnt
-        if (maxval(abs(t*dx)/sc) <= newton_tol .or. rn == 0) then
-          done = .true.
-          exit
-        end if
+        done = maxval(abs(t*dx)/sc) <= newton_tol .or. rn == 0
       end do
       if (done) exit
     end do
@@ -192,9 +226,24 @@ contains
         & "the platform did not converge", UDMAP_ENUMERIC)
       return
     end if
-    ! the last residual call left A and F at x; the stress and u_E per harmonic
-    call residual(x, R0, error)
-    if (allocated(error)) return
+    ! psi needs the Jacobian near the solution: renew one taken far from it (and restore the
+    ! action at x, which the differences overwrite)
+    if (.not. L%J_valid .or. maxval(abs(x - L%x_J)/sc) > 1e-4_wp) then
+      A_x = L%A
+      A0_x = L%A0
+      call jacobian(x, R0, F0, error)
+      if (allocated(error)) return
+      L%A = A_x
+      L%A0 = A0_x
+    end if
+    ! psi: the receptances' part at fixed x (no trace), from their exact derivatives
+    call balance(r, x, R0, F0)
+    call balance_omega(r, Rw, dF)
+    dx = -Rw
+    call dgetrs('N', n, 1, L%LU, n, L%ipiv, dx, n, info)
+    dF = dF + sum(L%Fx*dx)
+    L%F = F0
+    L%psi = 2*real(conjg(F0)*dF, wp)
     do h = 1, tw%H
       L%sigma(h) = -sum(r(h)%sp*L%A(:, h))
       L%uE(h) = -sum(r(h)%pE*L%A(:, h))
@@ -204,6 +253,30 @@ contains
     L%solved = .true.
 
   contains
+
+    !> Finite-difference Jacobian of R (and dF/dx) at x, factorised into L%LU.
+    subroutine jacobian(xv, Rv, Fv, err)
+      real(wp), intent(in) :: xv(:), Rv(:)
+      complex(wp), intent(in) :: Fv
+      type(error_type), allocatable, intent(out) :: err
+      real(wp) :: xk(size(xv)), Rk(size(xv))
+      complex(wp) :: Fk
+      integer :: k, inf
+      do k = 1, size(xv)
+        xk = xv
+        xk(k) = xv(k) + fd_step*sc(k)
+        call residual(xk, Rk, Fk, err)
+        if (allocated(err)) return
+        L%J(:, k) = (Rk - Rv)/(fd_step*sc(k))
+        L%Fx(k) = (Fk - Fv)/(fd_step*sc(k))
+      end do
+      L%x_J = xv
+      L%LU = L%J
+      call dgetrf(size(xv), size(xv), L%LU, size(xv), L%ipiv, inf)
+      L%J_valid = inf == 0
+      if (inf /= 0) call fatal_error(err, "traveling layer gamma = "//ftoa(gamma)// &
+        & " rad: the Jacobian of the platform's harmonic balance is singular", UDMAP_ENUMERIC)
+    end subroutine jacobian
 
     !> Unknown scales: translations by gamma times the lever arm, rotations by gamma.
     subroutine scales(s)
@@ -276,23 +349,36 @@ contains
       L%P(3, 1) = cmplx(gamma, 0.0_wp, wp)
     end subroutine unpack
 
-    !> Residual of the condensed harmonic balance at x (leaves A, F of x in L).
-    subroutine residual(xv, Rv, err)
+    !> Residual of the condensed harmonic balance at x and the force F (leaves A of x in L).
+    subroutine residual(xv, Rv, Fv, err)
       real(wp), intent(in) :: xv(:)
       real(wp), intent(out) :: Rv(:)
+      complex(wp), intent(out) :: Fv
       type(error_type), allocatable, intent(out) :: err
+      call unpack(xv)
+      call wave_aft(tw%geo, tw%CF, tw%phi, L%P0, L%P, tw%settings, L%A0, L%A, err, L%trace)
+      tw%traces = tw%traces + 1
+      Rv = 0
+      Fv = 0
+      if (allocated(err)) return
+      call balance(r, xv, Rv, Fv)
+    end subroutine residual
+
+    !> The balance with the receptances rr and the damper action in L (at x).
+    subroutine balance(rr, xv, Rv, Fv)
+      type(platform_receptances_type), intent(in) :: rr(:)
+      real(wp), intent(in) :: xv(:)
+      real(wp), intent(out) :: Rv(:)
+      complex(wp), intent(out) :: Fv
       complex(wp) :: z, HA(3)
       real(wp) :: HA0(3)
       integer :: i, hh, c
       call unpack(xv)
-      call wave_aft(tw%geo, tw%CF, tw%phi, L%P0, L%P, tw%settings, L%A0, L%A, err, L%trace)
-      tw%traces = tw%traces + 1
-      if (allocated(err)) return
-      HA = matmul(r(1)%pp, L%A(:, 1))
-      L%F = (gamma + HA(3))/r(1)%pE(3)
+      HA = matmul(rr(1)%pp, L%A(:, 1))
+      Fv = (gamma + HA(3))/rr(1)%pE(3)
       i = 0
       do hh = merge(1, 0, tw%H == 1), tw%H
-        if (hh > 0) HA = matmul(r(hh)%pp, L%A(:, hh))
+        if (hh > 0) HA = matmul(rr(hh)%pp, L%A(:, hh))
         if (hh == 0) HA0 = real(matmul(tw%r0%pp, cmplx(L%A0 - tw%A_ref, 0.0_wp, wp)), wp)
         do c = 1, 3
           if (.not. active(hh, c)) cycle
@@ -301,14 +387,43 @@ contains
             Rv(i) = L%P0(3) + HA0(3)
           else
             z = L%P(c, hh) + HA(c)
-            if (hh == 1) z = z - r(1)%pE(c)*L%F
+            if (hh == 1) z = z - rr(1)%pE(c)*Fv
             Rv(i) = real(z, wp)
             i = i + 1
             Rv(i) = aimag(z)
           end if
         end do
       end do
-    end subroutine residual
+    end subroutine balance
+
+    !> d/domega at fixed x of the balance (Rw) and of the force (Fw), with the action in L
+    !> and F in L%F... from the receptances rr and their derivatives (harmonic h: h H'(h omega)).
+    subroutine balance_omega(rr, Rw_, Fw)
+      type(platform_receptances_type), intent(in) :: rr(:)
+      real(wp), intent(out) :: Rw_(:)
+      complex(wp), intent(out) :: Fw
+      complex(wp) :: z, dHA(3), Fv
+      integer :: i, hh, c
+      Fv = (gamma + sum(rr(1)%pp(3, :)*L%A(:, 1)))/rr(1)%pE(3)
+      Fw = (sum(rr(1)%dpp(3, :)*L%A(:, 1)) - Fv*rr(1)%dpE(3))/rr(1)%pE(3)
+      i = 0
+      do hh = merge(1, 0, tw%H == 1), tw%H
+        if (hh > 0) dHA = hh*matmul(rr(hh)%dpp, L%A(:, hh))
+        do c = 1, 3
+          if (.not. active(hh, c)) cycle
+          i = i + 1
+          if (hh == 0) then
+            Rw_(i) = 0
+          else
+            z = dHA(c)
+            if (hh == 1) z = z - rr(1)%dpE(c)*Fv - rr(1)%pE(c)*Fw
+            Rw_(i) = real(z, wp)
+            i = i + 1
+            Rw_(i) = aimag(z)
+          end if
+        end do
+      end do
+    end subroutine balance_omega
 
     pure real(wp) function wnorm(Rv)
       real(wp), intent(in) :: Rv(:)
@@ -316,149 +431,66 @@ contains
     end function wnorm
   end subroutine wave_layer_solve
 
-  !> The peak of the layer gamma: the minimum of |P(omega)| over the band (Brent's minimiser
-  !> on a bracket found from omega_guess, 0: the whole band). F_bb = |P| there.
+  !> The peak of the layer gamma: the minimum of |F(omega)| over the band, the root of
+  !> psi = d|F|^2/domega bracketed outward from omega_guess (0: the band's middle) and refined by
+  !> Brent's method. F_bb = |F| there; L is left solved at the peak.
   subroutine wave_peak(tw, gamma, omega_guess, L, F_bb, error)
     type(traveling_type), intent(inout) :: tw
     real(wp), intent(in) :: gamma, omega_guess
     type(wave_layer_type), intent(inout) :: L
     real(wp), intent(out) :: F_bb
     type(error_type), allocatable, intent(out) :: error
-    real(wp) :: a, b, c, fa, fb, fc, d
+    type(brent_type) :: bs
+    real(wp) :: a, b, fa, fb, d, x, fx
+    logical :: more
     integer :: k
     F_bb = 0
-    if (omega_guess > tw%omega_lo .and. omega_guess < tw%omega_hi) then
-      ! bracket a < b < c with f(b) below both, widening from the guess
-      b = omega_guess
-      fb = f(b)
-      if (allocated(error)) return
-      d = 2e-3_wp*b
-      do k = 1, 60
-        a = max(b - d, tw%omega_lo)
-        c = min(b + d, tw%omega_hi)
-        fa = f(a)
-        if (allocated(error)) return
-        fc = f(c)
-        if (allocated(error)) return
-        if (fa > fb .and. fc > fb) exit
-        if (fa < fb .and. a > tw%omega_lo) then
-          c = b
-          b = a
-          fb = fa
-        else if (fc < fb .and. c < tw%omega_hi) then
-          a = b
-          b = c
-          fb = fc
-        end if
-        if ((a <= tw%omega_lo .and. fa <= fb) .or. (c >= tw%omega_hi .and. fc <= fb)) exit
-        d = 2*d
-      end do
-      a = max(b - d, tw%omega_lo)
-      c = min(b + d, tw%omega_hi)
-    else
-      a = tw%omega_lo
-      c = tw%omega_hi
-    end if
-    call brent_min(a, c, b, F_bb)
+    a = omega_guess
+    if (.not. (a > tw%omega_lo .and. a < tw%omega_hi)) a = 0.5_wp*(tw%omega_lo + tw%omega_hi)
+    fa = psi(a)
     if (allocated(error)) return
-    if (b <= tw%omega_lo*(1 + 1e-6_wp) .or. b >= tw%omega_hi*(1 - 1e-6_wp)) then
-      call fatal_error(error, "traveling wave: the layer gamma = "//ftoa(gamma)// &
-        & " rad peaks at the band's edge (no resonance in [f_min, f_max] at phi = "// &
-        & ftoa(tw%phi)//" rad)", UDMAP_EPHYSICS)
-      return
+    d = 1e-3_wp*a
+    if (L%bracket > 0) d = min(d, L%bracket)
+    b = a
+    fb = fa
+    do k = 1, 60
+      if (fa*fb <= 0 .and. a /= b) exit
+      a = b
+      fa = fb
+      b = a - sign(d, fa)
+      if (b <= tw%omega_lo .or. b >= tw%omega_hi) then
+        call fatal_error(error, "traveling wave: the layer gamma = "//ftoa(gamma)// &
+          & " rad peaks at the band's edge (no resonance in [f_min, f_max] at phi = "// &
+          & ftoa(tw%phi)//" rad)", UDMAP_EPHYSICS)
+        return
+      end if
+      fb = psi(b)
+      if (allocated(error)) return
+      d = 2*d
+    end do
+    L%bracket = max(abs(b - a), 1e-6_wp*a)
+    call brent_start(bs, a, fa, b, fb, peak_rtol*a)
+    do
+      call brent_next(bs, x, more)
+      if (.not. more) exit
+      fx = psi(x)
+      if (allocated(error)) return
+      call brent_update(bs, fx)
+    end do
+    if (L%omega /= x) then
+      fx = psi(x)
+      if (allocated(error)) return
     end if
-    ! leave L solved at the peak
-    fb = f(b)
-    F_bb = sqrt(fb)
+    F_bb = abs(L%F)
 
   contains
 
-    real(wp) function f(w)
+    real(wp) function psi(w)
       real(wp), intent(in) :: w
-      f = huge(1.0_wp)
+      psi = 0
       call wave_layer_solve(tw, gamma, w, L, error)
       if (allocated(error)) return
-      f = abs(L%F)**2
-    end function f
-
-    !> Brent's minimiser (golden section with parabolic steps) of f on [lo, hi]: xmin, sqrt(f).
-    subroutine brent_min(lo, hi, xmin, fmin)
-      real(wp), intent(in) :: lo, hi
-      real(wp), intent(out) :: xmin, fmin
-      real(wp), parameter :: cg = 0.3819660112501051_wp
-      real(wp) :: aa, bb, v, w, x, fv, fw, fx, e, dd, u, fu, xm, tol1, tol2, p, q, rr
-      integer :: iter
-      aa = lo
-      bb = hi
-      x = aa + cg*(bb - aa)
-      if (b > aa .and. b < bb) x = b
-      w = x
-      v = x
-      fx = f(x)
-      if (allocated(error)) return
-      fv = fx
-      fw = fx
-      e = 0
-      dd = 0
-      do iter = 1, 200
-        xm = 0.5_wp*(aa + bb)
-        tol1 = peak_rtol*abs(x) + 1e-300_wp
-        tol2 = 2*tol1
-        if (abs(x - xm) <= tol2 - 0.5_wp*(bb - aa)) exit
-        if (abs(e) > tol1) then
-          rr = (x - w)*(fx - fv)
-          q = (x - v)*(fx - fw)
-          p = (x - v)*q - (x - w)*rr
-          q = 2*(q - rr)
-          if (q > 0) p = -p
-          q = abs(q)
-          if (abs(p) >= abs(0.5_wp*q*e) .or. p <= q*(aa - x) .or. p >= q*(bb - x)) then
-            e = merge(aa - x, bb - x, x >= xm)
-            dd = cg*e
-          else
-            e = dd
-            dd = p/q
-            u = x + dd
-            if (u - aa < tol2 .or. bb - u < tol2) dd = sign(tol1, xm - x)
-          end if
-        else
-          e = merge(aa - x, bb - x, x >= xm)
-          dd = cg*e
-        end if
-        u = x + merge(dd, sign(tol1, dd), abs(dd) >= tol1)
-        fu = f(u)
-        if (allocated(error)) return
-        if (fu <= fx) then
-          if (u >= x) then
-            aa = x
-          else
-            bb = x
-          end if
-          v = w
-          fv = fw
-          w = x
-          fw = fx
-          x = u
-          fx = fu
-        else
-          if (u < x) then
-            aa = u
-          else
-            bb = u
-          end if
-          if (fu <= fw .or. w == x) then
-            v = w
-            fv = fw
-            w = u
-            fw = fu
-          else if (fu <= fv .or. v == x .or. v == w) then
-            v = u
-            fv = fu
-          end if
-        end if
-      end do
-      xmin = x
-      fmin = sqrt(fx)
-    end subroutine brent_min
+      psi = L%psi
+    end function psi
   end subroutine wave_peak
 end module udmap_mapping_traveling_layer
