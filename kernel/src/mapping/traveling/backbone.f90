@@ -43,18 +43,22 @@ contains
   end function interblade_phase
 
   !> The traveling-wave coupling of the model's blade and (asymmetric) damper.
-  subroutine new_model_traveling(model, tw, error)
+  subroutine new_model_traveling(model, tw, error, H)
     type(model_type), intent(in) :: model
     type(traveling_type), intent(out) :: tw
     type(error_type), allocatable, intent(out) :: error
+    !> Harmonics (default: the analysis', 1 for auto).
+    integer, intent(in), optional :: H
+    integer :: nh
     if (model%damper%kind /= DAMPER_ASYMMETRIC) then
       call fatal_error(error, "traveling wave: only the asymmetric damper depends on phi", &
         & UDMAP_EINPUT)
       return
     end if
+    nh = max(model%analysis%harmonics, 1)
+    if (present(H)) nh = H
     call new_traveling(tw, model%blade, model%damper%geometry, model%damper%params%CF, &
-      & interblade_phase(model), max(model%analysis%harmonics, 1), model%omega_lo, &
-      & model%omega_hi, error)
+      & interblade_phase(model), nh, model%omega_lo, model%omega_hi, error)
   end subroutine new_model_traveling
 
   !> F_lim(phi) [N] (see the module's header).
@@ -95,7 +99,8 @@ contains
     F_lim = (W(2) - W(1))/(amp(2) - amp(1))/(pi*abs(psi_E))
   end subroutine wave_limit_force
 
-  !> The peaks of the traveling wave for the forces F_E [N].
+  !> The peaks of the traveling wave for the forces F_E [N]. analysis%harmonics = 0 (auto):
+  !> H = 1, 3, 5, ... until gamma_P, sigma_a and f_res change by less than harmonic_tol.
   subroutine wave_backbone(model, F_E, points, error)
     type(model_type), intent(inout) :: model
     real(wp), intent(in) :: F_E(:)
@@ -104,12 +109,11 @@ contains
     type(traveling_type) :: tw
     type(wave_layer_type) :: L
     type(point_type), allocatable :: guess(:)
-    real(wp) :: F_lim, omega_g, F_cur, w
-    integer :: i, H_saved
+    real(wp) :: F_lim, omega_g, F_cur, w, change
+    integer :: i, H_saved, ih, nH
     real(wp) :: ibpa_saved
+    integer, parameter :: auto_H(7) = [1, 3, 5, 9, 17, 33, 64]
 
-    call new_model_traveling(model, tw, error)
-    if (allocated(error)) return
     call wave_limit_force(model, F_lim, error)
     if (allocated(error)) return
     ! the in-phase single-harmonic peaks start the search
@@ -121,21 +125,37 @@ contains
     model%analysis%harmonics = H_saved
     model%analysis%ibpa_deg = ibpa_saved
     if (allocated(error)) return
-    allocate(points(size(F_E)))
-    omega_g = 0
-    do i = 1, size(F_E)
-      points(i)%F_E = F_E(i)
-      points(i)%harmonics = tw%H
-      if (model%undamped .and. F_E(i) >= F_lim) then
-        points(i)%regime = REGIME_LIMIT
-        points(i)%unbounded = .true.
-        allocate(points(i)%roots(0))
-        cycle
-      end if
-      if (omega_g == 0 .and. guess(i)%f_res > 0) omega_g = 2*pi*guess(i)%f_res
-      call peak_of_force(F_E(i), max(guess(i)%gamma_P, tiny(1.0_wp)), omega_g, points(i), error)
+    nH = merge(size(auto_H), 1, H_saved == 0)
+    do ih = 1, nH
+      call new_model_traveling(model, tw, error, merge(auto_H(ih), H_saved, H_saved == 0))
       if (allocated(error)) return
-      omega_g = 2*pi*points(i)%f_res
+      L = wave_layer_type()
+      if (allocated(points)) call move_alloc(points, guess)
+      allocate(points(size(F_E)))
+      omega_g = 0
+      do i = 1, size(F_E)
+        points(i)%F_E = F_E(i)
+        points(i)%harmonics = tw%H
+        if (model%undamped .and. F_E(i) >= F_lim) then
+          points(i)%regime = REGIME_LIMIT
+          points(i)%unbounded = .true.
+          allocate(points(i)%roots(0))
+          cycle
+        end if
+        if (guess(i)%f_res > 0) omega_g = 2*pi*guess(i)%f_res
+        call peak_of_force(F_E(i), max(guess(i)%gamma_P, tiny(1.0_wp)), omega_g, points(i), error)
+        if (allocated(error)) return
+        omega_g = 2*pi*points(i)%f_res
+      end do
+      if (ih == 1) cycle
+      change = 0
+      do i = 1, size(F_E)
+        if (points(i)%unbounded) cycle
+        change = max(change, abs(points(i)%gamma_P/guess(i)%gamma_P - 1), &
+          & abs(points(i)%f_res/guess(i)%f_res - 1))
+        if (guess(i)%sigma_a > 0) change = max(change, abs(points(i)%sigma_a/guess(i)%sigma_a - 1))
+      end do
+      if (change < model%analysis%harmonic_tol) exit
     end do
 
   contains
