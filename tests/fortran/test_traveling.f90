@@ -12,7 +12,8 @@ module test_traveling
   use udmap_contact_element_wave, only: wave_aft, wave_settings_type, wave_result_type
   use udmap_mapping_model, only: model_type, analysis_type, point_type, new_model, &
     & limit_force, backbone, REGIME_STUCK
-  use fixtures, only: blade_a_beam_params, blade_a_band, qp
+  use udmap_baseline_wave, only: wave_hbm_type, wave_hbm_point_type, new_wave_hbm, wave_hbm_peak
+  use fixtures, only: blade_a_beam_params, blade_a_band
   use testing, only: test_suite, check_close, check_true, check_no_error, check_error, &
     & unittest_type, new_unittest
   implicit none
@@ -36,7 +37,8 @@ contains
       & new_unittest("wave_energy", run_wave_energy), &
       & new_unittest("stuck_hermitian", run_stuck_hermitian), &
       & new_unittest("phi_to_zero", run_phi_to_zero), &
-      & new_unittest("inputs", run_inputs)]
+      & new_unittest("inputs", run_inputs), &
+      & new_unittest("standard_method", run_standard_method)]
   end subroutine collect_traveling
 
   !> At phi = 0 the wave trace is the in-phase loop: the moment's first harmonic is k(gamma)
@@ -204,6 +206,52 @@ contains
     call backbone(model, [2.0_wp], points, error)
     call check_error(suite, "phi /= 0 without u_P", error, UDMAP_EINPUT, "u_dof")
   end subroutine run_inputs
+
+  !> Same equations, same answers: the layered peaks and the standard method (force given,
+  !> Newton on every harmonic, continuation and the maximum over frequency) agree to 1e-6.
+  subroutine run_standard_method(suite)
+    type(test_suite), intent(inout) :: suite
+    type(blade_type), target :: blade
+    type(damper_type), target :: damper
+    type(model_type) :: model
+    type(analysis_type) :: analysis
+    type(error_type), allocatable :: error
+    type(point_type), allocatable :: points(:)
+    type(wave_hbm_type) :: hbm
+    type(wave_hbm_point_type) :: pt
+    integer :: i, j, k
+    real(wp), parameter :: ibpa(2) = [90.0_wp, 270.0_wp], forces(2) = [2.0_wp, 10.0_wp]
+    integer, parameter :: harmonics(2) = [1, 3]
+    call new_beam_blade(blade, blade_a_beam_params(), error)
+    call new_asymmetric_damper(damper, blade_a_damper_params(), error)
+    call check_no_error(suite, "damper", error)
+    do k = 1, size(harmonics)
+      do i = 1, size(ibpa)
+        analysis = analysis_type()
+        call blade_a_band(analysis)
+        analysis%ibpa_deg = ibpa(i)
+        analysis%harmonics = harmonics(k)
+        call new_model(model, blade, damper, analysis, error)
+        call backbone(model, forces, points, error)
+        call check_no_error(suite, "layered backbone", error)
+        if (allocated(error)) return
+        call new_wave_hbm(hbm, blade, damper%geometry, damper%params%CF, ibpa(i)*pi/180, &
+          & harmonics(k), error)
+        call check_no_error(suite, "standard method", error)
+        do j = 1, size(forces)
+          call wave_hbm_peak(hbm, forces(j), 2*pi*points(j)%f_res*0.995_wp, 2*pi*230, pt, error)
+          call check_no_error(suite, "standard method peak", error)
+          if (allocated(error)) return
+          call check_close(suite, "gamma_P, layered = standard", points(j)%gamma_P, &
+            & abs(pt%P(3, 1)), rtol=1e-6_wp)
+          call check_close(suite, "f_res, layered = standard", points(j)%f_res, &
+            & pt%omega/(2*pi), rtol=1e-6_wp)
+          call check_close(suite, "sigma_a, layered = standard", points(j)%sigma_a, &
+            & abs(pt%sigma_1), rtol=1e-6_wp)
+        end do
+      end do
+    end do
+  end subroutine run_standard_method
 
   ! ------------------------------------------------------------------ independent pieces
 

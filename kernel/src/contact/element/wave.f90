@@ -78,7 +78,8 @@ contains
     type(damper_state_type) :: st, start
     real(wp), allocatable :: X(:, :), AL(:, :), AR(:, :)
     complex(wp), allocatable :: e(:, :)
-    real(wp) :: tau, Ak(3,2), energy, F_scale
+    real(wp) :: tau, Ak(3,2), energy, F_scale, theta
+    complex(wp), allocatable :: Pr(:, :)
     integer :: ns, j, k, per, H
     logical :: closed, slipped, lifted, cs(3)
 
@@ -90,7 +91,15 @@ contains
       call fatal_error(error, "wave_aft: too few samples for the harmonics", UDMAP_EINPUT)
       return
     end if
-    allocate(X(6, 0:ns-1), AL(3, ns), AR(3, ns), e(H, ns))
+    allocate(X(6, 0:ns-1), AL(3, ns), AR(3, ns), e(H, ns), Pr(3, H))
+    ! time origin where gamma_P's first harmonic is real: the sampled trace then depends on
+    ! the motion alone, not on its phase against the force (every caller solves the same
+    ! equations whatever it holds fixed)
+    theta = 0
+    if (P(3, 1) /= 0) theta = atan2(aimag(P(3, 1)), real(P(3, 1), wp))
+    do k = 1, H
+      Pr(:, k) = P(:, k)*exp(cmplx(0.0_wp, -k*theta, wp))
+    end do
     do j = 0, ns - 1
       tau = 2*pi*j/ns
       X(1:3, j) = motion(tau)
@@ -139,6 +148,7 @@ contains
     do k = 1, H
       A(:, k) = (matmul(cmplx(AL, 0.0_wp, wp), e(k, :)) + &
         & exp(cmplx(0.0_wp, -k*phi, wp))*matmul(cmplx(AR, 0.0_wp, wp), e(k, :)))*(2.0_wp/ns)
+      if (theta /= 0) A(:, k) = A(:, k)*exp(cmplx(0.0_wp, k*theta, wp))
     end do
     if (present(res)) then
       res%energy = energy
@@ -157,7 +167,7 @@ contains
       integer :: m
       x_t = P0
       do m = 1, H
-        x_t = x_t + real(P(:, m)*exp(cmplx(0.0_wp, m*t, wp)), wp)
+        x_t = x_t + real(Pr(:, m)*exp(cmplx(0.0_wp, m*t, wp)), wp)
       end do
     end function motion
   end subroutine wave_aft
