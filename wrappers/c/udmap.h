@@ -417,6 +417,21 @@ int udmap_dti_peak(udmap_error error, udmap_blade blade, udmap_contact contact,
                    const udmap_dti_settings *settings, double f_min, double f_max, int n,
                    const double *F_E, udmap_dti_point *points);
 
+/* ---------------------------------------------------------------- traveling waves */
+/* A wheel excited in engine order EO vibrates in a traveling wave with the interblade phase
+   phi = 2 pi EO / N (PHYSICS.md 2.6); udmap_analysis.ibpa_deg selects it for the model's
+   backbone and limit force (the asymmetric damper; jenkins and table dampers do not depend on
+   phi). The blade must know its platform translations. */
+
+/* The standard method at ibpa_deg [deg] (harmonics 1, or 2..64 for 0..H): for each of the n
+   forces F_E [N], continuation from f_start[i] [Hz] (below the peak, inside the band) and the
+   maximum of |Gamma_1| over frequency: gamma_P [rad], f_res [Hz], sigma_a [Pa], u_E [m] and the
+   Newton iterations. */
+int udmap_wave_hbm_peaks(udmap_error error, udmap_blade blade, udmap_damper damper, double f_min,
+                         double f_max, double ibpa_deg, int harmonics, int n, const double* F_E,
+                         const double* f_start, double* gamma_P, double* f_res, double* sigma_a,
+                         double* u_E, int* iterations);
+
 /* ---------------------------------------------------------------- FE reduction */
 
 /* Platform Centred Reduction of a sparse FE blade (PHYSICS.md 1.3, paper section 2.1).

@@ -206,6 +206,9 @@ dti_response = declare("udmap_dti_response", [vp, vp, vp, ctypes.POINTER(DtiSett
 dti_peak = declare("udmap_dti_peak", [vp, vp, vp, ctypes.POINTER(DtiSettings), _cd, _cd, _ci,
                                       c_double_p, ctypes.POINTER(DtiPoint)])
 
+wave_hbm_peaks = declare("udmap_wave_hbm_peaks",
+                         [vp, vp, vp, _cd, _cd, _cd, _ci, _ci, c_double_p, c_double_p,
+                          c_double_p, c_double_p, c_double_p, c_double_p, c_int_p])
 
 # ---------------------------------------------------------------------------- helpers
 class ErrorHandle:

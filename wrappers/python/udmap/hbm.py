@@ -285,3 +285,28 @@ def dti(blade, contact, F_E: Iterable[float], freq: float | None = None, peak: b
         if progress is not None:
             progress(1)
     return out
+
+
+def wave_hbm(blade: Blade, damper: Damper, f_min: float, f_max: float, ibpa_deg: float,
+             F_E: Iterable[float], f_start: Iterable[float], harmonics: int = 1) -> list[dict]:
+    """Peaks of a traveling wave at the interblade phase ``ibpa_deg`` [deg] by the standard
+    method (PHYSICS.md 2.6 and 6): for each force [N], continuation from ``f_start`` [Hz] (below
+    the peak) and the maximum of |Gamma_1| over frequency. ``harmonics``: 1, or H up to 64
+    (harmonics 0..H). Returns per force F_E, gamma_P [rad], f_res [Hz], sigma_a [Pa], u_E [m]
+    and the Newton iterations."""
+    arr, ptr = _forces(F_E)
+    starts = np.ascontiguousarray(np.asarray(list(f_start), dtype=float))
+    if starts.shape != arr.shape:
+        raise InputError("wave_hbm: 'f_start' needs one frequency per force")
+    n = len(arr)
+    outs = [np.zeros(n) for _ in range(4)]
+    its = np.zeros(n, dtype=np.intc)
+    dp = ctypes.POINTER(ctypes.c_double)
+    err = ErrorHandle()
+    err.check(_capi.wave_hbm_peaks(
+        err.ptr, _blade_ptr(blade), damper.handle, float(f_min), float(f_max), float(ibpa_deg),
+        int(harmonics), n, ptr, starts.ctypes.data_as(dp),
+        *[o.ctypes.data_as(dp) for o in outs], its.ctypes.data_as(ctypes.POINTER(ctypes.c_int))))
+    return [{"F_E": float(arr[i]), "gamma_P": float(outs[0][i]), "f_res": float(outs[1][i]),
+             "sigma_a": float(outs[2][i]), "u_E": float(outs[3][i]),
+             "iterations": int(its[i])} for i in range(n)]

@@ -193,9 +193,14 @@ def cmd_hbm(args) -> None:
     case = load_case(args.case)
     blade = build_blade(case)
     a = case.analysis
-    points = hbm.hbm(blade, build_contact(case), a["f_min"], a["f_max"], args.forces,
-                     harmonics=args.harmonics, variant=args.variant, sigma_all=a["sigma_all"])
-    hbm.classify(blade, build_damper(case), a["f_min"], a["f_max"], a["sigma_all"], points)
+    damper = build_damper(case)
+    if _traveling(case, damper):
+        points = _wave_hbm(case, blade, damper, args)
+    else:
+        points = hbm.hbm(blade, build_contact(case), a["f_min"], a["f_max"], args.forces,
+                         harmonics=args.harmonics, variant=args.variant,
+                         sigma_all=a["sigma_all"])
+        hbm.classify(blade, damper, a["f_min"], a["f_max"], a["sigma_all"], points)
     data = {"harmonics": args.harmonics, "variant": args.variant,
             "points": [point_json(p) for p in points]}
     add_verdicts(data, None, a["sigma_all"])
@@ -209,6 +214,32 @@ def cmd_hbm(args) -> None:
                          a["sigma_all"], path, F_marked=[p["F_E"] for p in pts],
                          sigma_marked=[p["sigma_a"] for p in pts])
     _finish(args, paths, data, print_points, POINT_COLUMNS, point_rows(data), plot)
+
+
+def _traveling(case, damper) -> bool:
+    """A traveling wave (PHYSICS.md 2.6): an interblade phase other than 0 with the one damper
+    kind that feels it."""
+    return float(case.analysis.get("ibpa_deg") or 0.0) % 360.0 != 0.0 and \
+        damper.kind == "asymmetric"
+
+
+def _wave_hbm(case, blade, damper, args) -> list[dict]:
+    """The standard method at the case's interblade phase: each force continued from the bare
+    first natural frequency (the damper only stiffens the blade) to its peak; F_lim(phi) and
+    the HCF verdict from the model at that phase. The regime is left out: at phi /= 0 it is
+    not the in-phase rule's."""
+    a = case.analysis
+    harmonics = args.harmonics if args.harmonics not in (None, "auto", 0) else 1
+    f1 = float(blade.natural_frequencies(1)[0])
+    start = min(max(f1, a["f_min"] * (1 + 1e-6)), a["f_max"] * (1 - 1e-6))
+    points = hbm.wave_hbm(blade, damper, a["f_min"], a["f_max"], a["ibpa_deg"], args.forces,
+                          [start] * len(args.forces), harmonics=int(harmonics))
+    F_lim = build_model(case, blade=blade, damper=damper).limit_force()
+    for p in points:
+        p["F_lim"] = F_lim
+        p["hcf_ok"] = p["F_E"] <= 0.5 * F_lim and p["sigma_a"] <= a["sigma_all"]
+        p["harmonics"] = int(harmonics)
+    return points
 
 
 def cmd_dti(args) -> None:
