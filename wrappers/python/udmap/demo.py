@@ -27,9 +27,13 @@ import numpy as np
 
 from . import plots
 from .case import Case, build_blade, build_damper, build_model, load_case, validate
+from .nodal import sweep
 from .progress import Progress
 
 DEMO_FORCES = tuple(float(f) for f in range(1, 11))
+#: The wheel of the demo's nodal-diameter sweep and its forces [N].
+DEMO_BLADES = 24
+DEMO_NODAL_FORCES = (2.0, 5.0, 10.0)
 
 
 def _as_case(case):
@@ -68,11 +72,19 @@ def _undamped_twin(case, damper):
     return build_model(twin, blade0, damper), blade0
 
 
+def _knows_platform(case) -> bool:
+    """The blade knows its platform translations (traveling waves need them)."""
+    b = case.blade
+    return b["kind"] == "beam" or (b["kind"] == "matrices" and b.get("u_dof") is not None) or \
+        (b["kind"] == "fe" and b.get("platform", {}).get("tangent") is not None)
+
+
 #: The units of summary.json's quantities (docs/outputs.md).
 SUMMARY_UNITS = {key: unit for unit, keys in (
     ("N", ("F_lim", "F_E")), ("rad", ("gamma_b", "gamma_s", "gamma_P", "gamma_max")),
     ("Hz", ("f1_bare", "f_stuck", "f_res")), ("Pa", ("sigma_all", "sigma_a", "sigma_max")),
-    ("m", ("u_E",)), ("N m", ("M_max", "M_min")), ("N m/rad", ("k_re", "k_im")))
+    ("m", ("u_E",)), ("N m", ("M_max", "M_min")), ("N m/rad", ("k_re", "k_im")),
+    ("deg", ("ibpa_deg",)))
     for key in keys}
 
 
@@ -85,7 +97,7 @@ def run_demo(case=None, outdir="out/demo", forces=DEMO_FORCES, quiet: bool = Fal
     a = case.analysis
     forces = np.asarray(forces, dtype=float)
 
-    with Progress(8, "demo") as bar:
+    with Progress(9, "demo") as bar:
         blade = build_blade(case)
         damper = build_damper(case)
         model = build_model(case, blade, damper)
@@ -221,6 +233,22 @@ def run_demo(case=None, outdir="out/demo", forces=DEMO_FORCES, quiet: bool = Fal
                            "PHYSICS.md 4.1) beside the single-harmonic method (H1 columns)")
         bar.update()
 
+        # every nodal diameter of a wheel of DEMO_BLADES blades (PHYSICS.md 2.6)
+        nodal = None
+        if case.damper["kind"] == "asymmetric" and _knows_platform(case):
+            F_n = [F for F in DEMO_NODAL_FORCES if F < F_lim]
+            nodal = sweep(blade, damper, a | {"harmonics": 1}, DEMO_BLADES, F_n)
+            _write_csv(out / "nodal.csv",
+                       ["engine_order", "ibpa_deg", "nodal_diameter", "F_E_N", "gamma_P_rad",
+                        "f_res_Hz", "sigma_a_Pa", "F_lim_N", "hcf_ok", "worst"],
+                       [[p["engine_order"], p["ibpa_deg"], p["nodal_diameter"], p["F_E"],
+                         p["gamma_P"], p["f_res"], p["sigma_a"], p["F_lim"], p["hcf_ok"],
+                         p["worst"]] for p in nodal["points"]],
+                       f"{case.name}: the peaks of every engine order on a wheel of "
+                       f"{DEMO_BLADES} blades (traveling waves, PHYSICS.md 2.6, H = 1)")
+            plots.nodal_sweep(nodal, a["sigma_all"], out / "nodal.png")
+        bar.update()
+
     summary = {"case": case.name, "F_lim": F_lim, "gamma_b": damper.gamma_b,
                "gamma_s": damper.gamma_s, "M_max": damper.M_max, "M_min": damper.M_min,
                "f1_bare": f1, "f_stuck": float(stuck_f[0]), "lift_off": bool(damper.lift_off),
@@ -237,6 +265,8 @@ def run_demo(case=None, outdir="out/demo", forces=DEMO_FORCES, quiet: bool = Fal
                                                             "sigma_max", "harmonics",
                                                             "hcf_ok")}
                                          for p in harm if not p["unbounded"]]}
+    if nodal is not None:
+        summary["nodal"] = {"blades": DEMO_BLADES, "worst": nodal["worst"]}
     summary["units"] = SUMMARY_UNITS  # SI, as every JSON output (docs/outputs.md)
     (out / "summary.json").write_text(json.dumps(summary, indent=1, allow_nan=False) + "\n")
     if not quiet:
@@ -266,4 +296,9 @@ def print_summary(summary: dict, out: Path) -> None:
         s = "-" if p["sigma_a"] is None else f"{p['sigma_a'] / 1e6:13.2f}"
         print(f"  {p['F_E']:8.3g} {p['gamma_P']:14.4e} {p['f_res']:11.3f} {s:>13} "
               f"{1e3 * p['u_E']:9.4f}  {p['regime_name']:<16} {'ok' if p['hcf_ok'] else 'no'}")
+    if "nodal" in summary:
+        for w in summary["nodal"]["worst"]:
+            print(f"  {summary['nodal']['blades']} blades, F_E = {w['F_E']:g} N: worst engine order "
+                  f"{w['engine_order']} (nodal diameter {w['nodal_diameter']}, "
+                  f"sigma_max = {w['sigma_max'] / 1e6:.2f} MPa)")
     print(f"  written to {out}/")

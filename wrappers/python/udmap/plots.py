@@ -14,6 +14,7 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+import matplotlib.ticker  # noqa: E402
 
 REGIME_COLORS = {0: "tab:blue", 1: "tab:orange", 2: "tab:green", 3: "tab:red"}
 REGIME_LABELS = {0: "stuck", 1: "partial slip", 2: "full slip", 3: r"$F_E \geq F_{lim}$"}
@@ -239,3 +240,62 @@ def response_vs_force(F_E, gamma_P, F_lim: float, f_exc: float, path, *, regime=
     ax.set_ylabel(r"platform rotation amplitude $\gamma_P$ [rad]")
     ax.legend(loc="upper left", fontsize=8)
     return _finish(fig, ax, path, f"Response at the excitation frequency {f_exc:g} Hz")
+
+
+def nodal_sweep(data: dict, sigma_all: float, path) -> Path:
+    """The nodal-diameter sweep (PHYSICS.md 2.6) in one figure: above, sigma_a against the
+    nodal diameter, forward waves (0 <= ibpa <= 180 deg) solid and backward ones dashed, one
+    colour per force, the worst engine order of each force ringed; below, the GG diagrams of the
+    in-phase family and of the worst nodal diameter of the largest force, side by side."""
+    pts = data["points"]
+    forces = sorted({p["F_E"] for p in pts})
+    fig = plt.figure(figsize=(10.5, 8.2))
+    top = fig.add_subplot(2, 1, 1)
+    colors = plt.cm.viridis(np.linspace(0.0, 0.9, max(len(forces), 1)))
+    for F, color in zip(forces, colors):
+        for backward, ls in ((False, "-"), (True, "--")):
+            sel = sorted((p for p in pts if p["F_E"] == F and p["sigma_a"] is not None
+                          and (p["ibpa_deg"] < 0) == backward
+                          and not (backward and p["nodal_diameter"] == 0)),
+                         key=lambda p: p["nodal_diameter"])
+            if not sel:
+                continue
+            top.plot([p["nodal_diameter"] for p in sel], [p["sigma_a"] / 1e6 for p in sel],
+                     ls, marker="o", ms=3, color=color,
+                     label=f"$F_E$ = {F:g} N" + (" (backward)" if backward else ""))
+        for w in data["worst"]:
+            if w["F_E"] == F and w["sigma_max"] is not None:
+                top.plot(w["nodal_diameter"], w["sigma_max"] / 1e6, "o", ms=10, mfc="none",
+                         mec="tab:red", mew=1.5)
+    top.axhline(sigma_all / 1e6, color="tab:red", lw=1.2)
+    top.xaxis.set_major_locator(matplotlib.ticker.MaxNLocator(integer=True))
+    top.set_xlabel("nodal diameter")
+    top.set_ylabel(r"$\sigma_a$ at resonance [MPa]")
+    top.set_title(f"Nodal-diameter sweep, {data['blades']} blades: solid forward, dashed "
+                  "backward, red rings the worst engine order", fontsize=10)
+    top.grid(True, alpha=0.35)
+    top.legend(fontsize=7, ncol=2)
+    worst_eo = data["worst"][-1]["engine_order"] if data["worst"] else 0
+    for k, (eo, name) in enumerate(((0, "in phase (EO 0)"),
+                                    (worst_eo, f"worst: EO {worst_eo}"))):
+        ax = fig.add_subplot(2, 2, 3 + k)
+        sel = [p for p in pts if p["engine_order"] == eo and p["sigma_a"] is not None]
+        F_lim = sel[0]["F_lim"] if sel else None
+        ax.plot([p["F_E"] for p in sel], [p["sigma_a"] / 1e6 for p in sel], "o-",
+                color="tab:blue", ms=4)
+        ax.axhline(sigma_all / 1e6, color="tab:red", lw=1.2)
+        if F_lim:
+            ax.axvline(F_lim, color="k", lw=1.2)
+            ax.axvline(0.5 * F_lim, color="k", lw=1.0, ls="--")
+            ax.set_xlim(0, 1.2 * max(F_lim, max(forces)))
+        ax.set_ylim(0, max([1.3 * sigma_all / 1e6] + [1.05 * p["sigma_a"] / 1e6 for p in sel]))
+        ax.set_xlabel(r"proof excitation force $F_E$ [N]")
+        ax.set_ylabel(r"$\sigma_a$ [MPa]")
+        ax.set_title(f"GG diagram, {name}" + (f", $F_{{lim}}$ = {F_lim:.4g} N" if F_lim else ""),
+                     fontsize=10)
+        ax.grid(True, alpha=0.35)
+    fig.tight_layout()
+    path = Path(path)
+    fig.savefig(path, dpi=150)
+    plt.close(fig)
+    return path

@@ -12,6 +12,7 @@ module udmap_api_c_model
   use udmap_damper_type, only: damper_type
   ! udmap_analysis and its conversions, generated from kernel/parameters.toml
   use udmap_api_c_parameters, only: c_analysis_type, analysis_from_c, analysis_to_c
+  use udmap_mapping_model, only: is_traveling
   use udmap_mapping_model, only: model_type, analysis_type, point_type, curve_type, new_model, &
     & set_damper, limit_force, backbone_curve, backbone, response, response_curves, &
     & limit_force_backbone, set_harmonics, admissible_force
@@ -217,7 +218,8 @@ contains
       call limit_force(m%model, value, error)
       if (.not.allocated(error)) then
         F = value
-        if (backbone_level) F = limit_force_backbone(m%model)
+        ! at phi /= 0, F_lim(phi) is the supremum of the backbone itself (PHYSICS.md 2.6)
+        if (backbone_level .and. .not. is_traveling(m%model)) F = limit_force_backbone(m%model)
       end if
     end if
     stat = set_error(errh, error)

@@ -15,6 +15,7 @@ from .args import float_list, harmonics_arg, positive, positive_int
 from .commands import (cmd_backbone, cmd_curves, cmd_demo, cmd_dti, cmd_hbm, cmd_reduce,
                        cmd_response, cmd_table)
 from .doe import add_doe_parser
+from .nodal import add_nodal_parser
 from .files import add_file_options
 
 
@@ -75,6 +76,7 @@ def build_parser() -> argparse.ArgumentParser:
                    help="case file (default: the embedded blade A)")
     p.add_argument("--out", default="out/demo", help="output directory (default out/demo)")
     p.set_defaults(func=cmd_demo)
+    add_nodal_parser(sub)
     add_doe_parser(sub)
     add_fmu_parser(sub)
     return parser
