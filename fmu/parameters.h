@@ -123,7 +123,13 @@
     "(PHYSICS.md 5); below F_lim when a contact lifts off") \
   X(jump, BOOLEAN, OUTPUT, POINT, "", 0.0, NOLIMIT, NOLIMIT, 0, \
     "The peak sits at a jump gamma_c of the damper stiffness k(gamma) (PHYSICS.md 2.5): " \
-    "gamma_P = gamma_c, k interpolated between its one-sided values")
+    "gamma_P = gamma_c, k interpolated between its one-sided values") \
+  X(blades, INTEGER, PARAMETER, ANALYSIS, "", 2.0, 2.0, 10000.0, 0, \
+    "Number of blades N of the wheel; with engine_order the interblade phase 2 pi EO/N of " \
+    "the traveling wave (PHYSICS.md 2.6)") \
+  X(engine_order, INTEGER, PARAMETER, ANALYSIS, "", 0.0, 0.0, 1e6, 0, \
+    "Engine order EO (taken modulo blades); 0 is the in-phase family. The asymmetric damper " \
+    "feels the phase; jenkins and table dampers do not")
 
 /* Items of resources/udmap-case.txt (fmu/case.h) that are case-file fields:
  * X(key, member of CaseConfig, conversion of the number read). */

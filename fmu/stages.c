@@ -202,6 +202,11 @@ static Status build_model(ModelInstance *m) {
    * default to rounding (the start is only where the peak search begins); it keeps a change
    * of mu or of a contact stiffness at some 0.1 ms instead of 2 ms. */
   if (!m->config) a.eigen_method = 2;
+  /* the traveling wave of engine order EO on N blades (PHYSICS.md 2.6), its phase in
+   * (-180, 180] deg as the command line's nodal sweep takes it */
+  const double N = V(blades), EO = fmod(V(engine_order), N);
+  a.ibpa_deg = 360.0 * EO / N;
+  if (a.ibpa_deg > 180.0) a.ibpa_deg -= 360.0;
   int stat = udmap_new_model(m->err, m->blade, m->damper, &a, &m->model);
   if (stat != UDMAP_OK) return kernel_failure(m, STAGE_MODEL, stat, "udmap_new_model");
   /* after a change of F_E alone, points at harmonics != 1 come from the verified force table
