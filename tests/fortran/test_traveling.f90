@@ -239,7 +239,7 @@ contains
           & harmonics(k), error)
         call check_no_error(suite, "standard method", error)
         do j = 1, size(forces)
-          call wave_hbm_peak(hbm, forces(j), 2*pi*points(j)%f_res*0.995_wp, 2*pi*230, pt, error)
+          call wave_hbm_peak(hbm, forces(j), 2*pi*points(j)%f_res*1.01_wp, 2*pi*150, pt, error)
           call check_no_error(suite, "standard method peak", error)
           if (allocated(error)) return
           call check_close(suite, "gamma_P, layered = standard", points(j)%gamma_P, &

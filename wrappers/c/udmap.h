@@ -424,8 +424,8 @@ int udmap_dti_peak(udmap_error error, udmap_blade blade, udmap_contact contact,
    phi). The blade must know its platform translations. */
 
 /* The standard method at ibpa_deg [deg] (harmonics 1, or 2..64 for 0..H): for each of the n
-   forces F_E [N], continuation from f_start[i] [Hz] (below the peak, inside the band) and the
-   maximum of |Gamma_1| over frequency: gamma_P [rad], f_res [Hz], sigma_a [Pa], u_E [m] and the
+   forces F_E [N], continuation down from f_start[i] [Hz] (above the peak, inside the band) and
+   the maximum of |Gamma_1| over frequency: gamma_P [rad], f_res [Hz], sigma_a [Pa], u_E [m] and the
    Newton iterations. */
 int udmap_wave_hbm_peaks(udmap_error error, udmap_blade blade, udmap_damper damper, double f_min,
                          double f_max, double ibpa_deg, int harmonics, int n, const double* F_E,

@@ -76,11 +76,13 @@ contains
     if (H > 1) call platform_receptances(blade, 0.0_wp, s%r0, error)
   end subroutine new_wave_hbm
 
-  !> The peak for F_E [N]: continuation in omega from omega_start [rad/s] upwards until
-  !> |Gamma_1| falls, then Brent's minimiser on -|Gamma_1| in the last three steps.
-  subroutine wave_hbm_peak(s, F_E, omega_start, omega_hi, pt, error)
+  !> The peak for F_E [N]: continuation in omega from omega_start [rad/s] (above the peak)
+  !> downwards until |Gamma_1| falls, then Brent's minimiser on -|Gamma_1| in the last three
+  !> steps. Downwards: the friction damper softens the blade, its response curves lean to
+  !> lower frequencies, and coming from above follows the upper branch to the peak.
+  subroutine wave_hbm_peak(s, F_E, omega_start, omega_lo, pt, error)
     type(wave_hbm_type), intent(inout) :: s
-    real(wp), intent(in) :: F_E, omega_start, omega_hi
+    real(wp), intent(in) :: F_E, omega_start, omega_lo
     type(wave_hbm_point_type), intent(out) :: pt
     type(error_type), allocatable, intent(out) :: error
     type(wave_hbm_point_type) :: p_prev, p_cur
@@ -92,7 +94,7 @@ contains
     p_cur%P = 0
     p_cur%P0 = 0
     w = omega_start
-    dw = 2e-4_wp*omega_start
+    dw = -2e-4_wp*omega_start
     call solve(s, F_E, w, p_cur, error)
     if (allocated(error)) return
     g_prev2 = -1
@@ -108,8 +110,8 @@ contains
       w_prev = w
       p_prev = p_cur
       w = w + dw
-      if (w >= omega_hi) then
-        call fatal_error(error, "standard method at phi /= 0: no peak below f_max for F_E = "// &
+      if (w <= omega_lo) then
+        call fatal_error(error, "standard method at phi /= 0: no peak above f_min for F_E = "// &
           & ftoa(F_E)//" N", UDMAP_EPHYSICS)
         return
       end if
@@ -117,8 +119,8 @@ contains
       if (allocated(error)) return
       g_cur = abs(p_cur%P(3, 1))
     end do
-    ! the maximum lies in [w_prev2, w]
-    call refine(w_prev2, w, p_prev)
+    ! the maximum lies in [w, w_prev2]
+    call refine(w, w_prev2, p_prev)
     if (allocated(error)) return
     pt = p_prev
 

@@ -290,8 +290,9 @@ def dti(blade, contact, F_E: Iterable[float], freq: float | None = None, peak: b
 def wave_hbm(blade: Blade, damper: Damper, f_min: float, f_max: float, ibpa_deg: float,
              F_E: Iterable[float], f_start: Iterable[float], harmonics: int = 1) -> list[dict]:
     """Peaks of a traveling wave at the interblade phase ``ibpa_deg`` [deg] by the standard
-    method (PHYSICS.md 2.6 and 6): for each force [N], continuation from ``f_start`` [Hz] (below
-    the peak) and the maximum of |Gamma_1| over frequency. ``harmonics``: 1, or H up to 64
+    method (PHYSICS.md 2.6 and 6): for each force [N], continuation down from ``f_start`` [Hz]
+    (above the peak: the friction damper softens the blade) and the maximum of |Gamma_1| over
+    frequency. ``harmonics``: 1, or H up to 64
     (harmonics 0..H). Returns per force F_E, gamma_P [rad], f_res [Hz], sigma_a [Pa], u_E [m]
     and the Newton iterations."""
     arr, ptr = _forces(F_E)

@@ -16,7 +16,7 @@ contains
 
   !> Peaks of the traveling wave at the interblade phase ibpa_deg [deg] by the standard method
   !> for n forces F_E [N] with `harmonics` (1: harmonic 1 only, H > 1: 0..H): the continuation
-  !> starts at f_start(i) [Hz] (below the peak; inside [f_min, f_max]). Outputs per force:
+  !> starts at f_start(i) [Hz] (above the peak; inside [f_min, f_max]) and goes down. Outputs per force:
   !> gamma_P [rad], f_res [Hz], sigma_a [Pa], u_E [m] (first harmonics), Newton iterations.
   function udmap_wave_hbm_peaks(ehandle, hblade, hdamper, f_min, f_max, ibpa_deg, harmonics, &
       & n, F_E, f_start, gamma_P, f_res, sigma_a, u_E, iterations) result(stat) &
@@ -52,7 +52,7 @@ contains
       call check_input(f_start(i) > f_min .and. f_start(i) < f_max, "wave_hbm_peaks: "// &
         & "f_start must lie inside [f_min, f_max]", error)
       if (allocated(error)) exit
-      call wave_hbm_peak(s, real(F_E(i), wp), 2*pi*real(f_start(i), wp), 2*pi*real(f_max, wp), &
+      call wave_hbm_peak(s, real(F_E(i), wp), 2*pi*real(f_start(i), wp), 2*pi*real(f_min, wp), &
         & pt, error)
       if (allocated(error)) exit
       gamma_P(i) = abs(pt%P(3, 1))

@@ -224,17 +224,19 @@ def _traveling(case, damper) -> bool:
 
 
 def _wave_hbm(case, blade, damper, args) -> list[dict]:
-    """The standard method at the case's interblade phase: each force continued from the bare
-    first natural frequency (the damper only stiffens the blade) to its peak; F_lim(phi) and
-    the HCF verdict from the model at that phase. The regime is left out: at phi /= 0 it is
-    not the in-phase rule's."""
+    """The standard method at the case's interblade phase: each force continued down to its
+    own peak from 1 % above the layered peak (a starting point only: the friction damper
+    softens the blade, so coming from above follows the upper branch); F_lim(phi) and the HCF
+    verdict from the model at that phase. The regime is left out: at phi /= 0 it is not the
+    in-phase rule's."""
     a = case.analysis
     harmonics = args.harmonics if args.harmonics not in (None, "auto", 0) else 1
-    f1 = float(blade.natural_frequencies(1)[0])
-    start = min(max(f1, a["f_min"] * (1 + 1e-6)), a["f_max"] * (1 - 1e-6))
+    model = build_model(case, blade=blade, damper=damper)
+    starts = [min(1.01 * p["f_res"], a["f_max"] * (1 - 1e-9)) if not p.get("unbounded")
+              else a["f_max"] * (1 - 1e-9) for p in model.backbone(args.forces)]
     points = hbm.wave_hbm(blade, damper, a["f_min"], a["f_max"], a["ibpa_deg"], args.forces,
-                          [start] * len(args.forces), harmonics=int(harmonics))
-    F_lim = build_model(case, blade=blade, damper=damper).limit_force()
+                          starts, harmonics=int(harmonics))
+    F_lim = model.limit_force()
     for p in points:
         p["F_lim"] = F_lim
         p["hcf_ok"] = p["F_E"] <= 0.5 * F_lim and p["sigma_a"] <= a["sigma_all"]
