@@ -25,13 +25,15 @@
 !>       7 flat1_x, 8 flat1_y, 9 flat2_x, 10 flat2_y, 11 curved_x, 12 curved_y [m],
 !>       13 kn_flat, 14 kt_flat, 15 kn_curved, 16 kt_curved [N/m];
 !>     NDAMPER = 2, rotational Jenkins element (PHYSICS.md 2.4): 1 kt [N m/rad], 2 M_slip [N m].
-!>   ANALYS(NANALY), the analysis settings (udmap_analysis), 2 <= NANALY <= 7; entries beyond
+!>   ANALYS(NANALY), the analysis settings (udmap_analysis), 2 <= NANALY <= 8; entries beyond
 !>     NANALY take their defaults:
 !>     1 f_min, 2 f_max [Hz] (band of the resonance), 3 sigma_all [Pa] (default 80e6),
 !>     4 rtol (default 1e-12), 5 grid_per_decade (whole number, default 24),
 !>     6 harmonics (whole number: 1 the single-harmonic method (default), 2..64 harmonics
 !>     0..H in multi-harmonic layers, 0 automatic; PHYSICS.md 4.1), 7 harmonic_tol (default
-!>     1e-3). With harmonics /= 1 GAMMAP and SIGMAA stay first-harmonic amplitudes.
+!>     1e-3), 8 ibpa_deg (the interblade phase angle of a traveling wave [deg], PHYSICS.md
+!>     2.6; default 0, in phase). With harmonics /= 1 GAMMAP and SIGMAA stay first-harmonic
+!>     amplitudes.
 !>
 !> INFO: 0 success; -i: the i-th argument is invalid (for an array, one of its entries: the
 !> derived-type API and the C API give the message naming it); UDMAP_EPHYSICS = 3: a physics
@@ -50,7 +52,8 @@ submodule (udmap_api_legacy_interface) udmap_api_legacy_arrays
     & LEGACY_BEAM_AIRFOIL_ELEMENTS, LEGACY_JENKINS_KT, LEGACY_JENKINS_M_SLIP, &
     & LEGACY_ANALYSIS_F_MIN, LEGACY_ANALYSIS_F_MAX, LEGACY_ANALYSIS_SIGMA_ALL, &
     & LEGACY_ANALYSIS_RTOL, LEGACY_ANALYSIS_GRID_PER_DECADE, LEGACY_ANALYSIS_HARMONICS, &
-    & LEGACY_ANALYSIS_HARMONIC_TOL, beam_from_array, asymmetric_from_array
+    & LEGACY_ANALYSIS_HARMONIC_TOL, LEGACY_ANALYSIS_IBPA_DEG, beam_from_array, &
+    & asymmetric_from_array
   use udmap_blade_type, only: blade_type, new_beam_blade
   use udmap_damper_type, only: damper_type, new_asymmetric_damper, new_jenkins_damper
   use udmap_mapping_model, only: analysis_type, point_type, curve_type, model_type, new_model, &
@@ -404,6 +407,8 @@ contains
       & a%harmonics = nint(analysis(LEGACY_ANALYSIS_HARMONICS))
     if (nanalysis >= LEGACY_ANALYSIS_HARMONIC_TOL) &
       & a%harmonic_tol = real(analysis(LEGACY_ANALYSIS_HARMONIC_TOL), wp)
+    if (nanalysis >= LEGACY_ANALYSIS_IBPA_DEG) &
+      & a%ibpa_deg = real(analysis(LEGACY_ANALYSIS_IBPA_DEG), wp)
     call new_model(model, blade, d, a, error)
     if (allocated(error)) then
       info = info_of(error, analysis_arg)

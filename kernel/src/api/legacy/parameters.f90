@@ -22,7 +22,7 @@ module udmap_api_legacy_parameters
     & LEGACY_NDAMPER_JENKINS, LEGACY_JENKINS_KT, LEGACY_JENKINS_M_SLIP, LEGACY_NANALYSIS_MAX, &
     & LEGACY_NANALYSIS_MIN, LEGACY_ANALYSIS_F_MIN, LEGACY_ANALYSIS_F_MAX, &
     & LEGACY_ANALYSIS_SIGMA_ALL, LEGACY_ANALYSIS_RTOL, LEGACY_ANALYSIS_GRID_PER_DECADE, &
-    & LEGACY_ANALYSIS_HARMONICS, LEGACY_ANALYSIS_HARMONIC_TOL
+    & LEGACY_ANALYSIS_HARMONICS, LEGACY_ANALYSIS_HARMONIC_TOL, LEGACY_ANALYSIS_IBPA_DEG
 
   !> BEAM(14), the blade (beam): its length and the index of each entry.
   integer, parameter :: LEGACY_NBEAM = 14
@@ -44,14 +44,14 @@ module udmap_api_legacy_parameters
   !> DAMPER(2), the damper (jenkins): its length and the index of each entry.
   integer, parameter :: LEGACY_NDAMPER_JENKINS = 2
   integer, parameter :: LEGACY_JENKINS_KT = 1, LEGACY_JENKINS_M_SLIP = 2
-  !> ANALYS(7), the analysis: its length and the index of each entry.
-  integer, parameter :: LEGACY_NANALYSIS_MAX = 7
+  !> ANALYS(8), the analysis: its length and the index of each entry.
+  integer, parameter :: LEGACY_NANALYSIS_MAX = 8
   !> The least length of ANALYS: its entries without defaults.
   integer, parameter :: LEGACY_NANALYSIS_MIN = 2
   integer, parameter :: LEGACY_ANALYSIS_F_MIN = 1, LEGACY_ANALYSIS_F_MAX = 2, &
     & LEGACY_ANALYSIS_SIGMA_ALL = 3, LEGACY_ANALYSIS_RTOL = 4, &
     & LEGACY_ANALYSIS_GRID_PER_DECADE = 5, LEGACY_ANALYSIS_HARMONICS = 6, &
-    & LEGACY_ANALYSIS_HARMONIC_TOL = 7
+    & LEGACY_ANALYSIS_HARMONIC_TOL = 7, LEGACY_ANALYSIS_IBPA_DEG = 8
 
 contains
 
