@@ -29,7 +29,7 @@ module udmap_contact_element_wave
     !> Instants per period.
     integer :: samples = 128
     !> Periods after the ramp: at least, at most.
-    integer :: min_periods = 2, max_periods = 16
+    integer :: min_periods = 1, max_periods = 16
   end type wave_settings_type
 
   !> What a trace found besides the harmonics.

@@ -360,7 +360,11 @@ contains
       tw%traces = tw%traces + 1
       Rv = 0
       Fv = 0
-      if (allocated(err)) return
+      if (allocated(err)) then
+        err%message = "traveling layer gamma = "//ftoa(gamma)//" rad at "// &
+          & ftoa(omega/(2*pi))//" Hz, phi = "//ftoa(tw%phi)//" rad: "//err%message
+        return
+      end if
       call balance(r, xv, Rv, Fv)
     end subroutine residual
 
