@@ -21,7 +21,7 @@ module udmap_mapping_admissible
   use udmap_core_kinds, only: wp
   use udmap_core_error, only: error_type, fatal_error, UDMAP_EINPUT, UDMAP_EPHYSICS
   use udmap_mapping_model_data, only: model_type, point_type
-  use udmap_mapping_harmonic_mapping, only: backbone
+  use udmap_mapping_traveling_dispatch, only: backbone
   use udmap_core_root_finding, only: brent_type, brent_start, brent_next, brent_update
   implicit none
   private

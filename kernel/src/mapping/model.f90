@@ -25,17 +25,15 @@ module udmap_mapping_model
   use udmap_mapping_eigen_start, only: new_secular
   use udmap_mapping_band_receptances, only: new_band_receptances
   use udmap_mapping_model_data, only: analysis_type, point_type, curve_type, model_type, &
-    & check_model_damper, set_damper, inphase_limit_force => limit_force, &
-    & limit_force_backbone, EIGEN_AUTO, &
+    & check_model_damper, set_damper, limit_force_backbone, EIGEN_AUTO, &
     & EIGEN_DIRECT, EIGEN_MODAL, REGIME_STUCK, REGIME_PARTIAL_SLIP, REGIME_FULL_SLIP, &
     & REGIME_LIMIT, BRANCH_LOWER, BRANCH_UPPER, BRANCH_TURNING
   use udmap_mapping_backbone, only: backbone_curve
-  use udmap_mapping_harmonic_mapping, only: inphase_backbone => backbone, &
-    & inphase_response => response, inphase_response_curves => response_curves, &
+  use udmap_mapping_harmonic_mapping, only: inphase_response => response, &
+    & inphase_response_curves => response_curves, &
     & harmonics_near_modes, set_harmonics, check_harmonics
-  use udmap_mapping_admissible, only: inphase_admissible_force => admissible_force
-  use udmap_damper_type, only: DAMPER_ASYMMETRIC
-  use udmap_mapping_traveling_backbone, only: wave_backbone, wave_limit_force
+  use udmap_mapping_admissible, only: admissible_force
+  use udmap_mapping_traveling_dispatch, only: is_traveling, limit_force, backbone
   implicit none
   private
   public :: analysis_type, point_type, curve_type, model_type
@@ -127,41 +125,6 @@ contains
       & call new_band_receptances(model%bare%band, blade, model%omega_lo, model%omega_hi)
   end subroutine new_model
 
-  !> The model is a traveling wave: an interblade phase other than 0 (mod 360 deg) with the
-  !> asymmetric damper, the one kind that feels it.
-  pure logical function is_traveling(model)
-    type(model_type), intent(in) :: model
-    is_traveling = .false.
-    if (.not. associated(model%damper)) return
-    is_traveling = modulo(model%analysis%ibpa_deg, 360.0_wp) /= 0 .and. &
-      & model%damper%kind == DAMPER_ASYMMETRIC
-  end function is_traveling
-
-  !> F_lim [N] (PHYSICS.md 5; at phi /= 0, F_lim(phi) of 2.6).
-  subroutine limit_force(model, F_lim, error)
-    type(model_type), intent(in) :: model
-    real(wp), intent(out) :: F_lim
-    type(error_type), allocatable, intent(out) :: error
-    if (is_traveling(model)) then
-      call wave_limit_force(model, F_lim, error)
-    else
-      call inphase_limit_force(model, F_lim, error)
-    end if
-  end subroutine limit_force
-
-  !> The peaks of the non-linear response for the forces F_E [N] (PHYSICS.md 4, 4.1, 2.6).
-  subroutine backbone(model, F_E, points, error)
-    type(model_type), intent(inout) :: model
-    real(wp), intent(in) :: F_E(:)
-    type(point_type), allocatable, intent(out) :: points(:)
-    type(error_type), allocatable, intent(out) :: error
-    if (is_traveling(model)) then
-      call wave_backbone(model, F_E, points, error)
-    else
-      call inphase_backbone(model, F_E, points, error)
-    end if
-  end subroutine backbone
-
   !> The response at the excitation frequency f_exc [Hz] for the forces F_E [N].
   subroutine response(model, f_exc, F_E, points, error)
     type(model_type), intent(inout) :: model
@@ -184,17 +147,6 @@ contains
     call inphase_response_curves(model, F_E, layers, curves, error)
   end subroutine response_curves
 
-  !> The admissible force F_adm of a design (any H; in phase).
-  subroutine admissible_force(model, F_lim, sigma_all, rtol, F_adm, error)
-    type(model_type), intent(inout) :: model
-    real(wp), intent(in) :: F_lim, sigma_all, rtol
-    real(wp), intent(out) :: F_adm
-    type(error_type), allocatable, intent(out) :: error
-    F_adm = 0
-    if (traveling_refused(model, "the admissible force", error)) return
-    call inphase_admissible_force(model, F_lim, sigma_all, rtol, F_adm, error)
-  end subroutine admissible_force
-
   !> What is not yet computed at phi /= 0 says so instead of answering in phase.
   logical function traveling_refused(model, what, error)
     type(model_type), intent(in) :: model
@@ -202,7 +154,7 @@ contains
     type(error_type), allocatable, intent(out) :: error
     traveling_refused = is_traveling(model)
     if (traveling_refused) call fatal_error(error, "analysis.ibpa_deg: "//what// &
-      & " at an interblade phase other than 0 is not available yet (backbone, limit force "// &
-      & "and the nodal sweep are)", UDMAP_EINPUT)
+      & " at an interblade phase other than 0 is not available yet (backbone, limit force, "// &
+      & "F_adm and the nodal sweep are)", UDMAP_EINPUT)
   end function traveling_refused
 end module udmap_mapping_model

@@ -1,0 +1,54 @@
+!> In phase or traveling (PHYSICS.md 2.6): the backbone and the limit force of a model, taken by
+!> the traveling-wave layers when the analysis has an interblade phase other than 0 and the
+!> damper is the asymmetric one (the other kinds act on gamma_P alone: phi does not change
+!> them), by the in-phase mapping otherwise. Below the model's face and the admissible force,
+!> which both answer at the model's phase through it.
+module udmap_mapping_traveling_dispatch
+  use udmap_core_kinds, only: wp
+  use udmap_core_error, only: error_type
+  use udmap_damper_type, only: DAMPER_ASYMMETRIC
+  use udmap_mapping_model_data, only: model_type, point_type, &
+    & inphase_limit_force => limit_force
+  use udmap_mapping_harmonic_mapping, only: inphase_backbone => backbone
+  use udmap_mapping_traveling_backbone, only: wave_backbone, wave_limit_force
+  implicit none
+  private
+  public :: is_traveling, limit_force, backbone
+
+contains
+
+  !> The model is a traveling wave: an interblade phase other than 0 (mod 360 deg) with the
+  !> asymmetric damper, the one kind that feels it.
+  pure logical function is_traveling(model)
+    type(model_type), intent(in) :: model
+    is_traveling = .false.
+    if (.not. associated(model%damper)) return
+    is_traveling = modulo(model%analysis%ibpa_deg, 360.0_wp) /= 0 .and. &
+      & model%damper%kind == DAMPER_ASYMMETRIC
+  end function is_traveling
+
+  !> F_lim [N] (PHYSICS.md 5; at phi /= 0, F_lim(phi) of 2.6).
+  subroutine limit_force(model, F_lim, error)
+    type(model_type), intent(in) :: model
+    real(wp), intent(out) :: F_lim
+    type(error_type), allocatable, intent(out) :: error
+    if (is_traveling(model)) then
+      call wave_limit_force(model, F_lim, error)
+    else
+      call inphase_limit_force(model, F_lim, error)
+    end if
+  end subroutine limit_force
+
+  !> The peaks of the non-linear response for the forces F_E [N] (PHYSICS.md 4, 4.1, 2.6).
+  subroutine backbone(model, F_E, points, error)
+    type(model_type), intent(inout) :: model
+    real(wp), intent(in) :: F_E(:)
+    type(point_type), allocatable, intent(out) :: points(:)
+    type(error_type), allocatable, intent(out) :: error
+    if (is_traveling(model)) then
+      call wave_backbone(model, F_E, points, error)
+    else
+      call inphase_backbone(model, F_E, points, error)
+    end if
+  end subroutine backbone
+end module udmap_mapping_traveling_dispatch
