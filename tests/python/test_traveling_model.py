@@ -1,6 +1,6 @@
 """Traveling waves through the Python and command-line faces (PHYSICS.md 2.6): the admissible
-force at a phase, the standard method at a phase against the layered backbone, and what is
-refused rather than answered in phase."""
+force and the response at a phase, the standard method at a phase against the layered
+backbone, and what is refused rather than answered in phase."""
 from __future__ import annotations
 
 import json
@@ -33,10 +33,23 @@ def test_admissible_force_at_a_phase(wave):
     assert model.backbone([F_adm])[0]["sigma_a"] == pytest.approx(80e6, rel=1e-6)
 
 
-def test_response_is_refused_not_answered_in_phase(wave):
+def test_response_at_the_peak_frequency_is_the_peak(wave):
+    """The peak lies on the response curve: at f_res the response to F_E is gamma_P (its
+    largest root), the same equations solved the other way round."""
+    _, _, model = wave
+    peak = model.backbone([3.0])[0]
+    resp = model.response(peak["f_res"], [3.0])[0]
+    assert resp["gamma_P"] == pytest.approx(peak["gamma_P"], rel=1e-6)
+    assert resp["sigma_a"] == pytest.approx(peak["sigma_a"], rel=1e-6)
+    assert resp["roots"] == sorted(resp["roots"]) and resp["gamma_P"] == resp["roots"][-1]
+    below = model.response(0.99 * peak["f_res"], [3.0])[0]
+    assert below["gamma_P"] < peak["gamma_P"]
+
+
+def test_curves_are_refused_not_answered_in_phase(wave):
     _, _, model = wave
     with pytest.raises(InputError, match="ibpa_deg"):
-        model.response(196.0, [2.0])
+        model.curves([2.0], layers=20)
 
 
 def test_hbm_at_a_phase_equals_the_backbone(tmp_path):

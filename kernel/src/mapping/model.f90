@@ -34,6 +34,7 @@ module udmap_mapping_model
     & harmonics_near_modes, set_harmonics, check_harmonics
   use udmap_mapping_admissible, only: admissible_force
   use udmap_mapping_traveling_dispatch, only: is_traveling, limit_force, backbone
+  use udmap_mapping_traveling_backbone, only: wave_response
   implicit none
   private
   public :: analysis_type, point_type, curve_type, model_type
@@ -132,8 +133,11 @@ contains
     real(wp), intent(in) :: F_E(:)
     type(point_type), allocatable, intent(out) :: points(:)
     type(error_type), allocatable, intent(out) :: error
-    if (traveling_refused(model, "response", error)) return
-    call inphase_response(model, f_exc, F_E, points, error)
+    if (is_traveling(model)) then
+      call wave_response(model, f_exc, F_E, points, error)
+    else
+      call inphase_response(model, f_exc, F_E, points, error)
+    end if
   end subroutine response
 
   !> The non-linear response curves for the forces F_E [N] (PHYSICS.md 3).
@@ -154,7 +158,7 @@ contains
     type(error_type), allocatable, intent(out) :: error
     traveling_refused = is_traveling(model)
     if (traveling_refused) call fatal_error(error, "analysis.ibpa_deg: "//what// &
-      & " at an interblade phase other than 0 is not available yet (backbone, limit force, "// &
-      & "F_adm and the nodal sweep are)", UDMAP_EINPUT)
+      & " at an interblade phase other than 0 is not available yet (backbone, response, "// &
+      & "limit force, F_adm and the nodal sweep are)", UDMAP_EINPUT)
   end function traveling_refused
 end module udmap_mapping_model

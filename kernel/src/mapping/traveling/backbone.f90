@@ -24,10 +24,10 @@ module udmap_mapping_traveling_backbone
   use udmap_mapping_harmonic_mapping, only: inphase_backbone => backbone
   use udmap_mapping_harmonic_layer, only: largest_excursion
   use udmap_mapping_traveling_layer, only: traveling_type, wave_layer_type, new_traveling, &
-    & wave_peak
+    & wave_peak, wave_layer_solve
   implicit none
   private
-  public :: wave_backbone, wave_limit_force, interblade_phase, new_model_traveling
+  public :: wave_backbone, wave_response, wave_limit_force, interblade_phase, new_model_traveling
 
   !> Relative tolerance of the backbone roots in gamma (the layers are solved to ~1e-11).
   real(wp), parameter :: root_rtol = 1.0e-10_wp
@@ -216,7 +216,7 @@ contains
       end do
       g = excess(x, err)
       if (allocated(err)) return
-      call fill_point(exp(x), F, pt)
+      call fill_point(tw, L, exp(x), F, F_lim, model%analysis%sigma_all, pt)
     end subroutine peak_of_force
 
     !> ln F_bb(e^x) - ln F_cur at the layer e^x (leaves L at its peak, w at its frequency).
@@ -231,43 +231,144 @@ contains
       excess = log(Fbb) - log(F_cur)
     end function excess
 
-    subroutine fill_point(gamma, F, pt)
-      real(wp), intent(in) :: gamma, F
-      type(point_type), intent(inout) :: pt
-      complex(wp), allocatable :: Z(:)
-      real(wp) :: s
-      integer :: h
-      s = F/abs(L%F)
-      pt%gamma_P = gamma
-      pt%f_res = L%omega/(2*pi)
-      pt%sigma_a = s*abs(L%sigma(1))
-      pt%u_E = s*abs(L%uE(1))
-      pt%k = L%A(3, 1)/gamma
-      pt%roots = [gamma]
-      if (.not. L%trace%slipped) then
-        pt%regime = REGIME_STUCK
-      else if (all(L%trace%contact_slipped)) then
-        pt%regime = REGIME_FULL_SLIP
-      else
-        pt%regime = REGIME_PARTIAL_SLIP
-      end if
-      if (F >= F_lim) pt%regime = REGIME_LIMIT
-      pt%hcf_ok = F <= 0.5_wp*F_lim .and. pt%sigma_a <= model%analysis%sigma_all
-      pt%gamma_max = gamma
-      pt%sigma_max = pt%sigma_a
-      if (tw%H > 1) then
-        Z = L%P(3, :)
-        pt%gamma_max = largest_excursion(Z)
-        Z = L%sigma*s
-        pt%sigma_max = largest_excursion(Z)
-        allocate(pt%gamma_h(0:tw%H), pt%sigma_h(0:tw%H))
-        pt%gamma_h(0) = abs(L%P0(3))
-        pt%sigma_h(0) = 0
-        do h = 1, tw%H
-          pt%gamma_h(h) = abs(L%P(3, h))
-          pt%sigma_h(h) = s*abs(L%sigma(h))
-        end do
-      end if
-    end subroutine fill_point
   end subroutine wave_backbone
+  !> The outputs of the solved layer L (amplitude gamma) scaled to the force F [N].
+  subroutine fill_point(tw, L, gamma, F, F_lim, sigma_all, pt)
+    type(traveling_type), intent(in) :: tw
+    type(wave_layer_type), intent(in) :: L
+    real(wp), intent(in) :: gamma, F, F_lim, sigma_all
+    type(point_type), intent(inout) :: pt
+    complex(wp), allocatable :: Z(:)
+    real(wp) :: s
+    integer :: h
+    s = F/abs(L%F)
+    pt%gamma_P = gamma
+    pt%f_res = L%omega/(2*pi)
+    pt%sigma_a = s*abs(L%sigma(1))
+    pt%u_E = s*abs(L%uE(1))
+    pt%k = L%A(3, 1)/gamma
+    pt%roots = [gamma]
+    if (.not. L%trace%slipped) then
+      pt%regime = REGIME_STUCK
+    else if (all(L%trace%contact_slipped)) then
+      pt%regime = REGIME_FULL_SLIP
+    else
+      pt%regime = REGIME_PARTIAL_SLIP
+    end if
+    if (F >= F_lim) pt%regime = REGIME_LIMIT
+    pt%hcf_ok = F <= 0.5_wp*F_lim .and. pt%sigma_a <= sigma_all
+    pt%gamma_max = gamma
+    pt%sigma_max = pt%sigma_a
+    if (tw%H > 1) then
+      Z = L%P(3, :)
+      pt%gamma_max = largest_excursion(Z)
+      Z = L%sigma*s
+      pt%sigma_max = largest_excursion(Z)
+      allocate(pt%gamma_h(0:tw%H), pt%sigma_h(0:tw%H))
+      pt%gamma_h(0) = abs(L%P0(3))
+      pt%sigma_h(0) = 0
+      do h = 1, tw%H
+        pt%gamma_h(h) = abs(L%P(3, h))
+        pt%sigma_h(h) = s*abs(L%sigma(h))
+      end do
+    end if
+  end subroutine fill_point
+
+  !> The response of the traveling wave at the excitation frequency f_exc [Hz] for the forces
+  !> F_E [N]: the layers gamma whose force at omega is F_E (|F(gamma, omega)| = F_E), found on
+  !> a grid in ln gamma from the stuck range upwards and refined by Brent's method; every root
+  !> is kept (ascending), the largest is the point.
+  subroutine wave_response(model, f_exc, F_E, points, error)
+    type(model_type), intent(inout) :: model
+    real(wp), intent(in) :: f_exc
+    real(wp), intent(in) :: F_E(:)
+    type(point_type), allocatable, intent(out) :: points(:)
+    type(error_type), allocatable, intent(out) :: error
+    type(traveling_type) :: tw
+    type(wave_layer_type) :: L
+    type(brent_type) :: bs
+    real(wp) :: F_lim, omega, x, x0, dx, g, gprev, xprev, lo, hi, glo, ghi
+    real(wp), allocatable :: roots(:)
+    logical :: more
+    integer :: i, k
+    omega = 2*pi*f_exc
+    if (.not. (omega >= model%omega_lo .and. omega <= model%omega_hi)) then
+      call fatal_error(error, "response: f_exc must lie in [f_min, f_max]", UDMAP_EINPUT)
+      return
+    end if
+    call new_model_traveling(model, tw, error)
+    if (allocated(error)) return
+    call wave_limit_force(model, F_lim, error)
+    if (allocated(error)) return
+    allocate(points(size(F_E)))
+    dx = log(10.0_wp)/model%analysis%grid_per_decade
+    do i = 1, size(F_E)
+      points(i)%F_E = F_E(i)
+      points(i)%f_res = f_exc
+      points(i)%harmonics = tw%H
+      ! stuck range: a layer far below the rotation that CF deflects the contacts by, where
+      ! |F| grows like gamma; the first grid point puts |F| at 1e-3 F_E
+      x0 = log(1e-3_wp*tw%CF/tw%geo%rate_scale)
+      L = wave_layer_type()
+      g = misfit(x0, F_E(i))
+      if (allocated(error)) return
+      x0 = x0 - g + log(1e-3_wp)
+      L = wave_layer_type()
+      x = x0
+      gprev = misfit(x, F_E(i))
+      if (allocated(error)) return
+      allocate(roots(0))
+      do k = 1, 100000
+        xprev = x
+        x = x + dx
+        g = misfit(x, F_E(i))
+        if (allocated(error)) return
+        if (g*gprev <= 0 .and. g /= gprev) then
+          lo = xprev
+          hi = x
+          glo = gprev
+          ghi = g
+          call brent_start(bs, lo, glo, hi, ghi, root_rtol)
+          do
+            call brent_next(bs, x, more)
+            if (.not. more) exit
+            g = misfit(x, F_E(i))
+            if (allocated(error)) return
+            call brent_update(bs, g)
+          end do
+          roots = [roots, exp(x)]
+          x = hi
+          g = misfit(x, F_E(i))
+          if (allocated(error)) return
+        end if
+        gprev = g
+        ! beyond the last root |F| keeps growing: three decades past F_E end the scan
+        if (g > log(1e3_wp) .and. size(roots) > 0) exit
+        if (g > log(1e6_wp)) exit
+      end do
+      if (size(roots) == 0) then
+        call fatal_error(error, "traveling wave: no response found for F_E = "//ftoa(F_E(i))// &
+          & " N at "//ftoa(f_exc)//" Hz, phi = "//ftoa(tw%phi)//" rad", UDMAP_EPHYSICS)
+        return
+      end if
+      g = misfit(log(roots(size(roots))), F_E(i))
+      if (allocated(error)) return
+      call fill_point(tw, L, roots(size(roots)), F_E(i), F_lim, model%analysis%sigma_all, &
+        & points(i))
+      points(i)%f_res = f_exc
+      points(i)%roots = roots
+      deallocate(roots)
+    end do
+
+  contains
+
+    !> ln |F(e^xg, omega)| - ln F (leaves L solved at e^xg).
+    real(wp) function misfit(xg, F)
+      real(wp), intent(in) :: xg, F
+      misfit = 0
+      call wave_layer_solve(tw, exp(xg), omega, L, error)
+      if (allocated(error)) return
+      misfit = log(abs(L%F)) - log(F)
+    end function misfit
+  end subroutine wave_response
 end module udmap_mapping_traveling_backbone
