@@ -38,6 +38,11 @@ def test_fmu_ranges_are_the_schema():
         if name in ("F_E", "f_exc"):  # inputs of the FMU only, not case-file fields
             assert (lo, hi) == (0.0, math.inf), name
             continue
+        if name in ("blades", "engine_order"):  # optional analysis fields of the case file
+            f = SCHEMA[("analysis", None)][name]
+            assert (lo, hi) == (f.lo, f.hi) and flags == "0", (name, lo, hi, flags)
+            compared += 1
+            continue
         if name == "harmonics":  # 0 stands for "auto", 1 and 2..64 as in the case file
             f = SCHEMA[("analysis", None)]["harmonics"]
             assert (lo, hi) == (0.0, f.hi) and flags == "0", (lo, hi, flags)
@@ -51,7 +56,7 @@ def test_fmu_ranges_are_the_schema():
         assert (lo, hi) == (f.lo, f.hi), (name, (lo, hi), (f.lo, f.hi))
         assert ("OPEN" in flags) == f.open and ("EVEN" in flags) == f.even, name
         compared += 1
-    assert compared == 34
+    assert compared == 36
 
 
 @pytest.mark.parametrize("version", [2, 3])
@@ -89,4 +94,4 @@ def test_model_description_carries_the_ranges(version):
         assert float(v.min) == lo, v.name
         assert (v.max is None and hi == math.inf) or float(v.max) == hi, v.name
         seen += 1
-    assert seen == len(table) == 36
+    assert seen == len(table) == 38
