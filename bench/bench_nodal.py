@@ -14,6 +14,10 @@ Records (INTERFACES.md "Benchmark output"), method "nodal":
                         "ratio_to_in_phase"; errors against the standard method (H = 1)
   gg10_phi90_H3         the same with H = 3; errors against the standard method (H = 3)
   sweep24x10_H1         all 24 engine orders of a 24-blade wheel at the ten forces, H = 1
+  same_equations_H<H>   the acceptance matrix of issue 19: N = 4, EO = 1, 2, 3 and N = 24,
+                        EO = 1, 6, 12, 23; F_E = 1, 2, 5, 10 N; layered against the standard
+                        method with the same harmonics, the largest relative differences;
+                        timings are the layered method's per phase (extra "seconds_standard")
 Usage: bench_nodal.py [--json FILE] [--quick]
 """
 from __future__ import annotations
@@ -21,6 +25,7 @@ from __future__ import annotations
 import argparse
 import json
 import sys
+import time
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -31,7 +36,7 @@ from timing import measure, record  # noqa: E402
 from udmap import hbm  # noqa: E402
 from udmap.case import build_blade, build_damper, load_case  # noqa: E402
 from udmap.model import Model  # noqa: E402
-from udmap.nodal import sweep  # noqa: E402
+from udmap.nodal import ibpa_of, sweep  # noqa: E402
 
 FORCES = [float(F) for F in range(1, 11)]
 
@@ -69,6 +74,36 @@ def main() -> int:
               f"({t['seconds_median'] / t0['seconds_median']:.0f} x in phase); against the "
               f"standard method {err}", flush=True)
     if not args.quick:
+        phases = sorted({ibpa_of(eo, n) for n, eos in ((4, (1, 2, 3)), (24, (1, 6, 12, 23)))
+                         for eo in eos})
+        forces = [1.0, 2.0, 5.0, 10.0]
+        damper = build_damper(case)
+        for H in (1, 3, 9):
+            worst = {"gamma_P": 0.0, "f_res": 0.0, "sigma_a": 0.0}
+            t_layer = t_std = 0.0
+            for ibpa in phases:
+                t1 = time.perf_counter()
+                model = Model(blade, damper, a["f_min"], a["f_max"], harmonics=H, ibpa_deg=ibpa)
+                points = model.backbone(forces)
+                t2 = time.perf_counter()
+                ref = hbm.wave_hbm(blade, damper, a["f_min"], a["f_max"], ibpa, forces,
+                                   [1.01 * p["f_res"] for p in points], harmonics=H)
+                t3 = time.perf_counter()
+                t_layer += t2 - t1
+                t_std += t3 - t2
+                for k in worst:
+                    worst[k] = max([worst[k]] + [abs(p[k] / r[k] - 1)
+                                                 for p, r in zip(points, ref)])
+            n = len(phases)
+            records.append(record("blade_a", "nodal", f"same_equations_H{H}",
+                                  {"seconds_median": t_layer / n, "seconds_min": t_layer / n,
+                                   "seconds_max": t_layer / n, "repeats": 1},
+                                  error_gamma_P=worst["gamma_P"], error_sigma_a=worst["sigma_a"],
+                                  error_f_res=worst["f_res"], seconds_standard=t_std / n,
+                                  phases_deg=phases))
+            print(f"bench_nodal: layered = standard, H = {H}, {n} phases x 4 forces: largest "
+                  f"differences {worst}; per phase {t_layer / n:.2f} s layered, "
+                  f"{t_std / n:.2f} s standard", flush=True)
         damper = build_damper(case)
         t = measure(lambda: sweep(blade, damper, a | {"harmonics": 1}, 24, FORCES), repeats=1,
                     warmup=0)
