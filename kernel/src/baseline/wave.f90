@@ -15,7 +15,9 @@ module udmap_baseline_wave
   use udmap_core_strings, only: ftoa
   use udmap_core_lapack, only: dgesv
   use udmap_blade_type, only: blade_type
-  use udmap_blade_platform, only: platform_receptances_type, platform_receptances
+  use udmap_blade_platform, only: platform_receptances_type, platform_receptances, &
+    & platform_unknowns_type, platform_count, platform_scales, platform_pack, platform_unpack, &
+    & platform_balance
   use udmap_damper_tracer_core, only: damper_geometry_type
   use udmap_contact_element_wave, only: wave_aft, wave_settings_type, wave_static_action
   implicit none
@@ -28,9 +30,10 @@ module udmap_baseline_wave
   type :: wave_hbm_type
     type(blade_type), pointer :: blade => null()
     type(damper_geometry_type) :: geo
-    real(wp) :: CF = 0, phi = 0, lever = 1, A_ref(3) = 0
+    real(wp) :: CF = 0, phi = 0, A_ref(3) = 0
     integer :: H = 1
-    logical :: v_free = .false.
+    !> The unknowns: every harmonic of the platform, Gamma_1 included.
+    type(platform_unknowns_type) :: u
     type(wave_settings_type) :: settings
     type(platform_receptances_type) :: r0
     !> Statistics: Newton iterations and traces of the last peak.
@@ -69,8 +72,8 @@ contains
     s%phi = phi
     s%H = H
     s%settings%samples = max(128, 8*H)
-    s%v_free = any(blade%platform_uv(:, 2) /= 0)
-    s%lever = max(maxval(abs(geo%cn)), maxval(abs(geo%ct)), tiny(1.0_wp))
+    s%u = platform_unknowns_type(H=H, v_free=any(blade%platform_uv(:, 2) /= 0), &
+      & gamma1_fixed=.false., lever=max(maxval(abs(geo%cn)), maxval(abs(geo%ct)), tiny(1.0_wp)))
     call wave_static_action(geo, CF, s%A_ref, error)
     if (allocated(error)) return
     if (H > 1) call platform_receptances(blade, 0.0_wp, s%r0, error)
@@ -224,10 +227,9 @@ contains
     integer, allocatable :: ipiv(:)
     complex(wp), allocatable :: A(:, :)
     real(wp) :: A0(3), rn, rnt, t, gs
-    integer :: n, h, it, k, info, ls, nt
+    integer :: n, h, it, k, info, ls
     logical :: done
-    nt = merge(2, 1, s%v_free)
-    n = 2*(nt + 1)*s%H + merge(1, 0, s%H > 1)
+    n = platform_count(s%u)
     allocate(r(s%H), y(n), R0(n), Rt(n), J(n, n), dy(n), yt(n), sc(n), ipiv(n), A(3, s%H))
     do h = 1, s%H
       call platform_receptances(s%blade, h*omega, r(h), error)
@@ -239,8 +241,8 @@ contains
     end if
     q%omega = omega
     gs = max(abs(q%P(3, 1)), tiny(1.0_wp))
-    call pack(y)
-    call scales(sc)
+    call platform_pack(s%u, q%P0, q%P, y)
+    call platform_scales(s%u, gs, sc)
     call residual(y, R0, error)
     if (allocated(error)) return
     rn = norm2(R0/sc)
@@ -289,97 +291,17 @@ contains
 
   contains
 
-    pure logical function active(hh, c)
-      integer, intent(in) :: hh, c
-      if (hh == 0) then
-        active = c == 3
-      else
-        active = c /= 2 .or. s%v_free
-      end if
-    end function active
-
-    subroutine scales(sv)
-      real(wp), intent(out) :: sv(:)
-      integer :: i, hh, c
-      i = 0
-      do hh = merge(1, 0, s%H == 1), s%H
-        do c = 1, 3
-          if (.not. active(hh, c)) cycle
-          i = i + 1
-          sv(i) = gs*merge(s%lever, 1.0_wp, c < 3)
-          if (hh > 0) then
-            i = i + 1
-            sv(i) = sv(i-1)
-          end if
-        end do
-      end do
-    end subroutine scales
-
-    subroutine pack(yv)
-      real(wp), intent(out) :: yv(:)
-      integer :: i, hh, c
-      i = 0
-      do hh = merge(1, 0, s%H == 1), s%H
-        do c = 1, 3
-          if (.not. active(hh, c)) cycle
-          i = i + 1
-          if (hh == 0) then
-            yv(i) = q%P0
-          else
-            yv(i) = real(q%P(c, hh), wp)
-            i = i + 1
-            yv(i) = aimag(q%P(c, hh))
-          end if
-        end do
-      end do
-    end subroutine pack
-
     subroutine residual(yv, Rv, err)
       real(wp), intent(in) :: yv(:)
       real(wp), intent(out) :: Rv(:)
       type(error_type), allocatable, intent(out) :: err
-      complex(wp) :: z, HA(3)
-      real(wp) :: HA0(3)
-      integer :: i, hh, c
-      i = 0
-      q%P0 = 0
-      do hh = merge(1, 0, s%H == 1), s%H
-        do c = 1, 3
-          if (.not. active(hh, c)) then
-            if (hh > 0) q%P(c, hh) = 0
-            cycle
-          end if
-          i = i + 1
-          if (hh == 0) then
-            q%P0 = yv(i)
-          else
-            q%P(c, hh) = cmplx(yv(i), yv(i+1), wp)
-            i = i + 1
-          end if
-        end do
-      end do
+      call platform_unpack(s%u, yv, q%P0, q%P)
       call wave_aft(s%geo, s%CF, s%phi, [0.0_wp, 0.0_wp, q%P0], q%P, s%settings, A0, A, err)
       s%traces = s%traces + 1
       Rv = 0
       if (allocated(err)) return
-      i = 0
-      do hh = merge(1, 0, s%H == 1), s%H
-        if (hh > 0) HA = matmul(r(hh)%pp, A(:, hh))
-        if (hh == 0) HA0 = real(matmul(s%r0%pp, cmplx(A0 - s%A_ref, 0.0_wp, wp)), wp)
-        do c = 1, 3
-          if (.not. active(hh, c)) cycle
-          i = i + 1
-          if (hh == 0) then
-            Rv(i) = q%P0 + HA0(3)
-          else
-            z = q%P(c, hh) + HA(c)
-            if (hh == 1) z = z - r(1)%pE(c)*F_E
-            Rv(i) = real(z, wp)
-            i = i + 1
-            Rv(i) = aimag(z)
-          end if
-        end do
-      end do
+      call platform_balance(s%u, r, s%r0, q%P0, q%P, A0, A, s%A_ref, &
+        & cmplx(F_E, 0.0_wp, wp), Rv)
     end subroutine residual
   end subroutine solve
 end module udmap_baseline_wave

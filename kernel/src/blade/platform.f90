@@ -13,6 +13,8 @@ module udmap_blade_platform
   implicit none
   private
   public :: platform_receptances_type, platform_receptances, platform_rows, has_platform
+  public :: platform_unknowns_type, platform_active, platform_count, platform_scales, &
+    & platform_pack, platform_unpack, platform_balance
 
   !> Receptances at one frequency: pp(a,b) between platform coordinates (u, v, gamma), pE(a)
   !> between coordinate a and E, sp(b) and sE from a unit force to the stress, EE at E.
@@ -22,7 +24,149 @@ module udmap_blade_platform
     complex(wp) :: dpp(3,3) = 0, dpE(3) = 0
   end type platform_receptances_type
 
+  !> The unknowns of the platform's harmonic balance (PHYSICS.md 2.6): harmonics 1 (H = 1) or
+  !> 0..H, coordinates c = 1 (u_P), 2 (v_P, when the blade has it), 3 (gamma_P); at h = 0 only
+  !> Gamma_0 (the static translations are shared by the two platforms of a damper and drop out);
+  !> Gamma_1 is left out when it is held fixed (the amplitude layers). Each complex harmonic is
+  !> two real unknowns (real part, imaginary part), in the order h, c.
+  type :: platform_unknowns_type
+    integer :: H = 1
+    logical :: v_free = .false., gamma1_fixed = .true.
+    !> Length that scales translations to rotations [m].
+    real(wp) :: lever = 1
+  end type platform_unknowns_type
+
 contains
+
+  pure logical function platform_active(u, h, c)
+    type(platform_unknowns_type), intent(in) :: u
+    integer, intent(in) :: h, c
+    if (h == 0) then
+      platform_active = c == 3
+    else if (c == 2) then
+      platform_active = u%v_free
+    else
+      platform_active = .not. (h == 1 .and. c == 3 .and. u%gamma1_fixed)
+    end if
+  end function platform_active
+
+  !> Number of real unknowns.
+  pure integer function platform_count(u)
+    type(platform_unknowns_type), intent(in) :: u
+    integer :: h, c
+    platform_count = 0
+    do h = merge(1, 0, u%H == 1), u%H
+      do c = 1, 3
+        if (platform_active(u, h, c)) platform_count = platform_count + merge(1, 2, h == 0)
+      end do
+    end do
+  end function platform_count
+
+  !> Scales of the unknowns: rotations by gscale [rad], translations by gscale times the lever.
+  pure subroutine platform_scales(u, gscale, sc)
+    type(platform_unknowns_type), intent(in) :: u
+    real(wp), intent(in) :: gscale
+    real(wp), intent(out) :: sc(:)
+    integer :: i, h, c
+    i = 0
+    do h = merge(1, 0, u%H == 1), u%H
+      do c = 1, 3
+        if (.not. platform_active(u, h, c)) cycle
+        i = i + 1
+        sc(i) = gscale*merge(u%lever, 1.0_wp, c < 3)
+        if (h > 0) then
+          i = i + 1
+          sc(i) = sc(i-1)
+        end if
+      end do
+    end do
+  end subroutine platform_scales
+
+  !> The unknowns x of the static Gamma_0 (P0g) and the harmonics P(3, H).
+  pure subroutine platform_pack(u, P0g, P, x)
+    type(platform_unknowns_type), intent(in) :: u
+    real(wp), intent(in) :: P0g
+    complex(wp), intent(in) :: P(:, :)
+    real(wp), intent(out) :: x(:)
+    integer :: i, h, c
+    i = 0
+    do h = merge(1, 0, u%H == 1), u%H
+      do c = 1, 3
+        if (.not. platform_active(u, h, c)) cycle
+        i = i + 1
+        if (h == 0) then
+          x(i) = P0g
+        else
+          x(i) = real(P(c, h), wp)
+          i = i + 1
+          x(i) = aimag(P(c, h))
+        end if
+      end do
+    end do
+  end subroutine platform_pack
+
+  !> Gamma_0 and the harmonics from x; the inactive ones are 0, except a fixed Gamma_1.
+  pure subroutine platform_unpack(u, x, P0g, P)
+    type(platform_unknowns_type), intent(in) :: u
+    real(wp), intent(in) :: x(:)
+    real(wp), intent(out) :: P0g
+    complex(wp), intent(inout) :: P(:, :)
+    integer :: i, h, c
+    i = 0
+    P0g = 0
+    do h = merge(1, 0, u%H == 1), u%H
+      do c = 1, 3
+        if (.not. platform_active(u, h, c)) then
+          if (h > 0 .and. .not. (h == 1 .and. c == 3)) P(c, h) = 0
+          cycle
+        end if
+        i = i + 1
+        if (h == 0) then
+          P0g = x(i)
+        else
+          P(c, h) = cmplx(x(i), x(i+1), wp)
+          i = i + 1
+        end if
+      end do
+    end do
+  end subroutine platform_unpack
+
+  !> The condensed balance of the active rows, blade 0 with the damper's restoring action
+  !> (A0, A(3, H)) and the force F [N] at E:
+  !>   R_h = p_h + H_pp(h omega) A_h - delta_h1 H_pE(omega) F   (h >= 1),
+  !>   R_0 = Gamma_0 + [H_pp(0) (A_0 - A_ref)]_gamma,
+  !> rh(h) the receptances at h omega, r0 the static ones, A_ref the loaded damper at rest.
+  pure subroutine platform_balance(u, rh, r0, P0g, P, A0, A, A_ref, F, res)
+    type(platform_unknowns_type), intent(in) :: u
+    type(platform_receptances_type), intent(in) :: rh(:), r0
+    real(wp), intent(in) :: P0g, A0(3), A_ref(3)
+    complex(wp), intent(in) :: P(:, :), A(:, :), F
+    real(wp), intent(out) :: res(:)
+    complex(wp) :: z, HA(3)
+    real(wp) :: HA0(3)
+    integer :: i, h, c
+    i = 0
+    do h = merge(1, 0, u%H == 1), u%H
+      if (h > 0) then
+        HA = matmul(rh(h)%pp, A(:, h))
+      else
+        HA0 = real(matmul(r0%pp, cmplx(A0 - A_ref, 0.0_wp, wp)), wp)
+      end if
+      do c = 1, 3
+        if (.not. platform_active(u, h, c)) cycle
+        i = i + 1
+        if (h == 0) then
+          res(i) = P0g + HA0(3)
+        else
+          z = P(c, h) + HA(c)
+          if (h == 1) z = z - rh(1)%pE(c)*F
+          res(i) = real(z, wp)
+          i = i + 1
+          res(i) = aimag(z)
+        end if
+      end do
+    end do
+  end subroutine platform_balance
 
   !> True if the blade knows its platform translations (traveling waves need them).
   pure logical function has_platform(blade)

@@ -18,7 +18,9 @@ module udmap_mapping_traveling_layer
   use udmap_core_lapack, only: dgetrf, dgetrs
   use udmap_core_root_finding, only: brent_type, brent_start, brent_next, brent_update
   use udmap_blade_type, only: blade_type
-  use udmap_blade_platform, only: platform_receptances_type, platform_receptances
+  use udmap_blade_platform, only: platform_receptances_type, platform_receptances, &
+    & platform_unknowns_type, platform_active, platform_count, platform_scales, platform_pack, &
+    & platform_unpack, platform_balance
   use udmap_damper_tracer_core, only: damper_geometry_type
   use udmap_contact_element_wave, only: wave_aft, wave_settings_type, wave_result_type, &
     & wave_static_action
@@ -39,10 +41,8 @@ module udmap_mapping_traveling_layer
     real(wp) :: CF = 0, phi = 0
     !> Harmonics: 1 (harmonic 1 only) or H > 1 (0..H).
     integer :: H = 1
-    !> The radial translation is a DOF of the blade (else held).
-    logical :: v_free = .false.
-    !> Length that scales translations to rotations (largest lever arm of a contact) [m].
-    real(wp) :: lever = 1
+    !> The unknowns of a layer: the platform's harmonics but Gamma_1.
+    type(platform_unknowns_type) :: u
     !> Static action of the loaded damper on blade 0 (the blade's reference state).
     real(wp) :: A_ref(3) = 0
     !> Static platform receptances (for Gamma_0).
@@ -101,24 +101,12 @@ contains
         & "are unknown: give blade.u_dof (matrices) or blade.platform.tangent (fe)", UDMAP_EINPUT)
       return
     end if
-    tw%v_free = any(blade%platform_uv(:, 2) /= 0)
-    tw%lever = max(maxval(abs(geo%cn)), maxval(abs(geo%ct)), tiny(1.0_wp))
+    tw%u = platform_unknowns_type(H=H, v_free=any(blade%platform_uv(:, 2) /= 0), &
+      & gamma1_fixed=.true., lever=max(maxval(abs(geo%cn)), maxval(abs(geo%ct)), tiny(1.0_wp)))
     call wave_static_action(geo, CF, tw%A_ref, error)
     if (allocated(error)) return
     if (H > 1) call platform_receptances(blade, 0.0_wp, tw%r0, error)
   end subroutine new_traveling
-
-  !> Number of real unknowns of a layer.
-  pure integer function n_unknowns(tw)
-    type(traveling_type), intent(in) :: tw
-    integer :: nt
-    nt = merge(2, 1, tw%v_free)
-    if (tw%H == 1) then
-      n_unknowns = 2*nt
-    else
-      n_unknowns = 1 + 2*nt + (tw%H - 1)*2*(nt + 1)
-    end if
-  end function n_unknowns
 
   !> Solves the layer (gamma, omega), starting from what L holds (a neighbouring solution;
   !> zeros for a cold start). Sets L%F, the harmonics, the stress and psi = d|F|^2/domega
@@ -143,7 +131,7 @@ contains
       call fatal_error(error, "traveling layer: gamma and omega must be positive", UDMAP_EINPUT)
       return
     end if
-    n = n_unknowns(tw)
+    n = platform_count(tw%u)
     if (.not. allocated(L%P)) then
       allocate(L%P(3, tw%H), L%A(3, tw%H), L%sigma(tw%H), L%uE(tw%H))
       L%P = 0
@@ -162,7 +150,7 @@ contains
       if (allocated(error)) return
     end do
     allocate(x(n), R0(n), Rt(n), dx(n), xt(n), sc(n), ipiv(n), Rw(n))
-    call scales(sc)
+    call platform_scales(tw%u, gamma, sc)
     do attempt = 1, 2
       if (attempt == 2) then
         ! a warm start that led Newton astray: the cold start decides
@@ -170,7 +158,7 @@ contains
         L%P0 = 0
         L%J_valid = .false.
       end if
-      call pack(x)
+      call platform_pack(tw%u, L%P0(3), L%P, x)
       call residual(x, R0, F0, error)
       if (allocated(error)) return
       rn = wnorm(R0)
@@ -278,84 +266,13 @@ contains
         & " rad: the Jacobian of the platform's harmonic balance is singular", UDMAP_ENUMERIC)
     end subroutine jacobian
 
-    !> Unknown scales: translations by gamma times the lever arm, rotations by gamma.
-    subroutine scales(s)
-      real(wp), intent(out) :: s(:)
-      integer :: i, hh, c
-      i = 0
-      do hh = merge(1, 0, tw%H == 1), tw%H
-        do c = 1, 3
-          if (.not. active(hh, c)) cycle
-          i = i + 1
-          s(i) = gamma*merge(tw%lever, 1.0_wp, c < 3)
-          if (hh > 0) then
-            i = i + 1
-            s(i) = s(i-1)
-          end if
-        end do
-      end do
-    end subroutine scales
-
-    pure logical function active(hh, c)
-      integer, intent(in) :: hh, c
-      if (hh == 0) then
-        active = c == 3
-      else if (c == 2) then
-        active = tw%v_free
-      else
-        active = .not. (hh == 1 .and. c == 3)
-      end if
-    end function active
-
-    subroutine pack(xv)
-      real(wp), intent(out) :: xv(:)
-      integer :: i, hh, c
-      i = 0
-      do hh = merge(1, 0, tw%H == 1), tw%H
-        do c = 1, 3
-          if (.not. active(hh, c)) cycle
-          i = i + 1
-          if (hh == 0) then
-            xv(i) = L%P0(3)
-          else
-            xv(i) = real(L%P(c, hh), wp)
-            i = i + 1
-            xv(i) = aimag(L%P(c, hh))
-          end if
-        end do
-      end do
-    end subroutine pack
-
-    subroutine unpack(xv)
-      real(wp), intent(in) :: xv(:)
-      integer :: i, hh, c
-      i = 0
-      L%P0 = 0
-      do hh = merge(1, 0, tw%H == 1), tw%H
-        do c = 1, 3
-          if (.not. active(hh, c)) then
-            if (hh > 0) L%P(c, hh) = 0
-            cycle
-          end if
-          i = i + 1
-          if (hh == 0) then
-            L%P0(3) = xv(i)
-          else
-            L%P(c, hh) = cmplx(xv(i), xv(i+1), wp)
-            i = i + 1
-          end if
-        end do
-      end do
-      L%P(3, 1) = cmplx(gamma, 0.0_wp, wp)
-    end subroutine unpack
-
     !> Residual of the condensed harmonic balance at x and the force F (leaves A of x in L).
     subroutine residual(xv, Rv, Fv, err)
       real(wp), intent(in) :: xv(:)
       real(wp), intent(out) :: Rv(:)
       complex(wp), intent(out) :: Fv
       type(error_type), allocatable, intent(out) :: err
-      call unpack(xv)
+      call unpack_x(xv)
       call wave_aft(tw%geo, tw%CF, tw%phi, L%P0, L%P, tw%settings, L%A0, L%A, err, L%trace)
       tw%traces = tw%traces + 1
       Rv = 0
@@ -368,37 +285,25 @@ contains
       call balance(r, xv, Rv, Fv)
     end subroutine residual
 
-    !> The balance with the receptances rr and the damper action in L (at x).
+    !> The balance with the receptances rr and the damper action in L (at x); the force F
+    !> from the gamma row at h = 1, which Gamma_1 = gamma fixes.
     subroutine balance(rr, xv, Rv, Fv)
       type(platform_receptances_type), intent(in) :: rr(:)
       real(wp), intent(in) :: xv(:)
       real(wp), intent(out) :: Rv(:)
       complex(wp), intent(out) :: Fv
-      complex(wp) :: z, HA(3)
-      real(wp) :: HA0(3)
-      integer :: i, hh, c
-      call unpack(xv)
-      HA = matmul(rr(1)%pp, L%A(:, 1))
-      Fv = (gamma + HA(3))/rr(1)%pE(3)
-      i = 0
-      do hh = merge(1, 0, tw%H == 1), tw%H
-        if (hh > 0) HA = matmul(rr(hh)%pp, L%A(:, hh))
-        if (hh == 0) HA0 = real(matmul(tw%r0%pp, cmplx(L%A0 - tw%A_ref, 0.0_wp, wp)), wp)
-        do c = 1, 3
-          if (.not. active(hh, c)) cycle
-          i = i + 1
-          if (hh == 0) then
-            Rv(i) = L%P0(3) + HA0(3)
-          else
-            z = L%P(c, hh) + HA(c)
-            if (hh == 1) z = z - rr(1)%pE(c)*Fv
-            Rv(i) = real(z, wp)
-            i = i + 1
-            Rv(i) = aimag(z)
-          end if
-        end do
-      end do
+      call unpack_x(xv)
+      Fv = (gamma + sum(rr(1)%pp(3, :)*L%A(:, 1)))/rr(1)%pE(3)
+      call platform_balance(tw%u, rr, tw%r0, L%P0(3), L%P, L%A0, L%A, tw%A_ref, Fv, Rv)
     end subroutine balance
+
+    !> Gamma_0 and the harmonics of x into L, Gamma_1 = gamma.
+    subroutine unpack_x(xv)
+      real(wp), intent(in) :: xv(:)
+      L%P0 = 0
+      call platform_unpack(tw%u, xv, L%P0(3), L%P)
+      L%P(3, 1) = cmplx(gamma, 0.0_wp, wp)
+    end subroutine unpack_x
 
     !> d/domega at fixed x of the balance (Rw) and of the force (Fw), with the action in L
     !> and F in L%F... from the receptances rr and their derivatives (harmonic h: h H'(h omega)).
@@ -414,7 +319,7 @@ contains
       do hh = merge(1, 0, tw%H == 1), tw%H
         if (hh > 0) dHA = hh*matmul(rr(hh)%dpp, L%A(:, hh))
         do c = 1, 3
-          if (.not. active(hh, c)) cycle
+          if (.not. platform_active(tw%u, hh, c)) cycle
           i = i + 1
           if (hh == 0) then
             Rw_(i) = 0
