@@ -8,12 +8,14 @@ module udmap_api_c_blade
   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
   use udmap_core_kinds, only: wp, pi
   use udmap_core_error, only: error_type, fatal_error, UDMAP_EINPUT, UDMAP_EPHYSICS
+  use udmap_core_strings, only: itoa
   use udmap_api_c_support, only: set_error, clear_error, check_handle, check_input, take_handle, &
     & handle_slot, indexed_name, c_string, put_out, report_error
   ! udmap_beam_params and its conversion, generated from kernel/parameters.toml
   use udmap_api_c_parameters, only: c_beam_params, beam_from_c
   use udmap_blade_type, only: blade_type, receptances_type, new_beam_blade, layer_response
   use udmap_blade_io_matrices, only: read_matrices_blade, export_blade
+  use udmap_blade_platform, only: set_platform_translations, platform_translations_known
   implicit none
   private
   public :: c_beam_params, beam_from_c
@@ -100,6 +102,66 @@ contains
     end if
     stat = set_error(error, err)
   end function udmap_blade_get_size
+
+  !> int udmap_blade_set_platform_rows(udmap_error, udmap_blade, int ndof, const double *u_row,
+  !>   const double *v_row): the platform translations u_P = u_row.q, v_P = v_row.q
+  !>   (PHYSICS.md 2.6); v_row NULL: v_P held.
+  function udmap_blade_set_platform_rows(error, blade, ndof, u_row, v_row) result(stat) &
+      & bind(C, name="udmap_blade_set_platform_rows")
+    type(c_ptr), value :: error, blade, u_row, v_row
+    integer(c_int), value :: ndof
+    integer(c_int) :: stat
+    type(blade_type), pointer :: b
+    real(c_double), pointer :: u(:), v(:)
+    type(error_type), allocatable :: err
+    call blade_from_handle(error, blade, b, err)
+    call check_handle(u_row, "u_row", err)
+    if (.not.allocated(err)) call check_input(ndof == b%ndof, "ndof must be the blade's "// &
+      & "number of DOFs, "//itoa(b%ndof)//", got "//itoa(int(ndof)), err)
+    if (.not.allocated(err)) then
+      call c_f_pointer(u_row, u, [ndof])
+      if (c_associated(v_row)) then
+        call c_f_pointer(v_row, v, [ndof])
+        call set_platform_translations(b, real(u, wp), err, real(v, wp))
+      else
+        call set_platform_translations(b, real(u, wp), err)
+      end if
+    end if
+    stat = set_error(error, err)
+  end function udmap_blade_set_platform_rows
+
+  !> int udmap_blade_get_platform_rows(udmap_error, udmap_blade, int ndof, double *u_row,
+  !>   double *v_row, int *known): the rows of the platform translations (zeros and known = 0
+  !>   when the blade does not know them).
+  function udmap_blade_get_platform_rows(error, blade, ndof, u_row, v_row, known) result(stat) &
+      & bind(C, name="udmap_blade_get_platform_rows")
+    type(c_ptr), value :: error, blade, u_row, v_row, known
+    integer(c_int), value :: ndof
+    integer(c_int) :: stat
+    type(blade_type), pointer :: b
+    real(c_double), pointer :: u(:), v(:)
+    type(error_type), allocatable :: err
+    call blade_from_handle(error, blade, b, err)
+    call check_handle(u_row, "u_row", err)
+    call check_handle(v_row, "v_row", err)
+    call check_handle(known, "known", err)
+    if (.not.allocated(err)) call check_input(ndof == b%ndof, "ndof must be the blade's "// &
+      & "number of DOFs, "//itoa(b%ndof)//", got "//itoa(int(ndof)), err)
+    if (.not.allocated(err)) then
+      call c_f_pointer(u_row, u, [ndof])
+      call c_f_pointer(v_row, v, [ndof])
+      if (platform_translations_known(b)) then
+        u = real(b%platform_uv(:, 1), c_double)
+        v = real(b%platform_uv(:, 2), c_double)
+        call put_out(known, 1)
+      else
+        u = 0
+        v = 0
+        call put_out(known, 0)
+      end if
+    end if
+    stat = set_error(error, err)
+  end function udmap_blade_get_platform_rows
 
   !> int udmap_blade_natural_frequencies(udmap_error, udmap_blade, int nmodes, double *f_hz)
   function udmap_blade_natural_frequencies(error, blade, nmodes, f_hz) result(stat) &
