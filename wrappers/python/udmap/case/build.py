@@ -11,6 +11,7 @@ from ..hbm import Contact
 from ..model import Model
 from .load import Case
 from .schema import EIGEN_METHODS, flat_params
+from .traveling import wave_of
 
 ASYMMETRIC_KEYS = ("CF", "mu", "pitch", "y_P", "beta_L_deg", "beta_R_deg", "flat_points",
                    "curved_point", "kn_flat", "kt_flat", "kn_curved", "kt_curved")
@@ -27,7 +28,8 @@ def build_blade(case: Case) -> Blade:
     if b["kind"] == "beam":
         return Blade.beam(**beam_params(b))
     return Blade.matrices(b["M"], b["K"], b["gamma_dof"], b["exc_dof"], zeta=b["zeta"],
-                          C=b.get("C"), stress_K=b.get("stress_K"), stress_M=b.get("stress_M"))
+                          C=b.get("C"), stress_K=b.get("stress_K"), stress_M=b.get("stress_M"),
+                          u_dof=b.get("u_dof"), v_dof=b.get("v_dof"))
 
 
 def damper_from_section(d: dict) -> Damper:
@@ -70,7 +72,8 @@ def build_contact(case: Case) -> Contact:
 
 
 def build_model(case: Case, blade: Blade | None = None, damper: Damper | None = None) -> Model:
-    """The kernel model (blade + damper over the band) of a case."""
+    """The kernel model (blade + damper over the band) of a case, at its interblade phase
+    (PHYSICS.md 2.6, :mod:`udmap.case.traveling`)."""
     a = case.analysis
     blade = blade if blade is not None else build_blade(case)
     damper = damper if damper is not None else build_damper(case)
@@ -78,4 +81,4 @@ def build_model(case: Case, blade: Blade | None = None, damper: Damper | None = 
                  rtol=a["rtol"], grid_per_decade=a["grid_per_decade"],
                  eigen_method=EIGEN_METHODS[a["eigen_method"]], dense_max=a["dense_max"],
                  sweep_points=a["sweep_points"], harmonics=a["harmonics"],
-                 harmonic_tol=a["harmonic_tol"])
+                 harmonic_tol=a["harmonic_tol"], ibpa_deg=wave_of(a).ibpa_deg)

@@ -23,6 +23,7 @@ UNITS = {
     "k_im_minus": "N m/rad", "k_re_plus": "N m/rad", "k_im_plus": "N m/rad",
     "M_max": "N m", "M_min": "N m",
     "seconds": "s",
+    "ibpa_deg": "deg",
 }
 
 #: Readable tables show stresses in MPa (JSON and CSV keep Pa).
