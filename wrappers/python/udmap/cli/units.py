@@ -23,7 +23,9 @@ UNITS = {
     "k_im_minus": "N m/rad", "k_re_plus": "N m/rad", "k_im_plus": "N m/rad",
     "M_max": "N m", "M_min": "N m",
     "seconds": "s",
-    "ibpa_deg": "deg",
+    # the traveling wave (PHYSICS.md 2.6): the phase in degrees, as its name says; the wheel's
+    # counts as the dimensionless 1
+    "ibpa_deg": "deg", "engine_order": "1", "blades": "1",
 }
 
 #: Readable tables show stresses in MPa (JSON and CSV keep Pa).
