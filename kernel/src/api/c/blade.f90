@@ -111,17 +111,12 @@ contains
     type(c_ptr), value :: error, blade, u_row, v_row
     integer(c_int), value :: ndof
     integer(c_int) :: stat
-    type(blade_type), pointer :: b
-    real(c_double), pointer :: u(:), v(:)
     type(error_type), allocatable :: err
-    call blade_from_handle(error, blade, b, err)
-    call check_handle(u_row, "u_row", err)
-    if (.not.allocated(err)) call check_input(ndof == b%ndof, "ndof must be the blade's "// &
-      & "number of DOFs, "//itoa(b%ndof)//", got "//itoa(int(ndof)), err)
+    real(c_double), pointer :: u(:), v(:)
+    type(blade_type), pointer :: b
+    call rows_from_handles(error, blade, ndof, u_row, v_row, .false., b, u, v, err)
     if (.not.allocated(err)) then
-      call c_f_pointer(u_row, u, [ndof])
-      if (c_associated(v_row)) then
-        call c_f_pointer(v_row, v, [ndof])
+      if (associated(v)) then
         call set_platform_translations(b, real(u, wp), err, real(v, wp))
       else
         call set_platform_translations(b, real(u, wp), err)
@@ -138,27 +133,19 @@ contains
     type(c_ptr), value :: error, blade, u_row, v_row, known
     integer(c_int), value :: ndof
     integer(c_int) :: stat
-    type(blade_type), pointer :: b
-    real(c_double), pointer :: u(:), v(:)
     type(error_type), allocatable :: err
-    call blade_from_handle(error, blade, b, err)
-    call check_handle(u_row, "u_row", err)
-    call check_handle(v_row, "v_row", err)
+    real(c_double), pointer :: u(:), v(:)
+    type(blade_type), pointer :: b
+    call rows_from_handles(error, blade, ndof, u_row, v_row, .true., b, u, v, err)
     call check_handle(known, "known", err)
-    if (.not.allocated(err)) call check_input(ndof == b%ndof, "ndof must be the blade's "// &
-      & "number of DOFs, "//itoa(b%ndof)//", got "//itoa(int(ndof)), err)
     if (.not.allocated(err)) then
-      call c_f_pointer(u_row, u, [ndof])
-      call c_f_pointer(v_row, v, [ndof])
+      u = 0
+      v = 0
       if (platform_translations_known(b)) then
         u = real(b%platform_uv(:, 1), c_double)
         v = real(b%platform_uv(:, 2), c_double)
-        call put_out(known, 1)
-      else
-        u = 0
-        v = 0
-        call put_out(known, 0)
       end if
+      call put_out(known, merge(1, 0, platform_translations_known(b)))
     end if
     stat = set_error(error, err)
   end function udmap_blade_get_platform_rows
@@ -283,6 +270,28 @@ contains
     b => null()
     if (.not.allocated(err)) call c_f_pointer(blade, b)
   end subroutine blade_from_handle
+
+  !> The checks of the platform rows' arguments (blade, u_row, v_row unless it may be NULL,
+  !> ndof the blade's) and the rows as arrays (v null when v_row is NULL).
+  subroutine rows_from_handles(error, blade, ndof, u_row, v_row, v_needed, b, u, v, err)
+    type(c_ptr), intent(in) :: error, blade, u_row, v_row
+    integer(c_int), intent(in) :: ndof
+    logical, intent(in) :: v_needed
+    type(blade_type), pointer, intent(out) :: b
+    real(c_double), pointer, intent(out) :: u(:), v(:)
+    type(error_type), allocatable, intent(out) :: err
+    u => null()
+    v => null()
+    call blade_from_handle(error, blade, b, err)
+    call check_handle(u_row, "u_row", err)
+    if (v_needed) call check_handle(v_row, "v_row", err)
+    if (allocated(err)) return
+    call check_input(ndof == b%ndof, "ndof must be the blade's number of DOFs, "// &
+      & itoa(b%ndof)//", got "//itoa(int(ndof)), err)
+    if (allocated(err)) return
+    call c_f_pointer(u_row, u, [ndof])
+    if (c_associated(v_row)) call c_f_pointer(v_row, v, [ndof])
+  end subroutine rows_from_handles
 
   !> Gives a new blade to the caller's handle, or frees it on error.
   subroutine hand_over(b, err, out)
