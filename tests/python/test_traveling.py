@@ -136,6 +136,26 @@ def test_the_doe_takes_the_wave(write_case, tmp_path, analyses, capsys):
     assert status == 2 and "--ibpa and --engine-order exclude each other" in err
 
 
+def test_doe_designs_whose_phase_needs_u_dof(exported, tmp_path, analyses):
+    # both ends of engine_order=0:4 on 4 blades are in phase, the designs between are not: a
+    # matrices blade without u_dof fails those designs as input errors, naming blade.u_dof
+    data = json.loads(CASE.read_text())
+    data["blade"] = {"kind": "matrices", "M": str(exported / "M.mtx"),
+                     "K": str(exported / "K.mtx"), "gamma_dof": 16, "exc_dof": 39}
+    data["analysis"]["blades"] = 4
+    path = tmp_path / "m.json"
+    path.write_text(json.dumps(data))
+    out = tmp_path / "m.csv"
+    summary = run_doe(load_case(path), ["engine_order=0:4"], 5, out, method="grid", workers=1,
+                      progress=False)
+    assert summary["status"] == {"ok": 2, "input": 3}
+    with open(out, newline="") as f:
+        rows = {int(float(r["engine_order"])): r for r in csv.DictReader(f)}
+    assert all(rows[eo]["status"] == "input" and "blade.u_dof" in rows[eo]["message"]
+               for eo in (1, 2, 3))
+    assert analyses == [0.0, 0.0]
+
+
 def test_ibpa_deg_as_a_doe_variable(write_case, tmp_path, analyses):
     summary = run_doe(load_case(write_case()), ["ibpa_deg=-90:90"], 3, tmp_path / "phi.csv",
                       method="grid", workers=1, progress=False)

@@ -11,7 +11,7 @@ from ..hbm import Contact
 from ..model import Model
 from .load import Case
 from .schema import EIGEN_METHODS, flat_params
-from .traveling import wave_of
+from .traveling import check_case, wave_of
 
 ASYMMETRIC_KEYS = ("CF", "mu", "pitch", "y_P", "beta_L_deg", "beta_R_deg", "flat_points",
                    "curved_point", "kn_flat", "kt_flat", "kn_curved", "kt_curved")
@@ -75,6 +75,7 @@ def build_model(case: Case, blade: Blade | None = None, damper: Damper | None = 
     """The kernel model (blade + damper over the band) of a case, at its interblade phase
     (PHYSICS.md 2.6, :mod:`udmap.case.traveling`)."""
     a = case.analysis
+    check_case(case)    # a design of a DOE is not validated as a whole: its phase is checked here
     blade = blade if blade is not None else build_blade(case)
     damper = damper if damper is not None else build_damper(case)
     return Model(blade, damper, a["f_min"], a["f_max"], sigma_all=a["sigma_all"],
