@@ -287,6 +287,8 @@ def test_matrices_case_u_dof(exported, tmp_path, write_case, capsys):
     for fields, text in (({"u_dof": 16}, "blade.u_dof must differ from blade.gamma_dof"),
                          ({"v_dof": 15}, "blade.v_dof must differ from blade.u_dof"),
                          ({"u_dof": 0}, "blade.u_dof must be an integer in [1, "),
+                         ({"u_dof": 65}, "blade.u_dof must be a DOF number from 1 to 64"),
+                         ({"v_dof": 99}, "blade.v_dof must be a DOF number from 1 to 64"),
                          ({"u_dof": 1.5}, "blade.u_dof must be an integer")):
         bad = json.loads(json.dumps(data))
         bad["blade"].update(fields)

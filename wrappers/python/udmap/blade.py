@@ -160,22 +160,25 @@ class Blade:
                                                         vptr))
 
     def set_platform_dofs(self, u_dof: int, v_dof: "int | None" = None,
-                          gamma_dof: "int | None" = None) -> None:
+                          gamma_dof: "int | None" = None, prefix: str = "") -> None:
         """The platform translations as single DOFs (1-based): u_P = q[u_dof], v_P = q[v_dof]
         (None: held). Each must be a DOF of the blade, the two must differ and differ from
-        ``gamma_dof`` when given. Errors name ``u_dof`` or ``v_dof``."""
+        ``gamma_dof`` when given. Errors name ``u_dof`` or ``v_dof`` (after ``prefix``,
+        e.g. ``blade.``)."""
         n = self.ndof
         dofs = {"u_dof": u_dof, "v_dof": v_dof}
         for name, dof in dofs.items():
             if dof is None:
                 continue
             if isinstance(dof, bool) or int(dof) != dof or not 1 <= int(dof) <= n:
-                raise InputError(f"{name} must be a DOF number from 1 to {n}, got {dof!r}")
+                raise InputError(f"{prefix}{name} must be a DOF number from 1 to {n}, got "
+                                 f"{dof!r}")
             if gamma_dof is not None and int(dof) == int(gamma_dof):
-                raise InputError(f"{name} must differ from gamma_dof ({int(gamma_dof)}): the "
-                                 "platform rotation is not a translation")
+                raise InputError(f"{prefix}{name} must differ from {prefix}gamma_dof "
+                                 f"({int(gamma_dof)}): the platform rotation is not a "
+                                 "translation")
         if v_dof is not None and int(v_dof) == int(u_dof):
-            raise InputError(f"v_dof must differ from u_dof ({int(u_dof)})")
+            raise InputError(f"{prefix}v_dof must differ from {prefix}u_dof ({int(u_dof)})")
         u = np.zeros(n)
         u[int(u_dof) - 1] = 1.0
         v = None

@@ -27,9 +27,12 @@ def build_blade(case: Case) -> Blade:
     b = case.blade
     if b["kind"] == "beam":
         return Blade.beam(**beam_params(b))
-    return Blade.matrices(b["M"], b["K"], b["gamma_dof"], b["exc_dof"], zeta=b["zeta"],
-                          C=b.get("C"), stress_K=b.get("stress_K"), stress_M=b.get("stress_M"),
-                          u_dof=b.get("u_dof"), v_dof=b.get("v_dof"))
+    blade = Blade.matrices(b["M"], b["K"], b["gamma_dof"], b["exc_dof"], zeta=b["zeta"],
+                           C=b.get("C"), stress_K=b.get("stress_K"), stress_M=b.get("stress_M"))
+    if b.get("u_dof") is not None:      # the platform translations (PHYSICS.md 2.6)
+        blade.set_platform_dofs(b["u_dof"], b.get("v_dof"), gamma_dof=b["gamma_dof"],
+                                prefix="blade.")
+    return blade
 
 
 def damper_from_section(d: dict) -> Damper:

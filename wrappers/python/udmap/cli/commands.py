@@ -27,9 +27,12 @@ def _with_harmonics(case, args):
     return case
 
 
-def _load(args):
-    """The command's case with --harmonics and the traveling wave's options applied."""
-    case = _with_harmonics(load_case(args.case), args)
+def _load(args, harmonics: bool = True):
+    """The command's case with --harmonics (the mapping's, when `harmonics`) and the traveling
+    wave's options applied."""
+    case = load_case(args.case)
+    if harmonics:
+        _with_harmonics(case, args)
     apply_options(case, args.blades, args.engine_order, args.ibpa)
     return case
 
@@ -209,7 +212,7 @@ def cmd_curves(args) -> None:
 
 def cmd_hbm(args) -> None:
     paths = check_out(args, "hbm")
-    case = _load(args)
+    case = _load(args, harmonics=False)
     require_in_phase(case, "the standard method (hbm)")
     blade = build_blade(case)
     a = case.analysis
@@ -232,7 +235,7 @@ def cmd_hbm(args) -> None:
 
 
 def cmd_dti(args) -> None:
-    case = _load(args)
+    case = _load(args, harmonics=False)
     require_in_phase(case, "the time integration (dti)")
     blade = build_blade(case)
     a = case.analysis
