@@ -30,6 +30,7 @@ module udmap
   use udmap_blade_beam, only: beam_params_type
   use udmap_blade_type, only: blade_type, new_beam_blade, new_matrices_blade
   use udmap_blade_io_matrices, only: read_matrices_blade, export_blade
+  use udmap_blade_platform, only: set_platform_translations, platform_translations_known
   use udmap_damper_type, only: damper_type, asymmetric_params_type, new_asymmetric_damper, &
     & new_jenkins_damper, new_table_damper, stiffness_table
   use udmap_mapping_model, only: analysis_type, point_type, curve_type, model_type, new_model, &
@@ -45,7 +46,7 @@ module udmap
   public :: wp, error_type, UDMAP_OK, UDMAP_EINPUT, UDMAP_EPHYSICS, UDMAP_ENUMERIC
   ! blade (PHYSICS.md 1)
   public :: beam_params_type, blade_type, new_beam_blade, new_matrices_blade, &
-    & read_matrices_blade, export_blade
+    & read_matrices_blade, export_blade, set_platform_translations, platform_translations_known
   ! damper (PHYSICS.md 2)
   public :: asymmetric_params_type, damper_type, new_asymmetric_damper, new_jenkins_damper, &
     & new_table_damper, stiffness_table

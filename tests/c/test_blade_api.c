@@ -153,6 +153,32 @@ int main(void) {
   status = udmap_blade_get_size(err, blade, &ndof, &has_stress);
   check(status == UDMAP_OK && udmap_check_error(err) == UDMAP_OK, "a good call clears the error");
 
+  /* Platform rows (PHYSICS.md 2.6): the beam's u_P = -w_P (w_P is DOF 15), v_P held; a set
+   * replaces them, v_row NULL holds v_P; bad rows are refused and the old ones kept. */
+  double u_row[64], v_row[64], row[64];
+  int known = -1;
+  status = udmap_blade_get_platform_rows(err, blade, 64, u_row, v_row, &known);
+  int beam_ok = status == UDMAP_OK && known == 1 && u_row[14] == -1.0;
+  for (int i = 0; i < 64; i++) beam_ok = beam_ok && v_row[i] == 0.0 && (i == 14 || u_row[i] == 0.0);
+  check(beam_ok, "beam platform rows: u_P = -w_P, v_P held");
+  for (int i = 0; i < 64; i++) row[i] = 0.5 * i;
+  status = udmap_blade_set_platform_rows(err, blade, 64, row, NULL);
+  udmap_blade_get_platform_rows(err, blade, 64, u_row, v_row, &known);
+  check(status == UDMAP_OK && u_row[63] == 31.5 && v_row[63] == 0.0 && known == 1,
+        "set platform rows, v_row NULL");
+  status = udmap_blade_set_platform_rows(err, blade, 63, row, row);
+  check_error(err, status, "ndof must be the blade's number of DOFs, 64, got 63", "rows: ndof");
+  status = udmap_blade_set_platform_rows(err, blade, 64, NULL, row);
+  check_error(err, status, "'u_row' is a NULL handle", "rows: NULL u_row");
+  row[3] = NAN;
+  status = udmap_blade_set_platform_rows(err, blade, 64, u_row, row);
+  check_error(err, status, "v_row has a non-finite entry", "rows: NaN in v_row");
+  for (int i = 0; i < 64; i++) row[i] = 0.0;
+  status = udmap_blade_set_platform_rows(err, blade, 64, row, NULL);
+  check_error(err, status, "u_row is zero", "rows: zero u_row");
+  udmap_blade_get_platform_rows(err, blade, 64, u_row, v_row, &known);
+  check(u_row[63] == 31.5, "rows kept after a refused set");
+
   udmap_delete_blade(&blade);
   udmap_delete_blade(&blade); /* NULL handle: nothing */
   udmap_delete_blade(NULL);

@@ -18,6 +18,9 @@ from udmap.cli import main
 from udmap.cli.units import UNITS
 
 SI = {"N", "m", "rad", "Hz", "Pa", "N m", "N m/rad", "s"}
+# The traveling wave's fields (docs/outputs.md): ibpa_deg in degrees, the counts engine_order
+# and blades as 1.
+SI |= {"deg", "1"}
 #: JSON fields that are counts, codes or flags: no unit.
 COUNTS = {"regime", "harmonics", "branch", "part", "steps", "iterations", "aft_calls", "n_full",
           "n_reduced", "gamma_dof", "exc_dof"}

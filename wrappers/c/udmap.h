@@ -86,6 +86,17 @@ int udmap_blade_receptances(udmap_error error, udmap_blade blade, int n, const d
 int udmap_blade_layer_response(udmap_error error, udmap_blade blade, int n, const double *f_hz,
                                double k_re, double k_im, double *out);
 
+/* The platform translations of a traveling wave (PHYSICS.md 2.6) as rows of the blade's DOFs:
+ * u_P = u_row . q (circumferential, not zero) and v_P = v_row . q (radial; v_row NULL: held).
+ * ndof must be the blade's; entries finite. The beam sets them itself (u_P = -w_P); a matrices
+ * blade needs them before a model at a nonzero interblade phase is made from it. */
+int udmap_blade_set_platform_rows(udmap_error error, udmap_blade blade, int ndof,
+                                  const double *u_row, const double *v_row);
+
+/* The rows set above (ndof doubles each); *known = 0 and zero rows when the blade has none. */
+int udmap_blade_get_platform_rows(udmap_error error, udmap_blade blade, int ndof, double *u_row,
+                                  double *v_row, int *known);
+
 /* Writes M.mtx, K.mtx (and stress_K.mtx, stress_M.mtx with stress rows, C.mtx with explicit
  * damping) into the existing directory dir (Matrix Market, full precision). */
 int udmap_blade_export(udmap_error error, udmap_blade blade, const char *dir);

@@ -130,6 +130,10 @@ blade_receptances = declare("udmap_blade_receptances", [vp, vp, _ci, c_double_p,
 blade_layer_response = declare("udmap_blade_layer_response",
                                [vp, vp, _ci, c_double_p, _cd, _cd, c_double_p])
 blade_export = declare("udmap_blade_export", [vp, vp, ctypes.c_char_p])
+blade_set_platform_rows = declare("udmap_blade_set_platform_rows",
+                                  [vp, vp, _ci, c_double_p, c_double_p])
+blade_get_platform_rows = declare("udmap_blade_get_platform_rows",
+                                  [vp, vp, _ci, c_double_p, c_double_p, c_int_p])
 
 # damper: the k(gamma) face
 new_damper_asymmetric = declare("udmap_new_damper_asymmetric",

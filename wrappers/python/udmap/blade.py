@@ -66,16 +66,25 @@ class Blade:
 
     @classmethod
     def matrices(cls, M, K, gamma_dof: int, exc_dof: int, zeta: float = 0.0, C=None,
-                 stress_K=None, stress_M=None) -> "Blade":
+                 stress_K=None, stress_M=None, u_dof: "int | None" = None,
+                 v_dof: "int | None" = None) -> "Blade":
         """An imported blade (PHYSICS.md 1.2) from Matrix Market files (paths as given;
-        gamma_dof, exc_dof 1-based). Without C, damping is beta K from zeta."""
+        gamma_dof, exc_dof 1-based). Without C, damping is beta K from zeta. ``u_dof``,
+        ``v_dof`` (1-based, optional): the DOFs of the platform's circumferential and radial
+        translations, which a traveling wave needs (PHYSICS.md 2.6; see
+        :meth:`set_platform_rows`)."""
         error = ErrorHandle()
         handle = ctypes.c_void_p()
         error.check(_capi.new_blade_matrices(error.ptr, _path(M), _path(K), _path(C),
                                              int(gamma_dof),
                                   int(exc_dof), _path(stress_K), _path(stress_M), float(zeta),
                                              ctypes.byref(handle)))
-        return cls(handle, error)
+        blade = cls(handle, error)
+        if u_dof is not None:
+            blade.set_platform_dofs(u_dof, v_dof, gamma_dof=gamma_dof)
+        elif v_dof is not None:
+            raise InputError("v_dof needs u_dof (the circumferential translation)")
+        return blade
 
     def __del__(self):
         handle = getattr(self, "_handle", None)
@@ -135,6 +144,59 @@ class Blade:
         pairs = out.reshape(-1, 3, 2)
         g, s, u = ((pairs[:, j, 0] + 1j * pairs[:, j, 1]).reshape(f.shape) for j in range(3))
         return g, s, u
+
+    def set_platform_rows(self, u_row, v_row=None) -> None:
+        """Sets the platform translations of a traveling wave (PHYSICS.md 2.6) as rows over
+        the DOFs: u_P = u_row . q (circumferential), v_P = v_row . q (radial; None: held)."""
+        n = self.ndof
+        u, uptr = as_doubles(np.asarray(u_row, dtype=np.float64).ravel())
+        v, vptr = (None, None) if v_row is None else \
+            as_doubles(np.asarray(v_row, dtype=np.float64).ravel())
+        for name, row in (("u_row", u), ("v_row", v)):
+            if row is not None and row.size != n:
+                raise InputError(f"{name} must have {n} entries (one per DOF of the blade), "
+                                 f"got {row.size}")
+        self._error.check(_capi.blade_set_platform_rows(self._error.ptr, self._handle, n, uptr,
+                                                        vptr))
+
+    def set_platform_dofs(self, u_dof: int, v_dof: "int | None" = None,
+                          gamma_dof: "int | None" = None, prefix: str = "") -> None:
+        """The platform translations as single DOFs (1-based): u_P = q[u_dof], v_P = q[v_dof]
+        (None: held). Each must be a DOF of the blade, the two must differ and differ from
+        ``gamma_dof`` when given. Errors name ``u_dof`` or ``v_dof`` (after ``prefix``,
+        e.g. ``blade.``)."""
+        n = self.ndof
+        dofs = {"u_dof": u_dof, "v_dof": v_dof}
+        for name, dof in dofs.items():
+            if dof is None:
+                continue
+            if isinstance(dof, bool) or int(dof) != dof or not 1 <= int(dof) <= n:
+                raise InputError(f"{prefix}{name} must be a DOF number from 1 to {n}, got "
+                                 f"{dof!r}")
+            if gamma_dof is not None and int(dof) == int(gamma_dof):
+                raise InputError(f"{prefix}{name} must differ from {prefix}gamma_dof "
+                                 f"({int(gamma_dof)}): the platform rotation is not a "
+                                 "translation")
+        if v_dof is not None and int(v_dof) == int(u_dof):
+            raise InputError(f"{prefix}v_dof must differ from {prefix}u_dof ({int(u_dof)})")
+        u = np.zeros(n)
+        u[int(u_dof) - 1] = 1.0
+        v = None
+        if v_dof is not None:
+            v = np.zeros(n)
+            v[int(v_dof) - 1] = 1.0
+        self.set_platform_rows(u, v)
+
+    def platform_rows(self) -> "tuple[np.ndarray, np.ndarray] | None":
+        """The rows (u_row, v_row) of the platform translations, or None when the blade has
+        none (a matrices blade without u_dof)."""
+        n = self.ndof
+        u, v, known = np.zeros(n), np.zeros(n), ctypes.c_int()
+        self._error.check(_capi.blade_get_platform_rows(self._error.ptr, self._handle, n,
+                                                        _capi.doubles_ptr(u),
+                                                        _capi.doubles_ptr(v),
+                                                        ctypes.byref(known)))
+        return (u, v) if known.value else None
 
     def export(self, directory) -> None:
         """Writes M.mtx, K.mtx (C.mtx, stress_K.mtx, stress_M.mtx when present) and

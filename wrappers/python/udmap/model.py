@@ -54,8 +54,9 @@ class Model:
     bare-blade samples over the band for the response curves; ``harmonics`` 1 (the paper's
     single-harmonic method), an integer H up to 64 (harmonics 0..H in multi-harmonic layers,
     PHYSICS.md 4.1) or "auto" (H raised until the outputs change by less than
-    ``harmonic_tol``); ``ibpa_deg`` the interblade phase angle of a traveling wave
-    (PHYSICS.md 2.6; 0 in phase).
+    ``harmonic_tol``); ``ibpa_deg`` the interblade phase angle [deg] of a traveling wave
+    (PHYSICS.md 2.6; 0, the default, in phase), which needs the blade's platform translations
+    (:meth:`udmap.Blade.set_platform_rows`).
     """
 
     def __init__(self, blade, damper, f_min: float, f_max: float, sigma_all: float = 80e6,
@@ -72,8 +73,12 @@ class Model:
         a.grid_per_decade, a.eigen_method = int(grid_per_decade), int(eigen_method)
         a.dense_max, a.sweep_points = int(dense_max), int(sweep_points)
         a.harmonics, a.harmonic_tol = harmonics_code(harmonics), float(harmonic_tol)
-        a.ibpa_deg = float(ibpa_deg)
-        self.ibpa_deg = float(ibpa_deg)
+        ibpa_deg = float(ibpa_deg)
+        if not math.isfinite(ibpa_deg):
+            raise InputError(f"ibpa_deg must be a finite angle [deg], got {ibpa_deg!r}")
+        if ibpa_deg != 0.0:     # 0: the kernel's default, in phase
+            a.ibpa_deg = ibpa_deg
+        self.ibpa_deg = a.ibpa_deg
         self.f_min, self.f_max, self.sigma_all = float(f_min), float(f_max), float(sigma_all)
         self._err.check(_capi.new_model(self._err.ptr, blade.handle, damper.handle,
                                         ctypes.byref(a), ctypes.byref(self._ptr)))

@@ -17,7 +17,8 @@ from . import _capi
 from ._capi import ErrorHandle
 from .errors import InputError
 
-__all__ = ["Reduced", "platform_centred_reduction", "DEFAULT_RESIDUAL_BLOCKS"]
+__all__ = ["Reduced", "platform_centred_reduction", "DEFAULT_RESIDUAL_BLOCKS",
+           "TRANSLATION_DOFS", "platform_frame", "platform_rows", "in_platform_frame"]
 
 #: Blocks of residual (Krylov) vectors added to the fixed-interface modes by default: they
 #: carry the inertia of the modes left out, which brings the band to 1e-6 and below.
@@ -25,6 +26,11 @@ DEFAULT_RESIDUAL_BLOCKS = 3
 
 _vp = ctypes.c_void_p
 _ci = ctypes.c_int
+
+#: The reduced DOFs (1-based) of the platform's rigid translation at the reference point,
+#: u_Rx, u_Ry, u_Rz in the model's axes (the boundary DOFs are gamma_P, theta_b, theta_c, u_R,
+#: u_E, in this order, kernel/src/blade/reduce/rigid_platform.f90).
+TRANSLATION_DOFS = (4, 5, 6)
 
 _INFO_KEYS = ("f_cut", "f_check", "cut_count", "cut_found", "full_count", "full_found", "n_t",
               "n_i", "factor_entries", "n_residual")
@@ -47,6 +53,10 @@ class Reduced:
     freqs_reduced: np.ndarray
     info: dict = field(default_factory=dict)
     stress: "np.ndarray | None" = None
+    #: DOFs (1-based) of the platform's circumferential and radial translations, when the
+    #: model is in the platform's frame (:func:`in_platform_frame`).
+    u_dof: "int | None" = None
+    v_dof: "int | None" = None
 
 
 def _ints(a, name):
@@ -200,3 +210,54 @@ def platform_centred_reduction(fe, *, platform_nodes, ref_point, axis, exc_node,
     return Reduced(M=Mr, K=Kr, gamma_dof=g.value, exc_dof=e.value,
                    stress_K=Sr[0].copy() if Sr.shape[0] else None, freqs_full=ff,
                    freqs_reduced=in_band, info=info, stress=Sr if Sr.shape[0] else None)
+
+
+def platform_frame(axis, tangent) -> np.ndarray:
+    """The platform's frame (PHYSICS.md 2.6) as the columns of an orthogonal 3 x 3 matrix:
+    the circumferential direction ``t`` (``tangent`` without its component along the axis,
+    normalised), the radial ``a x t`` and the axis ``a``."""
+    a = _vec3(axis, "axis")
+    t = _vec3(tangent, "tangent")
+    if np.linalg.norm(a) == 0 or np.linalg.norm(t) == 0:
+        raise InputError("axis, tangent: must not be zero")
+    a = a / np.linalg.norm(a)
+    t = t - (t @ a) * a
+    if not np.linalg.norm(t) > 0.5 * np.linalg.norm(_vec3(tangent, "tangent")):
+        raise InputError("tangent: must be orthogonal to the axis")
+    t = t / np.linalg.norm(t)
+    return np.column_stack([t, np.cross(a, t), a])
+
+
+def platform_rows(r: int, axis, tangent) -> "tuple[np.ndarray, np.ndarray]":
+    """The rows (u_row, v_row) of a reduced model of ``r`` DOFs that give the platform's
+    circumferential and radial translations, u_P = t . u_R and v_P = (a x t) . u_R."""
+    Q = platform_frame(axis, tangent)
+    u, v = np.zeros(r), np.zeros(r)
+    k = TRANSLATION_DOFS[0] - 1
+    u[k:k + 3], v[k:k + 3] = Q[:, 0], Q[:, 1]
+    return u, v
+
+
+def in_platform_frame(red: Reduced, axis, tangent) -> Reduced:
+    """The reduced model with its platform translation DOFs turned into the platform's frame
+    (:func:`platform_frame`): q = T q', T the identity but for Q on TRANSLATION_DOFS, an exact
+    orthogonal change of coordinates (M' = T^T M T, K' = T^T K T, stress rows s' = T^T s). DOF
+    4 is then u_P, DOF 5 v_P (u_dof, v_dof), DOF 6 the axial translation."""
+    Q = platform_frame(axis, tangent)
+    k = slice(TRANSLATION_DOFS[0] - 1, TRANSLATION_DOFS[-1])
+
+    def turned(A):
+        A = np.array(A, dtype=np.float64)
+        A[:, k] = A[:, k] @ Q
+        A[k, :] = Q.T @ A[k, :]
+        return (A + A.T) / 2
+    stress = None
+    if red.stress is not None:
+        stress = np.array(red.stress, dtype=np.float64)
+        stress[:, k] = stress[:, k] @ Q
+    return Reduced(M=turned(red.M), K=turned(red.K), gamma_dof=red.gamma_dof,
+                   exc_dof=red.exc_dof,
+                   stress_K=stress[0].copy() if stress is not None else None,
+                   freqs_full=red.freqs_full, freqs_reduced=red.freqs_reduced,
+                   info=dict(red.info), stress=stress, u_dof=TRANSLATION_DOFS[0],
+                   v_dof=TRANSLATION_DOFS[1])

@@ -8,12 +8,14 @@ module udmap_api_c_blade
   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
   use udmap_core_kinds, only: wp, pi
   use udmap_core_error, only: error_type, fatal_error, UDMAP_EINPUT, UDMAP_EPHYSICS
+  use udmap_core_strings, only: itoa
   use udmap_api_c_support, only: set_error, clear_error, check_handle, check_input, take_handle, &
     & handle_slot, indexed_name, c_string, put_out, report_error
   ! udmap_beam_params and its conversion, generated from kernel/parameters.toml
   use udmap_api_c_parameters, only: c_beam_params, beam_from_c
   use udmap_blade_type, only: blade_type, receptances_type, new_beam_blade, layer_response
   use udmap_blade_io_matrices, only: read_matrices_blade, export_blade
+  use udmap_blade_platform, only: set_platform_translations, platform_translations_known
   implicit none
   private
   public :: c_beam_params, beam_from_c
@@ -100,6 +102,53 @@ contains
     end if
     stat = set_error(error, err)
   end function udmap_blade_get_size
+
+  !> int udmap_blade_set_platform_rows(udmap_error, udmap_blade, int ndof, const double *u_row,
+  !>   const double *v_row): the platform translations u_P = u_row.q, v_P = v_row.q
+  !>   (PHYSICS.md 2.6); v_row NULL: v_P held.
+  function udmap_blade_set_platform_rows(error, blade, ndof, u_row, v_row) result(stat) &
+      & bind(C, name="udmap_blade_set_platform_rows")
+    type(c_ptr), value :: error, blade, u_row, v_row
+    integer(c_int), value :: ndof
+    integer(c_int) :: stat
+    type(error_type), allocatable :: err
+    real(c_double), pointer :: u(:), v(:)
+    type(blade_type), pointer :: b
+    call rows_from_handles(error, blade, ndof, u_row, v_row, .false., b, u, v, err)
+    if (.not.allocated(err)) then
+      if (associated(v)) then
+        call set_platform_translations(b, real(u, wp), err, real(v, wp))
+      else
+        call set_platform_translations(b, real(u, wp), err)
+      end if
+    end if
+    stat = set_error(error, err)
+  end function udmap_blade_set_platform_rows
+
+  !> int udmap_blade_get_platform_rows(udmap_error, udmap_blade, int ndof, double *u_row,
+  !>   double *v_row, int *known): the rows of the platform translations (zeros and known = 0
+  !>   when the blade does not know them).
+  function udmap_blade_get_platform_rows(error, blade, ndof, u_row, v_row, known) result(stat) &
+      & bind(C, name="udmap_blade_get_platform_rows")
+    type(c_ptr), value :: error, blade, u_row, v_row, known
+    integer(c_int), value :: ndof
+    integer(c_int) :: stat
+    type(error_type), allocatable :: err
+    real(c_double), pointer :: u(:), v(:)
+    type(blade_type), pointer :: b
+    call rows_from_handles(error, blade, ndof, u_row, v_row, .true., b, u, v, err)
+    call check_handle(known, "known", err)
+    if (.not.allocated(err)) then
+      u = 0
+      v = 0
+      if (platform_translations_known(b)) then
+        u = real(b%platform_uv(:, 1), c_double)
+        v = real(b%platform_uv(:, 2), c_double)
+      end if
+      call put_out(known, merge(1, 0, platform_translations_known(b)))
+    end if
+    stat = set_error(error, err)
+  end function udmap_blade_get_platform_rows
 
   !> int udmap_blade_natural_frequencies(udmap_error, udmap_blade, int nmodes, double *f_hz)
   function udmap_blade_natural_frequencies(error, blade, nmodes, f_hz) result(stat) &
@@ -221,6 +270,28 @@ contains
     b => null()
     if (.not.allocated(err)) call c_f_pointer(blade, b)
   end subroutine blade_from_handle
+
+  !> The checks of the platform rows' arguments (blade, u_row, v_row unless it may be NULL,
+  !> ndof the blade's) and the rows as arrays (v null when v_row is NULL).
+  subroutine rows_from_handles(error, blade, ndof, u_row, v_row, v_needed, b, u, v, err)
+    type(c_ptr), intent(in) :: error, blade, u_row, v_row
+    integer(c_int), intent(in) :: ndof
+    logical, intent(in) :: v_needed
+    type(blade_type), pointer, intent(out) :: b
+    real(c_double), pointer, intent(out) :: u(:), v(:)
+    type(error_type), allocatable, intent(out) :: err
+    u => null()
+    v => null()
+    call blade_from_handle(error, blade, b, err)
+    call check_handle(u_row, "u_row", err)
+    if (v_needed) call check_handle(v_row, "v_row", err)
+    if (allocated(err)) return
+    call check_input(ndof == b%ndof, "ndof must be the blade's number of DOFs, "// &
+      & itoa(b%ndof)//", got "//itoa(int(ndof)), err)
+    if (allocated(err)) return
+    call c_f_pointer(u_row, u, [ndof])
+    if (c_associated(v_row)) call c_f_pointer(v_row, v, [ndof])
+  end subroutine rows_from_handles
 
   !> Gives a new blade to the caller's handle, or frees it on error.
   subroutine hand_over(b, err, out)

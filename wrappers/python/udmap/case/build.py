@@ -11,6 +11,7 @@ from ..hbm import Contact
 from ..model import Model
 from .load import Case
 from .schema import EIGEN_METHODS, flat_params
+from .traveling import check_case, wave_of
 
 ASYMMETRIC_KEYS = ("CF", "mu", "pitch", "y_P", "beta_L_deg", "beta_R_deg", "flat_points",
                    "curved_point", "kn_flat", "kt_flat", "kn_curved", "kt_curved")
@@ -26,8 +27,12 @@ def build_blade(case: Case) -> Blade:
     b = case.blade
     if b["kind"] == "beam":
         return Blade.beam(**beam_params(b))
-    return Blade.matrices(b["M"], b["K"], b["gamma_dof"], b["exc_dof"], zeta=b["zeta"],
-                          C=b.get("C"), stress_K=b.get("stress_K"), stress_M=b.get("stress_M"))
+    blade = Blade.matrices(b["M"], b["K"], b["gamma_dof"], b["exc_dof"], zeta=b["zeta"],
+                           C=b.get("C"), stress_K=b.get("stress_K"), stress_M=b.get("stress_M"))
+    if b.get("u_dof") is not None:      # the platform translations (PHYSICS.md 2.6)
+        blade.set_platform_dofs(b["u_dof"], b.get("v_dof"), gamma_dof=b["gamma_dof"],
+                                prefix="blade.")
+    return blade
 
 
 def damper_from_section(d: dict) -> Damper:
@@ -70,12 +75,14 @@ def build_contact(case: Case) -> Contact:
 
 
 def build_model(case: Case, blade: Blade | None = None, damper: Damper | None = None) -> Model:
-    """The kernel model (blade + damper over the band) of a case."""
+    """The kernel model (blade + damper over the band) of a case, at its interblade phase
+    (PHYSICS.md 2.6, :mod:`udmap.case.traveling`)."""
     a = case.analysis
+    check_case(case)    # a design of a DOE is not validated as a whole: its phase is checked here
     blade = blade if blade is not None else build_blade(case)
     damper = damper if damper is not None else build_damper(case)
     return Model(blade, damper, a["f_min"], a["f_max"], sigma_all=a["sigma_all"],
                  rtol=a["rtol"], grid_per_decade=a["grid_per_decade"],
                  eigen_method=EIGEN_METHODS[a["eigen_method"]], dense_max=a["dense_max"],
                  sweep_points=a["sweep_points"], harmonics=a["harmonics"],
-                 harmonic_tol=a["harmonic_tol"], ibpa_deg=a.get("ibpa_deg", 0.0))
+                 harmonic_tol=a["harmonic_tol"], ibpa_deg=wave_of(a).ibpa_deg)

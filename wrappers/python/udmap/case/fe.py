@@ -23,6 +23,7 @@ from ..errors import InputError, UdmapError
 from ..fe import FORMAT_FILES, UNITS, read_fe, read_mm, resolve_files
 from ..progress import Progress
 from .schema import Field, check_field
+from .traveling import check_tangent
 from .. import reduction
 
 CACHE_VERSION = "fe-reduction-1"
@@ -39,6 +40,8 @@ _FIELDS = ("kind", "format", "files", "units", "platform", "clamp", "excitation"
 FE_FIELDS = {
     "platform.ref_point": Field("vec3", doc="reference point of the platform rotation"),
     "platform.axis": Field("vec3", nonzero=True, doc="axis of gamma_P"),
+    "platform.tangent": Field("vec3", nonzero=True,
+                              doc="circumferential direction (traveling waves)"),
     "excitation.node": Field("node", doc="node of the excitation"),
     "excitation.direction": Field("vec3", nonzero=True, doc="direction of the excitation"),
     "stress.gauge": Field("node", doc="gauge nodes [a, b]"),
@@ -96,10 +99,14 @@ def validate_fe(blade_in: dict, base_dir: Path) -> dict:
         if key not in plat:
             raise InputError(f"blade.platform.{key}: missing field")
     out["platform"] = _node_set("blade.platform", {k: v for k, v in plat.items()
-                                                   if k not in ("ref_point", "axis")})
+                                                   if k not in ("ref_point", "axis", "tangent")})
     for key in ("ref_point", "axis"):
         out["platform"][key] = check_field(f"blade.platform.{key}", plat[key],
                                            FE_FIELDS[f"platform.{key}"])
+    if plat.get("tangent") is not None:
+        t = check_field("blade.platform.tangent", plat["tangent"], FE_FIELDS["platform.tangent"])
+        check_tangent(out["platform"]["axis"], t)
+        out["platform"]["tangent"] = t
     if "clamp" in blade_in and blade_in["clamp"] is not None:
         out["clamp"] = _node_set("blade.clamp", blade_in["clamp"])
     exc = blade_in["excitation"]
@@ -365,7 +372,10 @@ def write_reduced(directory: Path, red, prefix: str = "") -> dict:
 def reduce_fe(blade: dict, f_max: float, *, use_cache: bool = True):
     """Reads and reduces an ``fe`` blade (or takes it from the cache). Returns
     ``(directory, meta)``: the directory holds M.mtx, K.mtx (stress_K.mtx) and ``meta`` has
-    ``gamma_dof``, ``exc_dof``, ``freqs_full``, ``freqs_reduced``, ``info``, ``cached``."""
+    ``gamma_dof``, ``exc_dof``, ``freqs_full``, ``freqs_reduced``, ``info``, ``cached``; with
+    ``platform.tangent`` also ``u_dof``, ``v_dof`` (see :func:`_in_platform_frame`)."""
+    if blade["platform"].get("tangent") is not None:
+        return _in_platform_frame(blade, f_max, use_cache)
     key = cache_key(blade, f_max)
     root = cache_root() / "fe"
     final = root / key
@@ -399,6 +409,12 @@ def reduce_fe(blade: dict, f_max: float, *, use_cache: bool = True):
             "n_full": int(fe.n), "n_reduced": int(Mr.shape[0]),
             "info": {k: v for k, v in (red.info or {}).items()
                      if isinstance(v, (int, float, str, bool))}}
+    return _store(root, final, red, meta)
+
+
+def _store(root: Path, final: Path, red, meta: dict):
+    """Writes a cache entry (matrices and ``reduced.json``) under a temporary name and renames
+    it; returns ``(directory, meta)``."""
     root.mkdir(parents=True, exist_ok=True)
     tmp = Path(tempfile.mkdtemp(prefix=".tmp-", dir=root))
     try:
@@ -411,10 +427,42 @@ def reduce_fe(blade: dict, f_max: float, *, use_cache: bool = True):
     finally:
         if tmp.exists():
             shutil.rmtree(tmp, ignore_errors=True)
-    if not meta_path.is_file():
+    if not (final / "reduced.json").is_file():
         raise UdmapError(f"could not write the reduction cache in {root}")
     meta["cached"] = False
     return final, meta
+
+
+def _in_platform_frame(blade: dict, f_max: float, use_cache: bool):
+    """The reduction of a blade with ``platform.tangent`` (PHYSICS.md 2.6): that of the same
+    blade without it (cached under the same key), with the platform's translation DOFs turned
+    into the frame (tangent, axis x tangent, axis) by an exact orthogonal change of coordinates
+    (:func:`udmap.reduction.in_platform_frame`), so that u_P and v_P are DOFs 4 and 5
+    (``u_dof``, ``v_dof``); cached under its own key."""
+    final = cache_root() / "fe" / cache_key(blade, f_max)
+    if use_cache and (final / "reduced.json").is_file():
+        meta = json.loads((final / "reduced.json").read_text())
+        meta["cached"] = True
+        return final, meta
+    base = json.loads(json.dumps(blade))
+    del base["platform"]["tangent"]
+    directory, base_meta = reduce_fe(base, f_max, use_cache=use_cache)
+    files = base_meta["files"]
+    stress = None
+    if "stress_K" in files:
+        stress = read_mm(directory / files["stress_K"], "reduced stress_K", vector=True)
+        stress = np.asarray(stress, dtype=np.float64).reshape(1, -1)
+    red = reduction.Reduced(
+        M=read_mm(directory / files["M"], "reduced M").toarray(),
+        K=read_mm(directory / files["K"], "reduced K").toarray(),
+        gamma_dof=base_meta["gamma_dof"], exc_dof=base_meta["exc_dof"],
+        stress_K=None if stress is None else stress[0], freqs_full=np.array([]),
+        freqs_reduced=np.array([]), stress=stress)
+    framed = reduction.in_platform_frame(red, blade["platform"]["axis"],
+                                         blade["platform"]["tangent"])
+    meta = {k: v for k, v in base_meta.items() if k not in ("files", "cached")}
+    meta["u_dof"], meta["v_dof"] = framed.u_dof, framed.v_dof
+    return _store(final.parent, final, framed, meta)
 
 
 def check_gamma_moves(directory: Path, meta: dict, f_min: float, f_max: float,
@@ -456,6 +504,8 @@ def resolve(blade: dict, analysis: dict) -> tuple[dict, dict]:
     out = {"kind": "matrices", "M": str(directory / meta["files"]["M"]),
            "K": str(directory / meta["files"]["K"]), "gamma_dof": meta["gamma_dof"],
            "exc_dof": meta["exc_dof"], "zeta": blade["zeta"]}
+    if "u_dof" in meta:     # platform.tangent given: the frame of the platform
+        out["u_dof"], out["v_dof"] = meta["u_dof"], meta["v_dof"]
     if "stress_K" in meta["files"]:
         out["stress_K"] = str(directory / meta["files"]["stress_K"])
     summary = dict(meta)

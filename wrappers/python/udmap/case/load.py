@@ -17,6 +17,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from ..errors import InputError
+from . import traveling
 from .schema import (OPTIONAL, REQUIRED, SCHEMA, SECTIONS, TABLE_GAMMA, TABLE_K, TOP_LEVEL, Field,
                      NonFinite, check_field, in_range, range_text, show_value)
 
@@ -140,8 +141,10 @@ def validate(data: dict, base_dir: Path | str = ".") -> Case:
             sections[section] = _check_section(section, raw, SCHEMA[(section, kind)])
             sections[section]["kind"] = kind
     blade, damper, analysis = sections["blade"], sections["damper"], sections["analysis"]
+    traveling.settle_analysis(data["analysis"], analysis)
 
     if blade["kind"] == "matrices":
+        _check_platform_dofs(blade)
         for key in ("M", "K", "C", "stress_K", "stress_M"):
             if key in blade:
                 blade[key] = _resolve(f"blade.{key}", blade[key], base_dir)
@@ -151,6 +154,7 @@ def validate(data: dict, base_dir: Path | str = ".") -> Case:
     if not analysis["f_max"] > analysis["f_min"]:
         raise InputError(f"analysis.f_max ({analysis['f_max']}) must exceed analysis.f_min "
                          f"({analysis['f_min']})")
+    traveling.check_case(Case(blade=blade, damper=damper, analysis=analysis))
     fe = None
     if blade["kind"] == "fe":
         # Every command works on the reduced matrices blade (reduced once, cached by content).
@@ -158,6 +162,21 @@ def validate(data: dict, base_dir: Path | str = ".") -> Case:
         blade, fe = fe_case.resolve(blade, analysis)
     return Case(blade=blade, damper=damper, analysis=analysis, name=top["name"],
                 base_dir=base_dir, fe=fe)
+
+
+def _check_platform_dofs(blade: dict) -> None:
+    """blade.u_dof, blade.v_dof (PHYSICS.md 2.6): v_dof needs u_dof, and the platform's
+    translations, its rotation and each other are different DOFs (the upper bound, the number of
+    DOFs, is checked when the matrices are read)."""
+    u, v = blade.get("u_dof"), blade.get("v_dof")
+    if v is not None and u is None:
+        raise InputError("blade.v_dof needs blade.u_dof (the circumferential translation)")
+    for name, dof in (("u_dof", u), ("v_dof", v)):
+        if dof is not None and dof == blade["gamma_dof"]:
+            raise InputError(f"blade.{name} must differ from blade.gamma_dof ({dof}): the "
+                             "platform rotation is not a translation")
+    if u is not None and u == v:
+        raise InputError(f"blade.v_dof must differ from blade.u_dof ({u})")
 
 
 def read_table_csv(path: Path) -> list[tuple[float, float, float]]:

@@ -11,7 +11,7 @@ import sys
 from .. import version
 from ..errors import InputError, PhysicsError, UdmapError
 from ..fmu_case import add_fmu_parser
-from .args import float_list, harmonics_arg, positive, positive_int
+from .args import add_wave_options, float_list, harmonics_arg, positive, positive_int
 from .commands import (cmd_backbone, cmd_curves, cmd_demo, cmd_dti, cmd_hbm, cmd_reduce,
                        cmd_response, cmd_table)
 from .doe import add_doe_parser
@@ -44,25 +44,30 @@ def build_parser() -> argparse.ArgumentParser:
                       "analysis.harmonics")
     p = add("backbone", cmd_backbone, "resonance peaks (backbone) for each force")
     add_file_options(p)
+    add_wave_options(p)
     p.add_argument("--harmonics", type=harmonics_arg, default=None, metavar="H|auto",
                    help=harmonics_help)
     p = add("curves", cmd_curves, "non-linear response curves by amplitude-layered mapping")
     add_file_options(p)
+    add_wave_options(p)
     p.add_argument("--layers", type=positive_int, default=None,
                    help="number of amplitude layers (default from the case, 200)")
     p.add_argument("--harmonics", type=harmonics_arg, default=None, metavar="H|auto",
                    help=harmonics_help)
     p = add("response", cmd_response, "response at a given excitation frequency")
     add_file_options(p)
+    add_wave_options(p)
     p.add_argument("--freq", type=positive, required=True, help="excitation frequency [Hz]")
     p.add_argument("--harmonics", type=harmonics_arg, default=None, metavar="H|auto",
                    help=harmonics_help)
     p = add("hbm", cmd_hbm, "standard convergence-based method (harmonic balance)")
     add_file_options(p)
+    add_wave_options(p)
     p.add_argument("--harmonics", type=positive_int, default=1, help="harmonics 1..H (default 1)")
     p.add_argument("--variant", choices=("condensed", "full"), default="condensed",
                    help="Newton on the damper DOF after condensation, or on all DOFs")
     p = add("dti", cmd_dti, "direct time integration to steady state")
+    add_wave_options(p)
     g = p.add_mutually_exclusive_group(required=True)
     g.add_argument("--freq", type=positive, help="excitation frequency [Hz]")
     g.add_argument("--peak", action="store_true", help="search the frequency of the largest "

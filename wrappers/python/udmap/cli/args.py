@@ -50,3 +50,16 @@ def harmonics_arg(text: str):
     if not 1 <= v <= 64:
         raise argparse.ArgumentTypeError(f"must be an integer 1..64 or 'auto', got {text}")
     return v
+
+
+def add_wave_options(p) -> None:
+    """``--blades N --engine-order EO`` or ``--ibpa DEG``: the traveling wave (PHYSICS.md 2.6),
+    overriding the case's; checked with the case (udmap.case.traveling), as text here."""
+    p.add_argument("--blades", default=None, metavar="N",
+                   help="blades N of the wheel (with --engine-order; overrides analysis.blades)")
+    p.add_argument("--engine-order", dest="engine_order", default=None, metavar="EO",
+                   help="engine order EO (integer, taken modulo N): the interblade phase "
+                        "2 pi EO/N; overrides analysis.engine_order")
+    p.add_argument("--ibpa", default=None, metavar="DEG",
+                   help="interblade phase angle [deg] instead of --blades/--engine-order "
+                        "(overrides analysis.ibpa_deg)")

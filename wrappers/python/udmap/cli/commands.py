@@ -11,6 +11,7 @@ import numpy as np
 
 from .. import hbm
 from ..case import build_blade, build_contact, build_damper, build_model, load_case
+from ..case.traveling import apply_options, require_in_phase, wave_of, wave_warnings
 from ..errors import InputError, UdmapError
 from .output import (add_verdicts, add_warning, emit, finite, point_json, print_head,
                      print_points, print_rows)
@@ -24,6 +25,25 @@ def _with_harmonics(case, args):
     if getattr(args, "harmonics", None) is not None:
         case.analysis["harmonics"] = args.harmonics
     return case
+
+
+def _load(args, harmonics: bool = True):
+    """The command's case with --harmonics (the mapping's, when `harmonics`) and the traveling
+    wave's options applied."""
+    case = load_case(args.case)
+    if harmonics:
+        _with_harmonics(case, args)
+    apply_options(case, args.blades, args.engine_order, args.ibpa)
+    return case
+
+
+def _wave(data: dict, case) -> dict:
+    """Adds the traveling wave's fields (engine_order, blades, ibpa_deg) to `data` and its
+    warnings (a phase given with a damper that does not depend on it)."""
+    data.update(wave_of(case.analysis).output())
+    for text in wave_warnings(case):
+        add_warning(data, text)
+    return data
 
 
 #: Largest platform rotation of the valid range (docs/case-files.md, "Valid range") [rad].
@@ -101,10 +121,10 @@ def _limits(data: dict) -> float | None:
 
 def cmd_backbone(args) -> None:
     paths = check_out(args, "backbone")
-    case = _with_harmonics(load_case(args.case), args)
+    case = _load(args)
     blade, damper = build_blade(case), build_damper(case)
     model = build_model(case, blade, damper)
-    data = _summary(model, blade, damper)
+    data = _wave(_summary(model, blade, damper), case)
     data["points"] = [point_json(p) for p in model.backbone(args.forces)]
     _verdicts(data, case)
 
@@ -120,14 +140,14 @@ def cmd_backbone(args) -> None:
 
 def cmd_response(args) -> None:
     paths = check_out(args, "response")
-    case = _with_harmonics(load_case(args.case), args)
+    case = _load(args)
     a = case.analysis
     if not a["f_min"] <= args.freq <= a["f_max"]:
         raise InputError(f"--freq {args.freq} Hz is outside the band [analysis.f_min, "
                          f"analysis.f_max] = [{a['f_min']}, {a['f_max']}] Hz of the case")
     blade, damper = build_blade(case), build_damper(case)
     model = build_model(case, blade, damper)
-    data = _summary(model, blade, damper)
+    data = _wave(_summary(model, blade, damper), case)
     data["f_exc"] = args.freq
     data["points"] = [point_json(dict(p, jump=False))
                       for p in model.response(args.freq, args.forces)]
@@ -145,15 +165,16 @@ def cmd_response(args) -> None:
 
 def cmd_curves(args) -> None:
     paths = check_out(args, "curves")
-    case = _with_harmonics(load_case(args.case), args)
+    case = _load(args)
     model = build_model(case)
     layers = args.layers or case.analysis["layers"]
     curves = model.curves(args.forces, layers=layers)
-    data = {"curves": [{"F_E": c["F_E"], "f": [float(x) for x in c["f"]],
+    data = _wave({}, case)
+    data["curves"] = [{"F_E": c["F_E"], "f": [float(x) for x in c["f"]],
                         "gamma_P": [float(x) for x in c["gamma_P"]],
                         "sigma_a": [finite(float(x)) for x in c["sigma_a"]],
                         "branch": [int(x) for x in c["branch"]],
-                        "part": [int(x) for x in c["part"]]} for c in curves]}
+                        "part": [int(x) for x in c["part"]]} for c in curves]
 
     try:
         F_lim = model.limit_force()
@@ -166,6 +187,7 @@ def cmd_curves(args) -> None:
                               "more (not admissible)")
 
     def table(d):
+        print_head(d)
         for c in d["curves"]:
             print(f"F_E = {rounded(c['F_E'])} N: {len(c['f'])} points")
             print_rows([header("f"), header("gamma_P"), header("sigma_a"), "branch"],
@@ -190,7 +212,7 @@ def cmd_curves(args) -> None:
 
 def cmd_hbm(args) -> None:
     paths = check_out(args, "hbm")
-    case = load_case(args.case)
+    case = _load(args, harmonics=False)
     blade = build_blade(case)
     a = case.analysis
     damper = build_damper(case)
@@ -201,8 +223,8 @@ def cmd_hbm(args) -> None:
                          harmonics=args.harmonics, variant=args.variant,
                          sigma_all=a["sigma_all"])
         hbm.classify(blade, damper, a["f_min"], a["f_max"], a["sigma_all"], points)
-    data = {"harmonics": args.harmonics, "variant": args.variant,
-            "points": [point_json(p) for p in points]}
+    data = _wave({"harmonics": args.harmonics, "variant": args.variant}, case)
+    data["points"] = [point_json(p) for p in points]
     add_verdicts(data, None, a["sigma_all"])
 
     def plot(path):
@@ -219,8 +241,7 @@ def cmd_hbm(args) -> None:
 def _traveling(case, damper) -> bool:
     """A traveling wave (PHYSICS.md 2.6): an interblade phase other than 0 with the one damper
     kind that feels it."""
-    return float(case.analysis.get("ibpa_deg") or 0.0) % 360.0 != 0.0 and \
-        damper.kind == "asymmetric"
+    return not wave_of(case.analysis).in_phase and damper.kind == "asymmetric"
 
 
 def _wave_hbm(case, blade, damper, args) -> list[dict]:
@@ -234,7 +255,8 @@ def _wave_hbm(case, blade, damper, args) -> list[dict]:
     model = build_model(case, blade=blade, damper=damper)
     starts = [min(1.01 * p["f_res"], a["f_max"] * (1 - 1e-9)) if not p.get("unbounded")
               else a["f_max"] * (1 - 1e-9) for p in model.backbone(args.forces)]
-    points = hbm.wave_hbm(blade, damper, a["f_min"], a["f_max"], a["ibpa_deg"], args.forces,
+    points = hbm.wave_hbm(blade, damper, a["f_min"], a["f_max"], wave_of(a).ibpa_deg,
+                          args.forces,
                           starts, harmonics=int(harmonics))
     F_lim = model.limit_force()
     for p in points:
@@ -245,7 +267,8 @@ def _wave_hbm(case, blade, damper, args) -> list[dict]:
 
 
 def cmd_dti(args) -> None:
-    case = load_case(args.case)
+    case = _load(args, harmonics=False)
+    require_in_phase(case, "the time integration (dti)")
     blade = build_blade(case)
     a = case.analysis
     if args.freq is not None and not a["f_min"] <= args.freq <= a["f_max"]:
@@ -253,10 +276,12 @@ def cmd_dti(args) -> None:
                          f"analysis.f_max] = [{a['f_min']}, {a['f_max']}] Hz of the case")
     points = hbm.dti(blade, build_contact(case), args.forces, freq=args.freq, peak=args.peak,
                      f_min=a["f_min"], f_max=a["f_max"])
-    data = {"points": [{k: finite(p[k]) for k in ("F_E", "f", "gamma_1", "sigma_1", "gamma_max")}
-                       for p in points]}
+    data = _wave({}, case)
+    data["points"] = [{k: finite(p[k]) for k in ("F_E", "f", "gamma_1", "sigma_1", "gamma_max")}
+                      for p in points]
 
     def table(d):
+        print_head(d)
         keys = ("F_E", "f", "gamma_1", "sigma_1", "gamma_max")
         print_rows([header(k) for k in keys], [[p[k] for k in keys] for p in d["points"]],
                    list(keys))
@@ -286,6 +311,9 @@ def cmd_reduce(args) -> None:
         blade[key] = target.name
     blade.update(gamma_dof=case.blade["gamma_dof"], exc_dof=case.blade["exc_dof"],
                  zeta=case.blade["zeta"])
+    for key in ("u_dof", "v_dof"):      # platform.tangent: the platform's frame (fe-blades.md)
+        if key in case.blade:
+            blade[key] = case.blade[key]
     damper = dict(raw["damper"])
     if damper.get("kind") == "table":
         damper["file"] = os.path.relpath(case.damper["file"], out.parent.resolve())
@@ -302,6 +330,7 @@ def cmd_reduce(args) -> None:
             "gamma_dof": case.blade["gamma_dof"], "exc_dof": case.blade["exc_dof"],
             "cached": case.fe["cached"], "freqs_full": case.fe["freqs_full"],
             "freqs_reduced": case.fe["freqs_reduced"]}
+    data.update({k: case.blade[k] for k in ("u_dof", "v_dof") if k in case.blade})
 
     def table(d):
         print(f"wrote {d['out']}: {d['n_full']} DOFs reduced to {d['n_reduced']} "

@@ -9,7 +9,8 @@ from .. import doe
 from ..case import load_case
 from ..doe import METHODS, run_doe
 from ..errors import InputError
-from .args import harmonics_arg
+from ..case.traveling import apply_options
+from .args import add_wave_options, harmonics_arg
 
 
 def add_doe_parser(sub) -> argparse.ArgumentParser:
@@ -34,6 +35,7 @@ def add_doe_parser(sub) -> argparse.ArgumentParser:
                    help="harmonics of the platform rotation: 1 (single-harmonic), H (harmonics "
                         "0..H in multi-harmonic layers) or auto; overrides analysis.harmonics "
                         "(with H > 1 hcf_ok and F_adm take sigma_max)")
+    add_wave_options(p)
     g = p.add_mutually_exclusive_group()
     g.add_argument("--workers", type=int, default=None, metavar="K",
                    help="worker processes (default: all cores; 1 runs serially)")
@@ -71,6 +73,7 @@ def cmd_doe(args) -> None:
             case.analysis["harmonics"] = harmonics_arg(args.harmonics)
         except argparse.ArgumentTypeError as exc:
             raise InputError(f"--harmonics: {exc}") from None
+    apply_options(case, args.blades, args.engine_order, args.ibpa)
     summary = run_doe(
         case, args.vary, args.samples, args.out, method=args.method,
         forces=args.forces, seed=args.seed,

@@ -13,10 +13,12 @@ from ..errors import InputError, UdmapError
 from ..fmu_case import write_atomic
 
 #: The CSV columns of a point of backbone, response and hbm (JSON fields, SI).
+#: The traveling wave's columns (the output's own fields, the same on every row).
+WAVE_COLUMNS = ("engine_order", "blades", "ibpa_deg")
 POINT_COLUMNS = ("F_E", "gamma_P", "f_res", "sigma_a", "u_E", "k_re", "k_im", "gamma_max",
                  "sigma_max", "regime", "regime_name", "hcf_ok", "hcf_reason", "unbounded",
-                 "jump")
-CURVE_COLUMNS = ("F_E", "f", "gamma_P", "sigma_a", "branch", "part")
+                 "jump") + WAVE_COLUMNS
+CURVE_COLUMNS = ("F_E", "f", "gamma_P", "sigma_a", "branch", "part") + WAVE_COLUMNS
 
 
 def add_file_options(p) -> None:
@@ -66,12 +68,14 @@ def csv_text(columns, rows) -> str:
 
 
 def point_rows(data: dict) -> list[list]:
-    return [[p.get(c, False if c in ("unbounded", "jump") else None) for c in POINT_COLUMNS]
-            for p in data["points"]]
+    wave = [data.get(c) for c in WAVE_COLUMNS]
+    return [[p.get(c, False if c in ("unbounded", "jump") else None)
+             for c in POINT_COLUMNS[:-len(WAVE_COLUMNS)]] + wave for p in data["points"]]
 
 
 def curve_rows(data: dict) -> list[list]:
-    return [[c["F_E"], *row] for c in data["curves"]
+    wave = [data.get(c) for c in WAVE_COLUMNS]
+    return [[c["F_E"], *row, *wave] for c in data["curves"]
             for row in zip(c["f"], c["gamma_P"], c["sigma_a"], c["branch"], c["part"])]
 
 

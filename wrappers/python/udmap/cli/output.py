@@ -112,11 +112,16 @@ def emit(args, data: dict, table) -> None:
         table(data)
 
 
+#: The traveling wave's fields (PHYSICS.md 2.6); engine_order and blades are null when the
+#: phase is given as ibpa_deg, and then left out of the readable head.
+WAVE_KEYS = ("engine_order", "blades", "ibpa_deg")
+
+
 def print_head(data: dict, skip=()) -> None:
     """The scalar fields of `data` as "name = value unit" lines."""
     items = {k: v for k, v in data.items()
              if k not in ("points", "curves", "units", "warnings", *skip)
-             and not isinstance(v, (list, dict))}
+             and not isinstance(v, (list, dict)) and not (k in WAVE_KEYS and v is None)}
     width = max((len(k) for k in items), default=0)
     for k, v in items.items():
         print(f"{k:>{width}} = {value_text(k, v)}")

@@ -12,7 +12,8 @@ from ..errors import InputError
 
 SECTIONS = ("blade", "damper", "analysis")
 # Numeric leaves that are identifiers or data, not design parameters.
-_NOT_PARAMETERS = {("blade", "gamma_dof"), ("blade", "exc_dof")}
+_NOT_PARAMETERS = {("blade", "gamma_dof"), ("blade", "exc_dof"), ("blade", "u_dof"),
+                   ("blade", "v_dof")}
 
 
 @dataclass(frozen=True)
