@@ -165,14 +165,14 @@ def test_ibpa_deg_as_a_doe_variable(write_case, tmp_path, analyses):
 
 def test_outputs_carry_the_wave_in_json_table_and_csv(write_case, tmp_path, capsys):
     path = write_case(analysis={"blades": 24, "engine_order": 25})
-    status, out, err = _main(["curves", path, "--forces", "2", "--layers", "8", "--out",
-                              tmp_path / "o"], capsys)
+    status, out, err = _main(["backbone", path, "--forces", "2", "--out", tmp_path / "o"],
+                             capsys)
     assert status == 0, err
     assert "engine_order = 25" in out and "blades = 24" in out and "ibpa_deg = 15 deg" in out
-    data = json.loads((tmp_path / "o" / "curves.json").read_text())
+    data = json.loads((tmp_path / "o" / "backbone.json").read_text())
     assert (data["engine_order"], data["blades"], data["ibpa_deg"]) == (25, 24, 15.0)
     assert data["units"]["engine_order"] == data["units"]["blades"] == "1"
-    with open(tmp_path / "o" / "curves.csv", newline="") as f:
+    with open(tmp_path / "o" / "backbone.csv", newline="") as f:
         rows = list(csv.DictReader(f))
     assert rows and all((r["engine_order"], r["blades"], r["ibpa_deg"]) == ("25", "24", "15.0")
                         for r in rows)
