@@ -1,6 +1,6 @@
 """Traveling waves through the Python and command-line faces (PHYSICS.md 2.6): the admissible
-force and the response at a phase, the standard method at a phase against the layered
-backbone, and what is refused rather than answered in phase."""
+force, the response and the response curves at a phase, and the standard method at a phase
+against the layered backbone."""
 from __future__ import annotations
 
 import json
@@ -11,7 +11,6 @@ from pathlib import Path
 import pytest
 
 from udmap.case import build_blade, build_damper, load_case
-from udmap.errors import InputError
 from udmap.model import Model
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -46,10 +45,22 @@ def test_response_at_the_peak_frequency_is_the_peak(wave):
     assert below["gamma_P"] < peak["gamma_P"]
 
 
-def test_curves_are_refused_not_answered_in_phase(wave):
+def test_curves_at_a_phase_pass_through_the_response_and_the_peak(wave):
+    """Every point of a response curve at a phase is a root of the response at its frequency;
+    the curve's turning point is the backbone's peak."""
     _, _, model = wave
-    with pytest.raises(InputError, match="ibpa_deg"):
-        model.curves([2.0], layers=20)
+    curve = model.curves([2.0], layers=8)[0]
+    peak = model.backbone([2.0])[0]
+    branch = [int(b) for b in curve["branch"]]
+    turning = [k for k, b in enumerate(branch) if b == 2]
+    assert len(turning) == 1 and curve["gamma_P"][turning[0]] == peak["gamma_P"]
+    assert branch == [0] * turning[0] + [2] + [1] * (len(branch) - turning[0] - 1)
+    for k in (2, 6, 10, 14):
+        f, g = curve["f"][k], curve["gamma_P"][k]
+        if not 150.0 < f < 230.0:
+            continue
+        roots = model.response(f, [2.0])[0]["roots"]
+        assert min(abs(r / g - 1) for r in roots) < 1e-7, (k, f, g, roots)
 
 
 def test_hbm_at_a_phase_equals_the_backbone(tmp_path):

@@ -35,6 +35,7 @@ module udmap_mapping_model
   use udmap_mapping_admissible, only: admissible_force
   use udmap_mapping_traveling_dispatch, only: is_traveling, limit_force, backbone
   use udmap_mapping_traveling_backbone, only: wave_response
+  use udmap_mapping_traveling_curves, only: wave_curves
   implicit none
   private
   public :: analysis_type, point_type, curve_type, model_type
@@ -147,18 +148,11 @@ contains
     integer, intent(in) :: layers
     type(curve_type), allocatable, intent(out) :: curves(:)
     type(error_type), allocatable, intent(out) :: error
-    if (traveling_refused(model, "response curves", error)) return
-    call inphase_response_curves(model, F_E, layers, curves, error)
+    if (is_traveling(model)) then
+      call wave_curves(model, F_E, layers, curves, error)
+    else
+      call inphase_response_curves(model, F_E, layers, curves, error)
+    end if
   end subroutine response_curves
 
-  !> What is not yet computed at phi /= 0 says so instead of answering in phase.
-  logical function traveling_refused(model, what, error)
-    type(model_type), intent(in) :: model
-    character(len=*), intent(in) :: what
-    type(error_type), allocatable, intent(out) :: error
-    traveling_refused = is_traveling(model)
-    if (traveling_refused) call fatal_error(error, "analysis.ibpa_deg: "//what// &
-      & " at an interblade phase other than 0 is not available yet (backbone, response, "// &
-      & "limit force, F_adm and the nodal sweep are)", UDMAP_EINPUT)
-  end function traveling_refused
 end module udmap_mapping_model
