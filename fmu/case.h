@@ -10,6 +10,7 @@
  *   blade beam | blade matrices
  *   M FILE, K FILE, C FILE, stress_K FILE, stress_M FILE   (matrices; FILE in resources/)
  *   gamma_dof N, exc_dof N                                  (matrices, 1-based)
+ *   u_dof N, v_dof N                     (matrices, optional: the platform translations)
  *   damper asymmetric | damper jenkins | damper table
  *   kt X, M_slip X                                          (jenkins)
  *   table N, then N lines "gamma k_re k_im"; delta_M X      (table)
@@ -38,6 +39,7 @@ typedef struct {
   char M[CASE_PATH_MAX], K[CASE_PATH_MAX], C[CASE_PATH_MAX]; /* full paths, "" if none */
   char stress_K[CASE_PATH_MAX], stress_M[CASE_PATH_MAX];
   int gamma_dof, exc_dof;
+  int u_dof, v_dof; /* platform translations (traveling waves), 0 if none */
   DamperKind damper;
   double kt, M_slip;
   int n; /* table rows */

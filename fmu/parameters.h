@@ -136,6 +136,8 @@
 #define UDMAP_CASE_ITEMS(X) \
   X("gamma_dof", gamma_dof, (int)) \
   X("exc_dof", exc_dof, (int)) \
+  X("u_dof", u_dof, (int)) \
+  X("v_dof", v_dof, (int)) \
   X("kt", kt, (double)) \
   X("M_slip", M_slip, (double)) \
   X("rtol", analysis.rtol, (double)) \

@@ -8,6 +8,7 @@
 #include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "model.h"
@@ -90,6 +91,24 @@ static Status build_blade(ModelInstance *m) {
                                         c->stress_M[0] ? c->stress_M : NULL, V(zeta), &m->blade);
     if (stat != UDMAP_OK)
       return kernel_failure(m, STAGE_BLADE, stat, "udmap_new_blade_matrices");
+    if (c->u_dof > 0) {
+      /* the platform translations of a traveling wave (PHYSICS.md 2.6): unit rows */
+      int ndof = 0, has_stress = 0;
+      stat = udmap_blade_get_size(m->err, m->blade, &ndof, &has_stress);
+      if (stat != UDMAP_OK) return kernel_failure(m, STAGE_BLADE, stat, "udmap_blade_get_size");
+      if (c->u_dof > ndof || c->v_dof > ndof)
+        return failure(m, STAGE_BLADE, "u_dof = %d or v_dof = %d beyond the %d DOFs of the blade",
+                       c->u_dof, c->v_dof, ndof);
+      double *rows = calloc(2 * (size_t)ndof, sizeof *rows);
+      if (!rows) return failure(m, STAGE_BLADE, "out of memory");
+      rows[c->u_dof - 1] = 1.0;
+      if (c->v_dof > 0) rows[ndof + c->v_dof - 1] = 1.0;
+      stat = udmap_blade_set_platform_rows(m->err, m->blade, ndof, rows,
+                                           c->v_dof > 0 ? rows + ndof : NULL);
+      free(rows);
+      if (stat != UDMAP_OK)
+        return kernel_failure(m, STAGE_BLADE, stat, "udmap_blade_set_platform_rows");
+    }
     model_log_category(m, LOG_EVENTS, OK, "blade read from %s", c->K);
     return OK;
   }

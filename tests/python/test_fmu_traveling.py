@@ -30,3 +30,35 @@ def test_engine_orders(version, models):
         for key in ("gamma_P", "f_res", "sigma_a"):
             assert out[key] == pytest.approx(ref[key], rel=1e-12), (eo, key)
     inst.free()
+
+
+@pytest.mark.parametrize("version", [2, 3])
+def test_case_fmu_of_a_matrices_blade_at_an_engine_order(version, tmp_path):
+    """`udmap fmu` of a matrices case with u_dof and an engine order: the FMU starts at the
+    case's engine order, takes the platform rows from u_dof, and answers as the case does."""
+    import json
+    import zipfile
+
+    from fmu_harness import write_matrices_table_case
+    from fmpy import simulate_fmu
+    from udmap.case import build_model
+    from udmap.fmu_case import write_case_fmu
+
+    path = write_matrices_table_case(tmp_path)
+    data = json.loads(path.read_text())
+    blade_a = json.loads(CASE.read_text())
+    data["damper"] = blade_a["damper"]
+    data["blade"]["u_dof"] = data["blade"]["gamma_dof"] - 1   # the platform's w_P
+    data["analysis"].update(blades=4, engine_order=1)
+    path.write_text(json.dumps(data))
+    case = load_case(str(path))
+    ref = build_model(case).backbone([5.0])[0]
+    fmu = tmp_path / f"wave{version}.fmu"
+    write_case_fmu(case, fmu, fmi=version)
+    with zipfile.ZipFile(fmu) as z:
+        text = z.read("resources/udmap-case.txt").decode()
+    assert "u_dof 15" in text
+    res = simulate_fmu(str(fmu), start_time=0, stop_time=0.002, step_size=0.001,
+                       start_values={"F_E": 5.0}, output=["gamma_P", "f_res", "sigma_a"])
+    for key in ("gamma_P", "f_res", "sigma_a"):
+        assert res[key][-1] == pytest.approx(ref[key], rel=1e-12), key

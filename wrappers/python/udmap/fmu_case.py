@@ -61,6 +61,14 @@ def starts_and_absent(case: Case) -> tuple[dict, set]:
         starts.update(flat_params(d, "damper", "asymmetric"))
     else:
         absent.update(ASYMMETRIC)
+    # the traveling wave (PHYSICS.md 2.6): the FMU takes it as integers, blades and engine_order
+    if a.get("blades") is not None:
+        starts["blades"] = int(a["blades"])
+        starts["engine_order"] = int(a.get("engine_order") or 0)
+    elif float(a.get("ibpa_deg") or 0.0) % 360.0 != 0.0:
+        raise InputError("analysis.ibpa_deg: the FMU takes the traveling wave as its integer "
+                         "parameters blades and engine_order; give analysis.blades and "
+                         "analysis.engine_order in the case instead")
     return starts, absent
 
 
@@ -77,7 +85,9 @@ def _items(data: dict, where: tuple) -> list[str]:
     kind) whose validated fields are `data` (fmu/case.c reads them)."""
     lines = []
     for name, kind in CASE_ITEMS[where]:
-        x = data[name]
+        x = data.get(name)
+        if x is None:  # an optional field the case does not give
+            continue
         if kind == "choice":
             x = CHOICE_CODES[(*where, name)][x]
         lines.append(f"{name} {float(x)!r}" if kind == "real" else f"{name} {int(x)}")

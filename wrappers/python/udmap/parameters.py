@@ -167,7 +167,8 @@ FLAT_NAMES = {
 #: Items of the FMU's resources/udmap-case.txt (fmu/case.c): (section, kind) ->
 #: ((name, type), ...).
 CASE_ITEMS = {
-    ('blade', 'matrices'): (('gamma_dof', 'int'), ('exc_dof', 'int')),
+    ('blade', 'matrices'): (('gamma_dof', 'int'), ('exc_dof', 'int'), ('u_dof', 'int'),
+        ('v_dof', 'int')),
     ('damper', 'jenkins'): (('kt', 'real'), ('M_slip', 'real')),
     ('analysis', None): (('rtol', 'real'), ('grid_per_decade', 'int'), ('eigen_method', 'choice'),
         ('dense_max', 'int'), ('sweep_points', 'int'), ('harmonic_tol', 'real')),
