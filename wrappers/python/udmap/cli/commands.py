@@ -11,6 +11,7 @@ import numpy as np
 
 from .. import hbm
 from ..case import build_blade, build_contact, build_damper, build_model, load_case
+from ..case.plausibility import plausibility_warnings, with_hints
 from ..case.traveling import apply_options, require_in_phase, wave_of, wave_warnings
 from ..errors import InputError, UdmapError
 from .output import (add_verdicts, add_warning, emit, finite, point_json, print_head,
@@ -87,6 +88,29 @@ def cmd_table(args) -> None:
     emit(args, data, table)
 
 
+def _model(case, blade, damper):
+    """The model of the case; a failure to build it carries the case's plausibility hints."""
+    try:
+        return build_model(case, blade, damper)
+    except UdmapError as exc:
+        raise with_hints(exc, plausibility_warnings(case, blade, damper)) from None
+
+
+def _computed(case, blade, damper, model, compute):
+    """compute(), a failure of which carries the case's plausibility hints."""
+    try:
+        return compute()
+    except UdmapError as exc:
+        raise with_hints(exc, plausibility_warnings(case, blade, damper)) from None
+
+
+def _plausible(data: dict, case, blade, damper, model) -> dict:
+    """The plausibility warnings of the case (udmap.case.plausibility) into `data`."""
+    for text in plausibility_warnings(case, blade, damper, model):
+        add_warning(data, text)
+    return data
+
+
 def _summary(model, blade, damper) -> dict:
     return {"F_lim": model.limit_force(), "F_lim_backbone": model.limit_force_backbone(),
             "gamma_b": damper.gamma_b, "gamma_s": damper.gamma_s,
@@ -123,9 +147,10 @@ def cmd_backbone(args) -> None:
     paths = check_out(args, "backbone")
     case = _load(args)
     blade, damper = build_blade(case), build_damper(case)
-    model = build_model(case, blade, damper)
-    data = _wave(_summary(model, blade, damper), case)
-    data["points"] = [point_json(p) for p in model.backbone(args.forces)]
+    model = _model(case, blade, damper)
+    points = _computed(case, blade, damper, model, lambda: model.backbone(args.forces))
+    data = _plausible(_wave(_summary(model, blade, damper), case), case, blade, damper, model)
+    data["points"] = [point_json(p) for p in points]
     _verdicts(data, case)
 
     def plot(path):
@@ -146,8 +171,8 @@ def cmd_response(args) -> None:
         raise InputError(f"--freq {args.freq} Hz is outside the band [analysis.f_min, "
                          f"analysis.f_max] = [{a['f_min']}, {a['f_max']}] Hz of the case")
     blade, damper = build_blade(case), build_damper(case)
-    model = build_model(case, blade, damper)
-    data = _wave(_summary(model, blade, damper), case)
+    model = _model(case, blade, damper)
+    data = _plausible(_wave(_summary(model, blade, damper), case), case, blade, damper, model)
     data["f_exc"] = args.freq
     data["points"] = [point_json(dict(p, jump=False))
                       for p in model.response(args.freq, args.forces)]
@@ -166,10 +191,11 @@ def cmd_response(args) -> None:
 def cmd_curves(args) -> None:
     paths = check_out(args, "curves")
     case = _load(args)
-    model = build_model(case)
+    blade, damper = build_blade(case), build_damper(case)
+    model = _model(case, blade, damper)
     layers = args.layers or case.analysis["layers"]
     curves = model.curves(args.forces, layers=layers)
-    data = _wave({}, case)
+    data = _plausible(_wave({}, case), case, model.blade, model.damper, model)
     data["curves"] = [{"F_E": c["F_E"], "f": [float(x) for x in c["f"]],
                         "gamma_P": [float(x) for x in c["gamma_P"]],
                         "sigma_a": [finite(float(x)) for x in c["sigma_a"]],
