@@ -78,3 +78,15 @@ def test_files(sweep4):
 def test_blades_out_of_range(blades):
     r = run("nodal", CASE, "--blades", blades, "--forces", "2")
     assert r.returncode == 2 and "blades" in r.stderr
+
+
+def test_threads_give_the_same_sweep():
+    """The engine orders run on threads (the kernel keeps no global state): the same numbers,
+    bit for bit, on one thread and on three."""
+    from udmap.case import build_blade, build_damper, load_case
+    from udmap.nodal import sweep
+    case = load_case(CASE)
+    blade, damper = build_blade(case), build_damper(case)
+    a = case.analysis | {"harmonics": 1}
+    assert sweep(blade, damper, a, 4, [2.0], workers=1) == \
+        sweep(blade, damper, a, 4, [2.0], workers=3)
