@@ -109,7 +109,7 @@ contains
     type(traveling_type) :: tw
     type(wave_layer_type) :: L
     type(point_type), allocatable :: guess(:)
-    real(wp) :: F_lim, omega_g, F_cur, w, change
+    real(wp) :: F_lim, omega_g, F_cur, w, change, ratio, shift
     integer :: i, H_saved, ih, nH
     real(wp) :: ibpa_saved
     integer, parameter :: auto_H(7) = [1, 3, 5, 9, 17, 33, 64]
@@ -130,6 +130,8 @@ contains
       call new_model_traveling(model, tw, error, merge(auto_H(ih), H_saved, H_saved == 0))
       if (allocated(error)) return
       L = wave_layer_type()
+      ratio = 1
+      shift = 1
       if (allocated(points)) call move_alloc(points, guess)
       allocate(points(size(F_E)))
       omega_g = 0
@@ -142,10 +144,17 @@ contains
           allocate(points(i)%roots(0))
           cycle
         end if
-        if (guess(i)%f_res > 0) omega_g = 2*pi*guess(i)%f_res
-        call peak_of_force(F_E(i), max(guess(i)%gamma_P, tiny(1.0_wp)), omega_g, points(i), error)
+        ! the start: the guess corrected as the previous force's was (the phase moves the
+        ! peaks of neighbouring forces alike), at the previous force's frequency shift
+        if (guess(i)%f_res > 0) omega_g = 2*pi*guess(i)%f_res*shift
+        call peak_of_force(F_E(i), max(guess(i)%gamma_P*ratio, tiny(1.0_wp)), omega_g, &
+          & points(i), error)
         if (allocated(error)) return
         omega_g = 2*pi*points(i)%f_res
+        if (guess(i)%gamma_P > 0 .and. guess(i)%f_res > 0) then
+          ratio = points(i)%gamma_P/guess(i)%gamma_P
+          shift = points(i)%f_res/guess(i)%f_res
+        end if
       end do
       if (ih == 1) cycle
       change = 0
