@@ -1,7 +1,9 @@
 """A dependency-free progress bar with rate and ETA on stderr (shown only on a terminal)."""
 from __future__ import annotations
 
+import contextlib
 import sys
+import threading
 import time
 
 
@@ -30,6 +32,25 @@ class Progress:
             self.stream.write("\n")
             self.stream.flush()
 
+    @contextlib.contextmanager
+    def ticking(self, every: float = 0.25):
+        """Redraws the bar every `every` seconds while the block runs (elapsed time and rate
+        move even when one step takes long, e.g. a single force of a time integration)."""
+        stop = threading.Event()
+
+        def tick():
+            while not stop.wait(every):
+                self.update(0)
+        thread = threading.Thread(target=tick, daemon=True) if self.enabled else None
+        if thread is not None:
+            thread.start()
+        try:
+            yield self
+        finally:
+            stop.set()
+            if thread is not None:
+                thread.join()
+
     def update(self, n: int = 1) -> None:
         self.done += n
         now = time.perf_counter()
@@ -45,6 +66,6 @@ class Progress:
         bar = "#" * int(30 * frac) + "-" * (30 - int(30 * frac))
         eta_s = "done" if final else (f"ETA {eta:6.1f} s" if eta != float("inf") else "ETA   ?")
         self.stream.write(f"\r{self.label} [{bar}] {self.done}/{self.total} "
-                          f"{rate:8.1f}/s {eta_s}")
+                          f"{rate:8.1f}/s {eta_s} ({elapsed:.0f} s)")
         self.stream.flush()
         self._shown = True

@@ -14,6 +14,7 @@ from ..case import build_blade, build_contact, build_damper, build_model, load_c
 from ..case.plausibility import plausibility_warnings, with_hints
 from ..case.traveling import apply_options, require_in_phase, wave_of, wave_warnings
 from ..errors import InputError, UdmapError
+from ..progress import Progress
 from .output import (add_verdicts, add_warning, emit, finite, point_json, print_head,
                      print_points, print_rows)
 from .files import (CURVE_COLUMNS, POINT_COLUMNS, check_out, curve_rows, point_rows,
@@ -245,9 +246,10 @@ def cmd_hbm(args) -> None:
     if _traveling(case, damper):
         points = _wave_hbm(case, blade, damper, args)
     else:
-        points = hbm.hbm(blade, build_contact(case), a["f_min"], a["f_max"], args.forces,
-                         harmonics=args.harmonics, variant=args.variant,
-                         sigma_all=a["sigma_all"])
+        with Progress(len(args.forces), "hbm") as bar, bar.ticking():
+            points = hbm.hbm(blade, build_contact(case), a["f_min"], a["f_max"], args.forces,
+                             harmonics=args.harmonics, variant=args.variant,
+                             sigma_all=a["sigma_all"], progress=bar.update)
         hbm.classify(blade, damper, a["f_min"], a["f_max"], a["sigma_all"], points)
     data = _wave({"harmonics": args.harmonics, "variant": args.variant}, case)
     data["points"] = [point_json(p) for p in points]
@@ -300,8 +302,10 @@ def cmd_dti(args) -> None:
     if args.freq is not None and not a["f_min"] <= args.freq <= a["f_max"]:
         raise InputError(f"--freq {args.freq} Hz is outside the band [analysis.f_min, "
                          f"analysis.f_max] = [{a['f_min']}, {a['f_max']}] Hz of the case")
-    points = hbm.dti(blade, build_contact(case), args.forces, freq=args.freq, peak=args.peak,
-                     f_min=a["f_min"], f_max=a["f_max"])
+    with Progress(len(args.forces), "dti") as bar, bar.ticking():
+        points = hbm.dti(blade, build_contact(case), args.forces, freq=args.freq,
+                         peak=args.peak, f_min=a["f_min"], f_max=a["f_max"],
+                         progress=bar.update)
     data = _wave({}, case)
     data["points"] = [{k: finite(p[k]) for k in ("F_E", "f", "gamma_1", "sigma_1", "gamma_max")}
                       for p in points]
