@@ -286,6 +286,10 @@ def print_summary(summary: dict, out: Path) -> None:
         s = "-" if g["sigma_a"] is None else f"{g['sigma_a'] / 1e6:.2f} MPa"
         print(f"  {name}       : F_E = {g['F_E']:.4g} N, gamma_P = {g['gamma_P']:.4e} rad, "
               f"sigma_a = {s}, f_res = {g['f_res']:.3f} Hz")
+        if name == "G1" and g["F_E"] > summary["F_lim"]:
+            print(f"             G1 lies above F_lim = {summary['F_lim']:.4g} N: the base cycle "
+                  "(gamma_b) is reached only where friction no longer bounds the response "
+                  "(the plateaus are reached by partial slip first; PHYSICS.md 2.3, 5)")
     print(f"  {'F_E [N]':>8} {'gamma_P [rad]':>14} {'f_res [Hz]':>11} {'sigma_a [MPa]':>13} "
           f"{'u_E [mm]':>9}  {'regime':<16} HCF")
     for p in summary["points"]:
