@@ -361,6 +361,16 @@ def cmd_reduce(args) -> None:
             "cached": case.fe["cached"], "freqs_full": case.fe["freqs_full"],
             "freqs_reduced": case.fe["freqs_reduced"]}
     data.update({k: case.blade[k] for k in ("u_dof", "v_dof") if k in case.blade})
+    a = case.analysis
+    in_band = [f for f in case.fe["freqs_reduced"] if a["f_min"] <= f <= a["f_max"]]
+    if len(in_band) > 1:
+        # the mapping follows one resonance: backbone refuses such a band (model: "narrow it")
+        listed = ", ".join(rounded(f) for f in in_band)
+        add_warning(data, f"the band [analysis.f_min, analysis.f_max] = [{rounded(a['f_min'])}, "
+                          f"{rounded(a['f_max'])}] Hz holds {len(in_band)} modes of the reduced "
+                          f"blade ({listed} Hz): backbone and the other analyses follow one "
+                          "resonance and will refuse it; narrow the band around the mode the "
+                          "damper is for")
 
     def table(d):
         print(f"wrote {d['out']}: {d['n_full']} DOFs reduced to {d['n_reduced']} "
