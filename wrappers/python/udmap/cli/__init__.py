@@ -66,6 +66,7 @@ def build_parser() -> argparse.ArgumentParser:
     g.add_argument("--freq", type=positive, help="excitation frequency [Hz]")
     g.add_argument("--peak", action="store_true", help="search the frequency of the largest "
                    "first harmonic near the single-harmonic peak")
+    _add_wheel_options(p)
     p = add("reduce", cmd_reduce, "Platform Centred Reduction of an fe case to a matrices case",
             forces=False)
     p.add_argument("--out", required=True, help="the reduced case file (JSON) to write; its "
@@ -78,6 +79,16 @@ def build_parser() -> argparse.ArgumentParser:
     add_doe_parser(sub)
     add_fmu_parser(sub)
     return parser
+
+
+def _add_wheel_options(p) -> None:
+    """--blades N --engine-order EO (the whole wheel in time), unless already there."""
+    if "--blades" not in p._option_string_actions:
+        p.add_argument("--blades", type=int, default=None, metavar="N",
+                       help="blades of the wheel (2..10000): integrate the whole wheel")
+    if "--engine-order" not in p._option_string_actions:
+        p.add_argument("--engine-order", dest="engine_order", type=int, default=None,
+                       metavar="EO", help="engine order: interblade phase 2 pi EO/N")
 
 
 def main(argv=None) -> int:
