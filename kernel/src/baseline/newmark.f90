@@ -27,8 +27,9 @@ module udmap_baseline_newmark
   private
   public :: dti_settings_type, dti_point_type, dti_response, dti_peak
   ! shared with the whole-wheel integration (udmap_baseline_wheel)
-  public :: dti_runner_type, dti_peak_search, check_inputs, keff_factor, keff_solve, band_matvec
-  public :: step_integrals, ss_tracker_type, ss_track, ss_relative, step_trace_type, trace_step
+  public :: dti_runner_type, dti_peak_search, peak_centre, check_inputs, keff_solve
+  public :: newmark_type, newmark_setup, newmark_load, newmark_commit
+  public :: ss_tracker_type, ss_track, ss_relative, step_trace_type
 
   !> Settings of the time integration.
   type :: dti_settings_type
@@ -88,6 +89,16 @@ module udmap_baseline_newmark
     real(wp) :: sq = 0.0_wp, sv = 0.0_wp, sa = 0.0_wp, sma = 0.0_wp
   end type step_trace_type
 
+  !> The constants of the Newmark scheme at one frequency and the period's Fourier weights.
+  type :: newmark_type
+    integer :: Ns = 0                      !< steps per period
+    real(wp) :: T = 0, dt = 0, a0 = 0, a1 = 0, a2 = 0
+    real(wp), allocatable :: Keff(:,:)     !< K + a1 C + a0 M, factorised
+    complex(wp) :: I0 = 0, I1 = 0, I2 = 0  !< step integrals (step_integrals)
+    complex(wp), allocatable :: phase(:)   !< e^{-i 2 pi j/Ns}, j = 0..Ns-1
+    real(wp), allocatable :: sK(:), sM(:)  !< stress rows (zero without stress)
+  end type newmark_type
+
   !> The single blade's runs of the peak search, each run's point kept.
   type, extends(dti_runner_type) :: blade_runner_type
     type(structure_type), pointer :: st => null()
@@ -95,7 +106,6 @@ module udmap_baseline_newmark
     real(wp) :: F_E = 0.0_wp
     type(dti_settings_type) :: settings
     type(dti_point_type), allocatable :: points(:)
-    integer :: n = 0
   contains
     procedure :: run => blade_run
   end type blade_runner_type
@@ -133,8 +143,6 @@ contains
     type(dti_point_type), intent(out) :: point
     type(error_type), allocatable, intent(out) :: error
     real(wp), intent(in), optional :: f_center
-    type(hbm_settings_type) :: hset
-    type(hbm_point_type) :: h1
     type(blade_runner_type) :: runner
     real(wp) :: fc
     integer :: best, runs
@@ -142,18 +150,13 @@ contains
     call system_clock(c0, rate)
     call check_inputs(st, F_E, settings, error)
     if (allocated(error)) return
-    if (present(f_center)) then
-      fc = f_center
-    else
-      call hbm_peak(st, element, f_min, f_max, F_E, hset, h1, error)
-      if (allocated(error)) return
-      fc = h1%f_res
-    end if
+    call peak_centre(st, element, f_min, f_max, F_E, fc, error, f_center)
+    if (allocated(error)) return
     runner%st => st
     runner%element => element
     runner%F_E = F_E
     runner%settings = settings
-    allocate(runner%points(16))
+    allocate(runner%points(0))
     call dti_peak_search(runner, fc, settings, best, runs, error)
     if (allocated(error)) return
     point = runner%points(best)
@@ -161,24 +164,36 @@ contains
     point%seconds = seconds_since(c0, rate)
   end subroutine dti_peak
 
+  !> The centre of the peak search: f_center if given, else the H = 1 standard method's peak.
+  subroutine peak_centre(st, element, f_min, f_max, F_E, fc, error, f_center)
+    type(structure_type), intent(in) :: st
+    class(hysteretic_element_type), intent(in) :: element
+    real(wp), intent(in) :: f_min, f_max, F_E
+    real(wp), intent(out) :: fc
+    type(error_type), allocatable, intent(out) :: error
+    real(wp), intent(in), optional :: f_center
+    type(hbm_settings_type) :: hset
+    type(hbm_point_type) :: h1
+    if (present(f_center)) then
+      fc = f_center
+    else
+      fc = 0.0_wp
+      call hbm_peak(st, element, f_min, f_max, F_E, hset, h1, error)
+      if (allocated(error)) return
+      fc = h1%f_res
+    end if
+  end subroutine peak_centre
+
   !> One run of the single blade's peak search.
   subroutine blade_run(self, f, gamma_1, error)
     class(blade_runner_type), intent(inout) :: self
     real(wp), intent(in) :: f
     real(wp), intent(out) :: gamma_1
     type(error_type), allocatable, intent(out) :: error
-    type(dti_point_type), allocatable :: grown(:)
     type(dti_point_type) :: p
     call integrate(self%st, self%element, 2.0_wp*pi*f, self%F_E, self%settings, p, error)
     gamma_1 = p%gamma_1
-    if (allocated(error)) return
-    if (self%n == size(self%points)) then
-      allocate(grown(2*self%n))
-      grown(1:self%n) = self%points
-      call move_alloc(grown, self%points)
-    end if
-    self%n = self%n + 1
-    self%points(self%n) = p
+    if (.not. allocated(error)) self%points = [self%points, p]
   end subroutine blade_run
 
   !> The peak search around the centre fc: a bracket (the centre above both ends; widened
@@ -329,45 +344,25 @@ contains
     type(dti_point_type), intent(out) :: point
     type(error_type), allocatable, intent(out) :: error
     class(hysteretic_element_type), allocatable :: el, trial
-    real(wp), allocatable :: Keff(:,:), xg(:), q(:), v(:), a(:), r(:), w1(:), w2(:), qn(:), an(:)
-    real(wp), allocatable :: sK(:), sM(:)
-    complex(wp), allocatable :: phase(:)
-    complex(wp) :: I0, I1, I2
+    real(wp), allocatable :: xg(:), q(:), v(:), a(:), r(:), qn(:)
+    type(newmark_type) :: nm
     type(ss_tracker_type) :: ss
     type(step_trace_type) :: tr
-    real(wp) :: dt, a0, a1, a2, c, M_ref, Mr, kt, T, gam, g_lin
-    integer :: n, Ns, j, p, good, g
+    real(wp) :: c, M_ref, Mr, kt, gam, g_lin
+    integer :: n, j, p, good, g
 
     point%F_E = F_E
     point%f = omega/(2.0_wp*pi)
     n = st%ndof
     g = st%gamma_dof
-    Ns = set%steps_per_period
-    T = 2.0_wp*pi/omega
-    dt = T/Ns
-    a0 = 4.0_wp/dt**2
-    a1 = 2.0_wp/dt
-    a2 = 4.0_wp/dt
-    call keff_factor(st, a0, a1, Keff, error)
+    call newmark_setup(st, omega, set, nm, error)
     if (allocated(error)) return
-    allocate(xg(n), q(n), v(n), a(n), r(n), w1(n), w2(n), qn(n), an(n))
+    allocate(xg(n), q(n), v(n), a(n), r(n), qn(n))
     xg = 0.0_wp
     xg(g) = 1.0_wp
-    call keff_solve(st, Keff, xg, error)
+    call keff_solve(st, nm%Keff, xg, error)
     if (allocated(error)) return
     c = xg(g)
-    call step_integrals(omega, dt, I0, I1, I2)
-    allocate(phase(0:Ns-1))
-    do j = 0, Ns - 1
-      phase(j) = exp(cmplx(0.0_wp, -2.0_wp*pi*j/Ns, wp))
-    end do
-    if (st%has_stress) then
-      sK = st%s_K
-      sM = st%s_M
-    else
-      allocate(sK(n), sM(n))
-      sK = 0.0_wp; sM = 0.0_wp
-    end if
     allocate(el, source=element)
     allocate(trial, source=element)
     call el%load(error)
@@ -380,26 +375,17 @@ contains
       tr = step_trace_type(sq=tr%sq, sv=tr%sv, sa=tr%sa, sma=tr%sma, gmax=q(g))
       call el%clear_flags()
       call trial%clear_flags()
-      do j = 0, Ns - 1
-        ! effective load at t_{n+1}
-        w1 = a0*q + a2*v + a
-        w2 = a1*q + v
-        call band_matvec(st%kd, st%M, w1, r)
-        call band_matvec(st%kd, st%C, w2, w1)
-        r = r + w1
-        r(st%exc_dof) = r(st%exc_dof) + F_E*sin(2.0_wp*pi*real(j + 1, wp)/Ns)
-        call keff_solve(st, Keff, r, error)
+      do j = 0, nm%Ns - 1
+        call newmark_load(st, nm, q, v, a, r)
+        r(st%exc_dof) = r(st%exc_dof) + F_E*sin(2.0_wp*pi*real(j + 1, wp)/nm%Ns)
+        call keff_solve(st, nm%Keff, r, error)
         if (allocated(error)) return
         g_lin = r(g)
         call solve_gamma(g_lin, gam, Mr, kt)
         if (allocated(error)) return
         qn = r - xg*(Mr - M_ref)
         qn(g) = gam
-        an = a0*(qn - q) - a2*v - a
-        call trace_step(tr, st%has_stress, sK, sM, phase(j), I0, I1, I2, dt, g, q, v, a, qn, an)
-        v = v + 0.5_wp*dt*(a + an)
-        q = qn
-        a = an
+        call newmark_commit(st, nm, j, tr, q, v, a, qn)
         call el%copy_state(trial)
         if (.not.(abs(gam) <= set%gamma_limit)) then
           call fatal_error(error, "dti: |gamma_P| exceeds gamma_limit: the response is "// &
@@ -408,8 +394,8 @@ contains
           return
         end if
       end do
-      tr%G1 = 2.0_wp*tr%G1/T
-      tr%S1 = 2.0_wp*tr%S1/T
+      tr%G1 = 2.0_wp*tr%G1/nm%T
+      tr%S1 = 2.0_wp*tr%S1/nm%T
       call ss_track(ss, tr%G1)
       if (p >= set%min_periods .and. ss%est <= set%ss_tol*abs(tr%G1)) then
         good = good + 1
@@ -423,7 +409,7 @@ contains
     point%sigma_1 = abs(tr%S1)
     point%lift_off = el%lifted()
     point%gamma_max = tr%gmax
-    point%gamma_0 = tr%gmean/T
+    point%gamma_0 = tr%gmean/nm%T
     point%ss_error = ss_relative(ss%est, tr%G1)
     if (good < 3) then
       call fatal_error(error, "dti: no steady state within max_periods = "// &
@@ -471,26 +457,79 @@ contains
     end subroutine solve_gamma
   end subroutine integrate
 
-  !> K_eff = K + a1 C + a0 M in the structure's storage, Cholesky-factorised.
-  subroutine keff_factor(st, a0, a1, Keff, error)
+  !> The scheme at omega [rad/s]: step, coefficients, K_eff = K + a1 C + a0 M factorised
+  !> (banded or dense Cholesky), the step's Fourier weights and the stress rows.
+  subroutine newmark_setup(st, omega, set, nm, error)
     type(structure_type), intent(in) :: st
-    real(wp), intent(in) :: a0, a1
-    real(wp), allocatable, intent(out) :: Keff(:,:)
+    real(wp), intent(in) :: omega
+    type(dti_settings_type), intent(in) :: set
+    type(newmark_type), intent(out) :: nm
     type(error_type), allocatable, intent(out) :: error
-    integer :: info
-    Keff = st%K + a1*st%C + a0*st%M
+    integer :: info, j
+    nm%Ns = set%steps_per_period
+    nm%T = 2.0_wp*pi/omega
+    nm%dt = nm%T/nm%Ns
+    nm%a0 = 4.0_wp/nm%dt**2
+    nm%a1 = 2.0_wp/nm%dt
+    nm%a2 = 4.0_wp/nm%dt
+    nm%Keff = st%K + nm%a1*st%C + nm%a0*st%M
     if (st%kd >= 0) then
-      call dpbtrf('U', st%ndof, st%kd, Keff, st%kd+1, info)
+      call dpbtrf('U', st%ndof, st%kd, nm%Keff, st%kd+1, info)
     else
-      call dpotrf('U', st%ndof, Keff, st%ndof, info)
+      call dpotrf('U', st%ndof, nm%Keff, st%ndof, info)
     end if
     if (info /= 0) then
       call fatal_error(error, "dti: dpbtrf/dpotrf failed on K + 2/dt C + 4/dt^2 M (info = "// &
         & itoa(info)//"): M, K, C not positive definite", UDMAP_ENUMERIC)
+      return
     end if
-  end subroutine keff_factor
+    call step_integrals(omega, nm%dt, nm%I0, nm%I1, nm%I2)
+    allocate(nm%phase(0:nm%Ns-1))
+    do j = 0, nm%Ns - 1
+      nm%phase(j) = exp(cmplx(0.0_wp, -2.0_wp*pi*j/nm%Ns, wp))
+    end do
+    if (st%has_stress) then
+      nm%sK = st%s_K
+      nm%sM = st%s_M
+    else
+      allocate(nm%sK(st%ndof), nm%sM(st%ndof))
+      nm%sK = 0.0_wp; nm%sM = 0.0_wp
+    end if
+  end subroutine newmark_setup
 
-  !> x := K_eff^-1 x with the factor of keff_factor.
+  !> The effective load at t_{n+1} without the excitation: M (a0 q + a2 v + a) + C (a1 q + v).
+  subroutine newmark_load(st, nm, q, v, a, r)
+    type(structure_type), intent(in) :: st
+    type(newmark_type), intent(in) :: nm
+    real(wp), intent(in) :: q(:), v(:), a(:)
+    real(wp), intent(out) :: r(:)
+    real(wp) :: w1(size(q)), w2(size(q))
+    w1 = nm%a0*q + nm%a2*v + a
+    w2 = nm%a1*q + v
+    call band_matvec(st%kd, st%M, w1, r)
+    call band_matvec(st%kd, st%C, w2, w1)
+    r = r + w1
+  end subroutine newmark_load
+
+  !> Step j done: the acceleration of the new displacement qn, the step's Fourier integrals,
+  !> and (q, v, a) moved on.
+  subroutine newmark_commit(st, nm, j, tr, q, v, a, qn)
+    type(structure_type), intent(in) :: st
+    type(newmark_type), intent(in) :: nm
+    integer, intent(in) :: j
+    type(step_trace_type), intent(inout) :: tr
+    real(wp), intent(inout) :: q(:), v(:), a(:)
+    real(wp), intent(in) :: qn(:)
+    real(wp) :: an(size(q))
+    an = nm%a0*(qn - q) - nm%a2*v - a
+    call trace_step(tr, st%has_stress, nm%sK, nm%sM, nm%phase(j), nm%I0, nm%I1, nm%I2, nm%dt, &
+      & st%gamma_dof, q, v, a, qn, an)
+    v = v + 0.5_wp*nm%dt*(a + an)
+    q = qn
+    a = an
+  end subroutine newmark_commit
+
+  !> x := K_eff^-1 x with the factor of newmark_setup.
   subroutine keff_solve(st, Keff, x, error)
     type(structure_type), intent(in) :: st
     real(wp), intent(in) :: Keff(:,:)

@@ -23,10 +23,9 @@ module udmap_baseline_wheel
   use udmap_blade_platform, only: platform_rows, has_platform
   use udmap_baseline_linear_structure, only: structure_type
   use udmap_baseline_types, only: seconds_since
-  use udmap_baseline_hbm, only: hbm_settings_type, hbm_point_type, hbm_peak
   use udmap_baseline_newmark, only: dti_settings_type, dti_point_type, dti_runner_type, &
-    & dti_peak_search, check_inputs, keff_factor, keff_solve, band_matvec, step_integrals, &
-    & ss_tracker_type, ss_track, ss_relative, step_trace_type, trace_step
+    & dti_peak_search, peak_centre, check_inputs, keff_solve, newmark_type, newmark_setup, &
+    & newmark_load, newmark_commit, ss_tracker_type, ss_track, ss_relative, step_trace_type
   use udmap_contact_element, only: hysteretic_element_type
   use udmap_contact_element_asymmetric, only: contact_element_type
   use udmap_damper_tracer_core, only: damper_geometry_type, damper_state_type, solve3, &
@@ -61,7 +60,6 @@ module udmap_baseline_wheel
     integer :: blades = 0, engine_order = 0
     type(dti_settings_type) :: settings
     type(wheel_point_type), allocatable :: points(:)
-    integer :: n = 0
   contains
     procedure :: run => wheel_run
   end type wheel_runner_type
@@ -107,8 +105,6 @@ contains
     type(wheel_point_type), intent(out) :: point
     type(error_type), allocatable, intent(out) :: error
     real(wp), intent(in), optional :: f_center
-    type(hbm_settings_type) :: hset
-    type(hbm_point_type) :: h1
     type(wheel_runner_type) :: runner
     real(wp) :: fc
     integer :: best, runs
@@ -116,13 +112,8 @@ contains
     call system_clock(c0, rate)
     call check_wheel(st, element, F_E, blades, engine_order, settings, error)
     if (allocated(error)) return
-    if (present(f_center)) then
-      fc = f_center
-    else
-      call hbm_peak(st, element, f_min, f_max, F_E, hset, h1, error)
-      if (allocated(error)) return
-      fc = h1%f_res
-    end if
+    call peak_centre(st, element, f_min, f_max, F_E, fc, error, f_center)
+    if (allocated(error)) return
     select type (element)
     type is (contact_element_type)
       runner%element => element
@@ -132,7 +123,7 @@ contains
     runner%blades = blades
     runner%engine_order = engine_order
     runner%settings = settings
-    allocate(runner%points(16))
+    allocate(runner%points(0))
     call dti_peak_search(runner, fc, settings, best, runs, error)
     if (allocated(error)) return
     point = runner%points(best)
@@ -146,19 +137,11 @@ contains
     real(wp), intent(in) :: f
     real(wp), intent(out) :: gamma_1
     type(error_type), allocatable, intent(out) :: error
-    type(wheel_point_type), allocatable :: grown(:)
     type(wheel_point_type) :: p
     call integrate_wheel(self%st, self%element, 2.0_wp*pi*f, self%F_E, self%blades, &
       & self%engine_order, self%settings, p, error)
     gamma_1 = p%gamma_1
-    if (allocated(error)) return
-    if (self%n == size(self%points)) then
-      allocate(grown(2*self%n))
-      grown(1:self%n) = self%points
-      call move_alloc(grown, self%points)
-    end if
-    self%n = self%n + 1
-    self%points(self%n) = p
+    if (.not. allocated(error)) self%points = [self%points, p]
   end subroutine wheel_run
 
   subroutine check_wheel(st, element, F_E, blades, engine_order, settings, error)
@@ -209,17 +192,17 @@ contains
     type(dti_settings_type), intent(in) :: set
     type(wheel_point_type), intent(out) :: point
     type(error_type), allocatable, intent(out) :: error
-    real(wp), allocatable :: Keff(:,:), Bp(:,:), XB(:,:), q(:,:), v(:,:), a(:,:), qlin(:,:)
-    real(wp), allocatable :: w1(:), w2(:), r(:), qn(:), an(:), sK(:), sM(:)
+    real(wp), allocatable :: Bp(:,:), XB(:,:), q(:,:), v(:,:), a(:,:), qlin(:,:)
+    real(wp), allocatable :: r(:), qn(:)
     real(wp), allocatable :: Pc(:,:), plin(:,:), Aw(:,:), Tg(:,:,:)
     type(damper_state_type), allocatable :: dam(:), trial(:)
     type(step_trace_type), allocatable :: tr(:)
     type(ss_tracker_type), allocatable :: ss(:)
-    complex(wp), allocatable :: phase(:)
-    complex(wp) :: I0, I1, I2, ratio
-    real(wp) :: dt, a0, a1, a2, T, Cpp(3,3), Aref(3), Aload(3,2), phi, gmax, gmin, floor_p(3), pscale(3)
+    type(newmark_type) :: nm
+    complex(wp) :: ratio
+    real(wp) :: Cpp(3,3), Aref(3), Aload(3,2), phi, gmax, gmin, floor_p(3), pscale(3)
     logical :: held(3)
-    integer :: n, Ns, j, per, good, g, b, k
+    integer :: n, j, per, good, g, b, k
     logical :: lifted
 
     point%F_E = F_E
@@ -230,13 +213,7 @@ contains
     point%phi = phi
     n = st%ndof
     g = st%gamma_dof
-    Ns = set%steps_per_period
-    T = 2.0_wp*pi/omega
-    dt = T/Ns
-    a0 = 4.0_wp/dt**2
-    a1 = 2.0_wp/dt
-    a2 = 4.0_wp/dt
-    call keff_factor(st, a0, a1, Keff, error)
+    call newmark_setup(st, omega, set, nm, error)
     if (allocated(error)) return
     allocate(Bp(n, 3), XB(n, 3))
     Bp = 0.0_wp
@@ -247,25 +224,13 @@ contains
     Bp(g, 3) = 1.0_wp
     XB = Bp
     do k = 1, 3
-      call keff_solve(st, Keff, XB(:, k), error)
+      call keff_solve(st, nm%Keff, XB(:, k), error)
       if (allocated(error)) return
     end do
     Cpp = matmul(transpose(Bp), XB)
     held = [(all(Bp(:, k) == 0.0_wp), k = 1, 3)]
-    call step_integrals(omega, dt, I0, I1, I2)
-    allocate(phase(0:Ns-1))
-    do j = 0, Ns - 1
-      phase(j) = exp(cmplx(0.0_wp, -2.0_wp*pi*j/Ns, wp))
-    end do
-    if (st%has_stress) then
-      sK = st%s_K
-      sM = st%s_M
-    else
-      allocate(sK(n), sM(n))
-      sK = 0.0_wp; sM = 0.0_wp
-    end if
     allocate(q(n, 0:nb-1), v(n, 0:nb-1), a(n, 0:nb-1), qlin(n, 0:nb-1))
-    allocate(w1(n), w2(n), r(n), qn(n), an(n))
+    allocate(r(n), qn(n))
     allocate(Pc(3, 0:nb-1), plin(3, 0:nb-1), Aw(3, 0:nb-1), Tg(6, 6, 0:nb-1))
     allocate(dam(0:nb-1), trial(0:nb-1), tr(0:nb-1), ss(0:nb-1))
     ! every damper virgin, CF ramped with the blades at rest: the element's loaded state
@@ -287,15 +252,11 @@ contains
           & gmax=q(g, b))
       end do
       lifted = .false.
-      do j = 0, Ns - 1
+      do j = 0, nm%Ns - 1
         do b = 0, nb - 1
-          w1 = a0*q(:, b) + a2*v(:, b) + a(:, b)
-          w2 = a1*q(:, b) + v(:, b)
-          call band_matvec(st%kd, st%M, w1, r)
-          call band_matvec(st%kd, st%C, w2, w1)
-          r = r + w1
-          r(st%exc_dof) = r(st%exc_dof) + F_E*sin(2.0_wp*pi*real(j + 1, wp)/Ns + b*phi)
-          call keff_solve(st, Keff, r, error)
+          call newmark_load(st, nm, q(:, b), v(:, b), a(:, b), r)
+          r(st%exc_dof) = r(st%exc_dof) + F_E*sin(2.0_wp*pi*real(j + 1, wp)/nm%Ns + b*phi)
+          call keff_solve(st, nm%Keff, r, error)
           if (allocated(error)) return
           qlin(:, b) = r
           plin(:, b) = matmul(r, Bp)
@@ -305,12 +266,7 @@ contains
         do b = 0, nb - 1
           qn = qlin(:, b) - matmul(XB, Aw(:, b))
           qn(g) = Pc(3, b)
-          an = a0*(qn - q(:, b)) - a2*v(:, b) - a(:, b)
-          call trace_step(tr(b), st%has_stress, sK, sM, phase(j), I0, I1, I2, dt, g, q(:, b), &
-            & v(:, b), a(:, b), qn, an)
-          v(:, b) = v(:, b) + 0.5_wp*dt*(a(:, b) + an)
-          q(:, b) = qn
-          a(:, b) = an
+          call newmark_commit(st, nm, j, tr(b), q(:, b), v(:, b), a(:, b), qn)
           lifted = lifted .or. any(trial(b)%mode == CONTACT_OPEN)
         end do
         dam = trial
@@ -322,8 +278,8 @@ contains
         end if
       end do
       do b = 0, nb - 1
-        tr(b)%G1 = 2.0_wp*tr(b)%G1/T
-        tr(b)%S1 = 2.0_wp*tr(b)%S1/T
+        tr(b)%G1 = 2.0_wp*tr(b)%G1/nm%T
+        tr(b)%S1 = 2.0_wp*tr(b)%S1/nm%T
         call ss_track(ss(b), tr(b)%G1)
       end do
       if (per >= set%min_periods .and. &
@@ -339,7 +295,7 @@ contains
     point%sigma_1 = abs(tr(0)%S1)
     point%lift_off = lifted
     point%gamma_max = tr(0)%gmax
-    point%gamma_0 = tr(0)%gmean/T
+    point%gamma_0 = tr(0)%gmean/nm%T
     point%ss_error = maxval([(ss_relative(ss(b)%est, tr(b)%G1), b = 0, nb - 1)])
     point%gamma_b = [(tr(b)%G1, b = 0, nb - 1)]
     point%sigma_b = [(tr(b)%S1, b = 0, nb - 1)]

@@ -83,12 +83,14 @@ def build_parser() -> argparse.ArgumentParser:
 
 def _add_wheel_options(p) -> None:
     """--blades N --engine-order EO (the whole wheel in time), unless already there."""
-    if "--blades" not in p._option_string_actions:
-        p.add_argument("--blades", type=int, default=None, metavar="N",
-                       help="blades of the wheel (2..10000): integrate the whole wheel")
-    if "--engine-order" not in p._option_string_actions:
-        p.add_argument("--engine-order", dest="engine_order", type=int, default=None,
-                       metavar="EO", help="engine order: interblade phase 2 pi EO/N")
+    for flag, kw in (("--blades", dict(metavar="N", help="blades of the wheel (2..10000): "
+                                       "integrate the whole wheel")),
+                     ("--engine-order", dict(dest="engine_order", metavar="EO",
+                                             help="engine order: interblade phase 2 pi EO/N"))):
+        try:
+            p.add_argument(flag, type=int, default=None, **kw)
+        except argparse.ArgumentError:   # already an option of every command
+            pass
 
 
 def main(argv=None) -> int:
