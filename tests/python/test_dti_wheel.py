@@ -61,6 +61,7 @@ def test_cli_blade_spread(capsys):
     (["--blades", "4"], "--engine-order"),
     (["--engine-order", "1"], "--blades"),
     (["--blades", "4", "--engine-order", "-1"], "--engine-order"),
+    (["--blades", "101", "--engine-order", "1"], "blades must be in 2..100"),
 ])
 def test_cli_bad_wheel(extra, needle, capsys):
     assert main(["dti", CASE, "--forces", "5", "--freq", "196", *extra]) == 2

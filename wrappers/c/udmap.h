@@ -431,7 +431,7 @@ typedef struct {
   double phase_spread;    /* largest |arg(Gamma_{j+1}/Gamma_j) - phi| [rad] */
 } udmap_dti_wheel_point;
 
-/* The wheel at f_exc [Hz] for n forces (blades 2..10000, engine_order >= 0; the asymmetric
+/* The wheel at f_exc [Hz] for n forces (blades 2..100, engine_order >= 0; the asymmetric
  * damper only: jenkins and table dampers do not depend on phi). */
 int udmap_dti_wheel_response(udmap_error error, udmap_blade blade, udmap_contact contact,
                              const udmap_dti_settings *settings, double f_exc, int blades,

@@ -35,8 +35,9 @@ module udmap_baseline_wheel
   private
   public :: wheel_point_type, wheel_response, wheel_peak, damper_tangent
 
-  !> Most blades of a wheel (as analysis.blades).
-  integer, parameter :: MAX_BLADES = 10000
+  !> Most blades of a wheel integrated in time: each step's Newton solve on the 3N platform
+  !> coordinates is dense (analysis.blades itself goes to 10000).
+  integer, parameter :: MAX_BLADES = 100
 
   !> Steady state of the wheel: blade 0's point (dti_point_type) and the blades' spread.
   type, extends(dti_point_type) :: wheel_point_type
@@ -154,8 +155,8 @@ contains
     call check_inputs(st, F_E, settings, error)
     if (allocated(error)) return
     if (blades < 2 .or. blades > MAX_BLADES) then
-      call fatal_error(error, "dti: blades must be in 2.."//itoa(MAX_BLADES)//", got "// &
-        & itoa(blades), UDMAP_EINPUT)
+      call fatal_error(error, "dti: blades must be in 2.."//itoa(MAX_BLADES)//" for the "// &
+        & "whole wheel in time, got "//itoa(blades), UDMAP_EINPUT)
       return
     end if
     if (engine_order < 0) then
