@@ -21,6 +21,7 @@ program tester
   use test_hbm_blade_a, only: collect_hbm_blade_a
   use test_hbm_chain, only: collect_hbm_chain
   use test_hbm_dti, only: collect_hbm_dti
+  use test_hbm_wheel, only: collect_hbm_wheel
   use test_hbm_oscillator, only: collect_hbm_oscillator
   use test_hbm_stress, only: collect_hbm_stress
   use test_hbm_stress_contact, only: collect_hbm_stress_contact
@@ -60,6 +61,7 @@ program tester
     & new_testsuite("hbm_oscillator", collect_hbm_oscillator), &
     & new_testsuite("hbm_stress", collect_hbm_stress), &
     & new_testsuite("hbm_stress_contact", collect_hbm_stress_contact), &
+    & new_testsuite("hbm_wheel", collect_hbm_wheel), &
     & new_testsuite("mapping_backbone", collect_mapping_backbone), &
     & new_testsuite("mapping_blade_a", collect_mapping_blade_a), &
     & new_testsuite("mapping_curves", collect_mapping_curves), &

@@ -443,6 +443,33 @@ int udmap_wave_hbm_peaks(udmap_error error, udmap_blade blade, udmap_damper damp
                          const double* f_start, double* gamma_P, double* f_res, double* sigma_a,
                          double* u_E, int* iterations);
 
+/* The whole wheel in time (PHYSICS.md 2.6, 7): `blades` blades and as many asymmetric dampers
+ * (damper j between blade j's flat side and blade j + 1's curved side), blade j under
+ * F_E sin(2 pi f t + j phi), phi = 2 pi engine_order / blades, from rest to steady state.
+ * Blade 0's point and the spread between the blades (a wave that stays traveling has them 0). */
+typedef struct {
+  udmap_dti_point blade0; /* blade 0's steady state (ss_error: the largest over the blades) */
+  int blades;             /* N */
+  int engine_order;       /* EO */
+  double phi;             /* interblade phase angle 2 pi (EO mod N) / N [rad] */
+  double gamma_spread;    /* (max - min)/max of the blades' first-harmonic |gamma_P| */
+  double sigma_spread;    /* the same for the first-harmonic stress */
+  double phase_spread;    /* largest |arg(Gamma_{j+1}/Gamma_j) - phi| [rad] */
+} udmap_dti_wheel_point;
+
+/* The wheel at f_exc [Hz] for n forces (blades 2..100, engine_order >= 0; the asymmetric
+ * damper only: jenkins and table dampers do not depend on phi). */
+int udmap_dti_wheel_response(udmap_error error, udmap_blade blade, udmap_contact contact,
+                             const udmap_dti_settings *settings, double f_exc, int blades,
+                             int engine_order, int n, const double *F_E,
+                             udmap_dti_wheel_point *points);
+/* The wheel at the frequency of blade 0's largest gamma_1, searched around f_center [Hz]
+ * (f_center <= 0: the in-phase single-harmonic peak in [f_min, f_max]). */
+int udmap_dti_wheel_peak(udmap_error error, udmap_blade blade, udmap_contact contact,
+                         const udmap_dti_settings *settings, double f_min, double f_max,
+                         double f_center, int blades, int engine_order, int n,
+                         const double *F_E, udmap_dti_wheel_point *points);
+
 /* ---------------------------------------------------------------- FE reduction */
 
 /* Platform Centred Reduction of a sparse FE blade (PHYSICS.md 1.3, paper section 2.1).

@@ -26,6 +26,10 @@ module udmap_baseline_newmark
   implicit none
   private
   public :: dti_settings_type, dti_point_type, dti_response, dti_peak
+  ! shared with the whole-wheel integration (udmap_baseline_wheel)
+  public :: dti_runner_type, dti_peak_search, peak_centre, check_inputs, keff_solve
+  public :: newmark_type, newmark_setup, newmark_load, newmark_commit
+  public :: ss_tracker_type, ss_track, ss_relative, step_trace_type
 
   !> Settings of the time integration.
   type :: dti_settings_type
@@ -53,6 +57,59 @@ module udmap_baseline_newmark
     real(wp) :: seconds = 0.0_wp    !< wall time [s]
   end type dti_point_type
 
+  !> One time integration at a frequency, for the peak search: run(f, gamma_1) integrates at
+  !> f [Hz] and keeps its point (the search returns the index of the best run, 1-based).
+  type, abstract :: dti_runner_type
+  contains
+    procedure(dti_run), deferred :: run
+  end type dti_runner_type
+
+  abstract interface
+    subroutine dti_run(self, f, gamma_1, error)
+      import :: dti_runner_type, wp, error_type
+      class(dti_runner_type), intent(inout) :: self
+      real(wp), intent(in) :: f
+      real(wp), intent(out) :: gamma_1
+      type(error_type), allocatable, intent(out) :: error
+    end subroutine dti_run
+  end interface
+
+  !> The steady-state test of one first harmonic: successive period differences and their
+  !> contraction (module header).
+  type :: ss_tracker_type
+    complex(wp) :: G1_prev = (0.0_wp, 0.0_wp), d_prev = (0.0_wp, 0.0_wp)
+    logical :: have_prev = .false., have_d = .false.
+    real(wp) :: est = huge(1.0_wp)
+  end type ss_tracker_type
+
+  !> Running Fourier integrals of gamma_P and the stress over one period (Newmark trajectory).
+  type :: step_trace_type
+    complex(wp) :: G1 = (0.0_wp, 0.0_wp), S1 = (0.0_wp, 0.0_wp)
+    real(wp) :: gmean = 0.0_wp, gmax = 0.0_wp
+    real(wp) :: sq = 0.0_wp, sv = 0.0_wp, sa = 0.0_wp, sma = 0.0_wp
+  end type step_trace_type
+
+  !> The constants of the Newmark scheme at one frequency and the period's Fourier weights.
+  type :: newmark_type
+    integer :: Ns = 0                      !< steps per period
+    real(wp) :: T = 0, dt = 0, a0 = 0, a1 = 0, a2 = 0
+    real(wp), allocatable :: Keff(:,:)     !< K + a1 C + a0 M, factorised
+    complex(wp) :: I0 = 0, I1 = 0, I2 = 0  !< step integrals (step_integrals)
+    complex(wp), allocatable :: phase(:)   !< e^{-i 2 pi j/Ns}, j = 0..Ns-1
+    real(wp), allocatable :: sK(:), sM(:)  !< stress rows (zero without stress)
+  end type newmark_type
+
+  !> The single blade's runs of the peak search, each run's point kept.
+  type, extends(dti_runner_type) :: blade_runner_type
+    type(structure_type), pointer :: st => null()
+    class(hysteretic_element_type), pointer :: element => null()
+    real(wp) :: F_E = 0.0_wp
+    type(dti_settings_type) :: settings
+    type(dti_point_type), allocatable :: points(:)
+  contains
+    procedure :: run => blade_run
+  end type blade_runner_type
+
 contains
 
   !> Steady-state response at f [Hz] to F_E sin(2 pi f t) at E, from rest.
@@ -79,144 +136,182 @@ contains
   !> The frequency of the largest gamma_1 near the single-harmonic peak: the H = 1 standard
   !> method gives the centre, then Brent's maximisation over time integrations from rest.
   subroutine dti_peak(st, element, f_min, f_max, F_E, settings, point, error, f_center)
-    type(structure_type), intent(in) :: st
-    class(hysteretic_element_type), intent(in) :: element
+    type(structure_type), intent(in), target :: st
+    class(hysteretic_element_type), intent(in), target :: element
     real(wp), intent(in) :: f_min, f_max, F_E
     type(dti_settings_type), intent(in) :: settings
     type(dti_point_type), intent(out) :: point
     type(error_type), allocatable, intent(out) :: error
     real(wp), intent(in), optional :: f_center
-    type(hbm_settings_type) :: hset
-    type(hbm_point_type) :: h1
-    type(dti_point_type) :: pa, pb, pc, pt
-    real(wp) :: fc, a, b, c, w
-    integer :: runs, k
+    type(blade_runner_type) :: runner
+    real(wp) :: fc
+    integer :: best, runs
     integer(8) :: c0, rate
     call system_clock(c0, rate)
     call check_inputs(st, F_E, settings, error)
     if (allocated(error)) return
+    call peak_centre(st, element, f_min, f_max, F_E, fc, error, f_center)
+    if (allocated(error)) return
+    runner%st => st
+    runner%element => element
+    runner%F_E = F_E
+    runner%settings = settings
+    allocate(runner%points(0))
+    call dti_peak_search(runner, fc, settings, best, runs, error)
+    if (allocated(error)) return
+    point = runner%points(best)
+    point%runs = runs
+    point%seconds = seconds_since(c0, rate)
+  end subroutine dti_peak
+
+  !> The centre of the peak search: f_center if given, else the H = 1 standard method's peak.
+  subroutine peak_centre(st, element, f_min, f_max, F_E, fc, error, f_center)
+    type(structure_type), intent(in) :: st
+    class(hysteretic_element_type), intent(in) :: element
+    real(wp), intent(in) :: f_min, f_max, F_E
+    real(wp), intent(out) :: fc
+    type(error_type), allocatable, intent(out) :: error
+    real(wp), intent(in), optional :: f_center
+    type(hbm_settings_type) :: hset
+    type(hbm_point_type) :: h1
     if (present(f_center)) then
       fc = f_center
     else
+      fc = 0.0_wp
       call hbm_peak(st, element, f_min, f_max, F_E, hset, h1, error)
       if (allocated(error)) return
       fc = h1%f_res
     end if
+  end subroutine peak_centre
+
+  !> One run of the single blade's peak search.
+  subroutine blade_run(self, f, gamma_1, error)
+    class(blade_runner_type), intent(inout) :: self
+    real(wp), intent(in) :: f
+    real(wp), intent(out) :: gamma_1
+    type(error_type), allocatable, intent(out) :: error
+    type(dti_point_type) :: p
+    call integrate(self%st, self%element, 2.0_wp*pi*f, self%F_E, self%settings, p, error)
+    gamma_1 = p%gamma_1
+    if (.not. allocated(error)) self%points = [self%points, p]
+  end subroutine blade_run
+
+  !> The peak search around the centre fc: a bracket (the centre above both ends; widened
+  !> towards the higher side if not), then Brent's parabolic/golden maximisation of gamma_1
+  !> (Numerical Recipes). `best` is the index of the best run (runs numbered from 1).
+  subroutine dti_peak_search(runner, fc, settings, best, runs, error)
+    class(dti_runner_type), intent(inout) :: runner
+    real(wp), intent(in) :: fc
+    type(dti_settings_type), intent(in) :: settings
+    integer, intent(out) :: best, runs
+    type(error_type), allocatable, intent(out) :: error
+    real(wp), parameter :: cgold = 0.3819660112501051_wp
+    real(wp) :: a, b, c, w, ga, gb, gc
+    real(wp) :: lo, hi, x, v, ww, fx, fv, fw, u, fu, d, e, xm, tol1, tol2, r, q, pp, etemp
+    integer :: k, ia, ib, ic, iu, it
+    best = 0
+    runs = 0
     if (.not.(fc > 0.0_wp) .or. fc > huge(1.0_wp)) then
       call fatal_error(error, "dti: the centre frequency must be positive", UDMAP_EINPUT)
       return
     end if
-    ! bracket: the centre above both ends; widen towards the higher side if not
     w = settings%peak_window
     a = fc*(1.0_wp - w); b = fc; c = fc*(1.0_wp + w)
-    runs = 0
-    call run(a, pa); if (allocated(error)) return
-    call run(b, pb); if (allocated(error)) return
-    call run(c, pc); if (allocated(error)) return
+    call run(a, ga, ia); if (allocated(error)) return
+    call run(b, gb, ib); if (allocated(error)) return
+    call run(c, gc, ic); if (allocated(error)) return
     do k = 1, 20
-      if (pb%gamma_1 >= pa%gamma_1 .and. pb%gamma_1 >= pc%gamma_1) exit
-      if (pa%gamma_1 > pc%gamma_1) then
-        c = b; pc = pb; b = a; pb = pa
+      if (gb >= ga .and. gb >= gc) exit
+      if (ga > gc) then
+        c = b; gc = gb; ic = ib; b = a; gb = ga; ib = ia
         a = b - 1.618_wp*(c - b)
         if (a <= 0.0_wp) exit
-        call run(a, pa); if (allocated(error)) return
+        call run(a, ga, ia); if (allocated(error)) return
       else
-        a = b; pa = pb; b = c; pb = pc
+        a = b; ga = gb; ia = ib; b = c; gb = gc; ib = ic
         c = b + 1.618_wp*(b - a)
-        call run(c, pc); if (allocated(error)) return
+        call run(c, gc, ic); if (allocated(error)) return
       end if
     end do
-    if (.not.(pb%gamma_1 >= pa%gamma_1 .and. pb%gamma_1 >= pc%gamma_1)) then
+    if (.not.(gb >= ga .and. gb >= gc)) then
       call fatal_error(error, "dti: no maximum of gamma_1 found near the single-harmonic peak", &
         & UDMAP_EPHYSICS)
       return
     end if
-    call brent_max(a, b, c, pb, pt)
-    if (allocated(error)) return
-    point = pt
-    point%runs = runs
-    point%seconds = seconds_since(c0, rate)
-  contains
-    subroutine run(f, p)
-      real(wp), intent(in) :: f
-      type(dti_point_type), intent(out) :: p
-      call integrate(st, element, 2.0_wp*pi*f, F_E, settings, p, error)
-      runs = runs + 1
-    end subroutine run
-    !> Brent's parabolic/golden maximisation of gamma_1 on [a, c] around b (Numerical Recipes).
-    subroutine brent_max(a0, b0, c0_, pbest, best)
-      real(wp), intent(in) :: a0, b0, c0_
-      type(dti_point_type), intent(in) :: pbest
-      type(dti_point_type), intent(out) :: best
-      real(wp), parameter :: cgold = 0.3819660112501051_wp
-      real(wp) :: lo, hi, x, v, ww, fx, fv, fw, u, fu, d, e, xm, tol1, tol2, r, q, pp, etemp
-      type(dti_point_type) :: pu
-      integer :: it
-      lo = min(a0, c0_); hi = max(a0, c0_)
-      x = b0; v = b0; ww = b0
-      fx = -pbest%gamma_1; fv = fx; fw = fx
-      best = pbest
-      d = 0.0_wp; e = 0.0_wp
-      do it = 1, 60
-        xm = 0.5_wp*(lo + hi)
-        tol1 = settings%peak_rtol*abs(x)
-        tol2 = 2.0_wp*tol1
-        if (abs(x - xm) <= tol2 - 0.5_wp*(hi - lo)) exit
-        if (abs(e) > tol1) then
-          r = (x - ww)*(fx - fv)
-          q = (x - v)*(fx - fw)
-          pp = (x - v)*q - (x - ww)*r
-          q = 2.0_wp*(q - r)
-          if (q > 0.0_wp) pp = -pp
-          q = abs(q)
-          etemp = e
-          e = d
-          if (abs(pp) >= abs(0.5_wp*q*etemp) .or. pp <= q*(lo - x) .or. pp >= q*(hi - x)) then
-            e = merge(lo - x, hi - x, x >= xm)
-            d = cgold*e
-          else
-            d = pp/q
-            u = x + d
-            if (u - lo < tol2 .or. hi - u < tol2) d = sign(tol1, xm - x)
-          end if
-        else
+    ! Brent on [a, c] around b
+    lo = min(a, c); hi = max(a, c)
+    x = b; v = b; ww = b
+    fx = -gb; fv = fx; fw = fx
+    best = ib
+    d = 0.0_wp; e = 0.0_wp
+    do it = 1, 60
+      xm = 0.5_wp*(lo + hi)
+      tol1 = settings%peak_rtol*abs(x)
+      tol2 = 2.0_wp*tol1
+      if (abs(x - xm) <= tol2 - 0.5_wp*(hi - lo)) exit
+      if (abs(e) > tol1) then
+        r = (x - ww)*(fx - fv)
+        q = (x - v)*(fx - fw)
+        pp = (x - v)*q - (x - ww)*r
+        q = 2.0_wp*(q - r)
+        if (q > 0.0_wp) pp = -pp
+        q = abs(q)
+        etemp = e
+        e = d
+        if (abs(pp) >= abs(0.5_wp*q*etemp) .or. pp <= q*(lo - x) .or. pp >= q*(hi - x)) then
           e = merge(lo - x, hi - x, x >= xm)
           d = cgold*e
-        end if
-        if (abs(d) >= tol1) then
+        else
+          d = pp/q
           u = x + d
-        else
-          u = x + sign(tol1, d)
+          if (u - lo < tol2 .or. hi - u < tol2) d = sign(tol1, xm - x)
         end if
-        call run(u, pu)
-        if (allocated(error)) return
-        fu = -pu%gamma_1
-        if (fu <= fx) then
-          if (u >= x) then
-            lo = x
-          else
-            hi = x
-          end if
+      else
+        e = merge(lo - x, hi - x, x >= xm)
+        d = cgold*e
+      end if
+      if (abs(d) >= tol1) then
+        u = x + d
+      else
+        u = x + sign(tol1, d)
+      end if
+      call run(u, fu, iu)
+      if (allocated(error)) return
+      fu = -fu
+      if (fu <= fx) then
+        if (u >= x) then
+          lo = x
+        else
+          hi = x
+        end if
+        v = ww; fv = fw
+        ww = x; fw = fx
+        x = u; fx = fu
+        best = iu
+      else
+        if (u < x) then
+          lo = u
+        else
+          hi = u
+        end if
+        if (fu <= fw .or. ww == x) then
           v = ww; fv = fw
-          ww = x; fw = fx
-          x = u; fx = fu
-          best = pu
-        else
-          if (u < x) then
-            lo = u
-          else
-            hi = u
-          end if
-          if (fu <= fw .or. ww == x) then
-            v = ww; fv = fw
-            ww = u; fw = fu
-          else if (fu <= fv .or. v == x .or. v == ww) then
-            v = u; fv = fu
-          end if
+          ww = u; fw = fu
+        else if (fu <= fv .or. v == x .or. v == ww) then
+          v = u; fv = fu
         end if
-      end do
-    end subroutine brent_max
-  end subroutine dti_peak
+      end if
+    end do
+  contains
+    subroutine run(f, g1, idx)
+      real(wp), intent(in) :: f
+      real(wp), intent(out) :: g1
+      integer, intent(out) :: idx
+      call runner%run(f, g1, error)
+      runs = runs + 1
+      idx = runs
+    end subroutine run
+  end subroutine dti_peak_search
 
   subroutine check_inputs(st, F_E, settings, error)
     type(structure_type), intent(in) :: st
@@ -249,58 +344,25 @@ contains
     type(dti_point_type), intent(out) :: point
     type(error_type), allocatable, intent(out) :: error
     class(hysteretic_element_type), allocatable :: el, trial
-    real(wp), allocatable :: Keff(:,:), xg(:), q(:), v(:), a(:), r(:), w1(:), w2(:), qn(:), an(:)
-    real(wp), allocatable :: sK(:), sM(:)
-    complex(wp), allocatable :: phase(:)
-    complex(wp) :: I0, I1, I2, G1, S1, G1_prev, d_prev, d_cur, mu
-    real(wp) :: dt, a0, a1, a2, c, M_ref, Mr, kt, T, gam, gmean, est, sq, sv, sa, sma
-    real(wp) :: sq_n, sv_n, sa_n, sma_n, aavg, gmax_p, tv, g_lin
-    integer :: n, Ns, kd, j, p, info, good, g
-    logical :: have_prev, have_d
+    real(wp), allocatable :: xg(:), q(:), v(:), a(:), r(:), qn(:)
+    type(newmark_type) :: nm
+    type(ss_tracker_type) :: ss
+    type(step_trace_type) :: tr
+    real(wp) :: c, M_ref, Mr, kt, gam, g_lin
+    integer :: n, j, p, good, g
 
     point%F_E = F_E
     point%f = omega/(2.0_wp*pi)
     n = st%ndof
-    kd = st%kd
     g = st%gamma_dof
-    Ns = set%steps_per_period
-    T = 2.0_wp*pi/omega
-    dt = T/Ns
-    a0 = 4.0_wp/dt**2
-    a1 = 2.0_wp/dt
-    a2 = 4.0_wp/dt
-    ! effective stiffness, factorised once
-    if (kd >= 0) then
-      Keff = st%K + a1*st%C + a0*st%M
-      call dpbtrf('U', n, kd, Keff, kd+1, info)
-    else
-      Keff = st%K + a1*st%C + a0*st%M
-      call dpotrf('U', n, Keff, n, info)
-    end if
-    if (info /= 0) then
-      call fatal_error(error, "dti: dpbtrf/dpotrf failed on K + 2/dt C + 4/dt^2 M (info = "// &
-        & itoa(info)//"): M, K, C not positive definite", UDMAP_ENUMERIC)
-      return
-    end if
-    allocate(xg(n), q(n), v(n), a(n), r(n), w1(n), w2(n), qn(n), an(n))
+    call newmark_setup(st, omega, set, nm, error)
+    if (allocated(error)) return
+    allocate(xg(n), q(n), v(n), a(n), r(n), qn(n))
     xg = 0.0_wp
     xg(g) = 1.0_wp
-    call keff_solve(xg)
+    call keff_solve(st, nm%Keff, xg, error)
     if (allocated(error)) return
     c = xg(g)
-    ! Fourier weights of one step: I_k = int_0^dt tau^k e^{-i omega tau} dtau
-    call step_integrals(omega, dt, I0, I1, I2)
-    allocate(phase(0:Ns-1))
-    do j = 0, Ns - 1
-      phase(j) = exp(cmplx(0.0_wp, -2.0_wp*pi*j/Ns, wp))
-    end do
-    if (st%has_stress) then
-      sK = st%s_K
-      sM = st%s_M
-    else
-      allocate(sK(n), sM(n))
-      sK = 0.0_wp; sM = 0.0_wp
-    end if
     allocate(el, source=element)
     allocate(trial, source=element)
     call el%load(error)
@@ -308,56 +370,22 @@ contains
     M_ref = el%moment()
     kt = el%stuck_stiffness()
     q = 0.0_wp; v = 0.0_wp; a = 0.0_wp   ! at rest; the force F_E sin(omega t) starts at zero
-    sq = 0.0_wp; sv = 0.0_wp; sa = 0.0_wp; sma = 0.0_wp
-    have_prev = .false.
-    have_d = .false.
     good = 0
-    G1_prev = (0.0_wp, 0.0_wp)
-    d_prev = (0.0_wp, 0.0_wp)
-    est = huge(1.0_wp)
     do p = 1, set%max_periods
-      G1 = (0.0_wp, 0.0_wp)
-      S1 = (0.0_wp, 0.0_wp)
-      gmean = 0.0_wp
+      tr = step_trace_type(sq=tr%sq, sv=tr%sv, sa=tr%sa, sma=tr%sma, gmax=q(g))
       call el%clear_flags()
       call trial%clear_flags()
-      gmax_p = q(g)
-      do j = 0, Ns - 1
-        ! effective load at t_{n+1}
-        w1 = a0*q + a2*v + a
-        w2 = a1*q + v
-        call matvec(st%M, w1, r)
-        call matvec(st%C, w2, w1)
-        r = r + w1
-        r(st%exc_dof) = r(st%exc_dof) + F_E*sin(2.0_wp*pi*real(j + 1, wp)/Ns)
-        call keff_solve(r)
+      do j = 0, nm%Ns - 1
+        call newmark_load(st, nm, q, v, a, r)
+        r(st%exc_dof) = r(st%exc_dof) + F_E*sin(2.0_wp*pi*real(j + 1, wp)/nm%Ns)
+        call keff_solve(st, nm%Keff, r, error)
         if (allocated(error)) return
         g_lin = r(g)
         call solve_gamma(g_lin, gam, Mr, kt)
         if (allocated(error)) return
         qn = r - xg*(Mr - M_ref)
         qn(g) = gam
-        an = a0*(qn - q) - a2*v - a
-        ! Fourier integral of the step's quadratic trajectory
-        aavg = 0.5_wp*(a(g) + an(g))
-        G1 = G1 + phase(j)*(q(g)*I0 + v(g)*I1 + 0.5_wp*aavg*I2)
-        gmean = gmean + q(g)*dt + v(g)*dt**2/2.0_wp + aavg*dt**3/6.0_wp
-        gmax_p = max(gmax_p, gam)
-        if (v(g) > 0.0_wp .and. aavg < 0.0_wp) then
-          tv = -v(g)/aavg
-          if (tv < dt) gmax_p = max(gmax_p, q(g) + 0.5_wp*v(g)*tv)
-        end if
-        if (st%has_stress) then
-          sq_n = dot_product(sK, qn)
-          sa_n = dot_product(sK, an)
-          sma_n = dot_product(sM, an)
-          sv_n = dot_product(sK, v + 0.5_wp*dt*(a + an))
-          S1 = S1 + phase(j)*((sq + 0.5_wp*(sma + sma_n))*I0 + sv*I1 + 0.25_wp*(sa + sa_n)*I2)
-          sq = sq_n; sv = sv_n; sa = sa_n; sma = sma_n
-        end if
-        v = v + 0.5_wp*dt*(a + an)
-        q = qn
-        a = an
+        call newmark_commit(st, nm, j, tr, q, v, a, qn)
         call el%copy_state(trial)
         if (.not.(abs(gam) <= set%gamma_limit)) then
           call fatal_error(error, "dti: |gamma_P| exceeds gamma_limit: the response is "// &
@@ -366,26 +394,10 @@ contains
           return
         end if
       end do
-      G1 = 2.0_wp*G1/T
-      S1 = 2.0_wp*S1/T
-      ! steady state: remaining error from the contraction of successive differences
-      if (have_prev) then
-        d_cur = G1 - G1_prev
-        if (have_d .and. abs(d_prev) > 0.0_wp) then
-          mu = d_cur/d_prev
-          if (abs(mu) < 1.0_wp) then
-            est = abs(d_cur)*abs(mu)/abs(1.0_wp - mu)
-          else
-            est = huge(1.0_wp)
-          end if
-        end if
-        if (abs(d_cur) == 0.0_wp) est = 0.0_wp
-        d_prev = d_cur
-        have_d = .true.
-      end if
-      G1_prev = G1
-      have_prev = .true.
-      if (p >= set%min_periods .and. est <= set%ss_tol*abs(G1)) then
+      tr%G1 = 2.0_wp*tr%G1/nm%T
+      tr%S1 = 2.0_wp*tr%S1/nm%T
+      call ss_track(ss, tr%G1)
+      if (p >= set%min_periods .and. ss%est <= set%ss_tol*abs(tr%G1)) then
         good = good + 1
       else
         good = 0
@@ -393,57 +405,18 @@ contains
       point%periods = p
       if (good >= 3) exit
     end do
-    point%gamma_1 = abs(G1)
-    point%sigma_1 = abs(S1)
+    point%gamma_1 = abs(tr%G1)
+    point%sigma_1 = abs(tr%S1)
     point%lift_off = el%lifted()
-    point%gamma_max = gmax_p
-    point%gamma_0 = gmean/T
-    ! relative remaining error, without overflow when no estimate exists yet
-    if (est < 1.0e-3_wp*huge(1.0_wp)*max(abs(G1), tiny(1.0_wp))) then
-      point%ss_error = est/max(abs(G1), tiny(1.0_wp))
-    else
-      point%ss_error = huge(1.0_wp)
-    end if
+    point%gamma_max = tr%gmax
+    point%gamma_0 = tr%gmean/nm%T
+    point%ss_error = ss_relative(ss%est, tr%G1)
     if (good < 3) then
       call fatal_error(error, "dti: no steady state within max_periods = "// &
         & itoa(set%max_periods)//" periods (raise max_periods or ss_tol)", UDMAP_ENUMERIC)
       return
     end if
   contains
-    subroutine keff_solve(x)
-      real(wp), intent(inout) :: x(:)
-      integer :: inf
-      if (kd >= 0) then
-        call dpbtrs('U', n, kd, 1, Keff, kd+1, x, n, inf)
-      else
-        call dpotrs('U', n, 1, Keff, n, x, n, inf)
-      end if
-      if (inf /= 0) call fatal_error(error, "dti: dpbtrs/dpotrs failed", UDMAP_ENUMERIC)
-    end subroutine keff_solve
-
-    !> y = A x for the symmetric matrix A (st%M or st%C, in the structure's storage).
-    subroutine matvec(A, x, y)
-      real(wp), intent(in) :: A(:,:)
-      real(wp), intent(in) :: x(:)
-      real(wp), intent(out) :: y(:)
-      integer :: jj, ii, lo
-      real(wp) :: s
-      if (kd < 0) then
-        y = matmul(A, x)
-        return
-      end if
-      y = 0.0_wp
-      do jj = 1, n
-        lo = max(1, jj - kd)
-        s = 0.0_wp
-        do ii = lo, jj - 1
-          y(ii) = y(ii) + A(kd+1+ii-jj, jj)*x(jj)
-          s = s + A(kd+1+ii-jj, jj)*x(ii)
-        end do
-        y(jj) = y(jj) + s + A(kd+1, jj)*x(jj)
-      end do
-    end subroutine matvec
-
     !> gamma + c (M_r(gamma) - M_ref) = g_lin along the path from the committed state.
     subroutine solve_gamma(glin, gam_out, M_out, kt_io)
       real(wp), intent(in) :: glin
@@ -483,6 +456,183 @@ contains
       kt_io = ktx
     end subroutine solve_gamma
   end subroutine integrate
+
+  !> The scheme at omega [rad/s]: step, coefficients, K_eff = K + a1 C + a0 M factorised
+  !> (banded or dense Cholesky), the step's Fourier weights and the stress rows.
+  subroutine newmark_setup(st, omega, set, nm, error)
+    type(structure_type), intent(in) :: st
+    real(wp), intent(in) :: omega
+    type(dti_settings_type), intent(in) :: set
+    type(newmark_type), intent(out) :: nm
+    type(error_type), allocatable, intent(out) :: error
+    integer :: info, j
+    nm%Ns = set%steps_per_period
+    nm%T = 2.0_wp*pi/omega
+    nm%dt = nm%T/nm%Ns
+    nm%a0 = 4.0_wp/nm%dt**2
+    nm%a1 = 2.0_wp/nm%dt
+    nm%a2 = 4.0_wp/nm%dt
+    nm%Keff = st%K + nm%a1*st%C + nm%a0*st%M
+    if (st%kd >= 0) then
+      call dpbtrf('U', st%ndof, st%kd, nm%Keff, st%kd+1, info)
+    else
+      call dpotrf('U', st%ndof, nm%Keff, st%ndof, info)
+    end if
+    if (info /= 0) then
+      call fatal_error(error, "dti: dpbtrf/dpotrf failed on K + 2/dt C + 4/dt^2 M (info = "// &
+        & itoa(info)//"): M, K, C not positive definite", UDMAP_ENUMERIC)
+      return
+    end if
+    call step_integrals(omega, nm%dt, nm%I0, nm%I1, nm%I2)
+    allocate(nm%phase(0:nm%Ns-1))
+    do j = 0, nm%Ns - 1
+      nm%phase(j) = exp(cmplx(0.0_wp, -2.0_wp*pi*j/nm%Ns, wp))
+    end do
+    if (st%has_stress) then
+      nm%sK = st%s_K
+      nm%sM = st%s_M
+    else
+      allocate(nm%sK(st%ndof), nm%sM(st%ndof))
+      nm%sK = 0.0_wp; nm%sM = 0.0_wp
+    end if
+  end subroutine newmark_setup
+
+  !> The effective load at t_{n+1} without the excitation: M (a0 q + a2 v + a) + C (a1 q + v).
+  subroutine newmark_load(st, nm, q, v, a, r)
+    type(structure_type), intent(in) :: st
+    type(newmark_type), intent(in) :: nm
+    real(wp), intent(in) :: q(:), v(:), a(:)
+    real(wp), intent(out) :: r(:)
+    real(wp) :: w1(size(q)), w2(size(q))
+    w1 = nm%a0*q + nm%a2*v + a
+    w2 = nm%a1*q + v
+    call band_matvec(st%kd, st%M, w1, r)
+    call band_matvec(st%kd, st%C, w2, w1)
+    r = r + w1
+  end subroutine newmark_load
+
+  !> Step j done: the acceleration of the new displacement qn, the step's Fourier integrals,
+  !> and (q, v, a) moved on.
+  subroutine newmark_commit(st, nm, j, tr, q, v, a, qn)
+    type(structure_type), intent(in) :: st
+    type(newmark_type), intent(in) :: nm
+    integer, intent(in) :: j
+    type(step_trace_type), intent(inout) :: tr
+    real(wp), intent(inout) :: q(:), v(:), a(:)
+    real(wp), intent(in) :: qn(:)
+    real(wp) :: an(size(q))
+    an = nm%a0*(qn - q) - nm%a2*v - a
+    call trace_step(tr, st%has_stress, nm%sK, nm%sM, nm%phase(j), nm%I0, nm%I1, nm%I2, nm%dt, &
+      & st%gamma_dof, q, v, a, qn, an)
+    v = v + 0.5_wp*nm%dt*(a + an)
+    q = qn
+    a = an
+  end subroutine newmark_commit
+
+  !> x := K_eff^-1 x with the factor of newmark_setup.
+  subroutine keff_solve(st, Keff, x, error)
+    type(structure_type), intent(in) :: st
+    real(wp), intent(in) :: Keff(:,:)
+    real(wp), intent(inout) :: x(:)
+    type(error_type), allocatable, intent(out) :: error
+    integer :: inf, n
+    n = st%ndof
+    if (st%kd >= 0) then
+      call dpbtrs('U', n, st%kd, 1, Keff, st%kd+1, x, n, inf)
+    else
+      call dpotrs('U', n, 1, Keff, n, x, n, inf)
+    end if
+    if (inf /= 0) call fatal_error(error, "dti: dpbtrs/dpotrs failed", UDMAP_ENUMERIC)
+  end subroutine keff_solve
+
+  !> y = A x for a symmetric matrix A in the structure's storage (kd >= 0: band 'U').
+  pure subroutine band_matvec(kd, A, x, y)
+    integer, intent(in) :: kd
+    real(wp), intent(in) :: A(:,:)
+    real(wp), intent(in) :: x(:)
+    real(wp), intent(out) :: y(:)
+    integer :: jj, ii, lo, n
+    real(wp) :: s
+    if (kd < 0) then
+      y = matmul(A, x)
+      return
+    end if
+    n = size(x)
+    y = 0.0_wp
+    do jj = 1, n
+      lo = max(1, jj - kd)
+      s = 0.0_wp
+      do ii = lo, jj - 1
+        y(ii) = y(ii) + A(kd+1+ii-jj, jj)*x(jj)
+        s = s + A(kd+1+ii-jj, jj)*x(ii)
+      end do
+      y(jj) = y(jj) + s + A(kd+1, jj)*x(jj)
+    end do
+  end subroutine band_matvec
+
+  !> Adds one Newmark step (q, v, a) -> (qn, an) to the period's Fourier integrals of DOF g
+  !> (exact for the step's quadratic trajectory), its mean and maximum, and of the stress.
+  pure subroutine trace_step(tr, has_stress, sK, sM, ph, I0, I1, I2, dt, g, q, v, a, qn, an)
+    type(step_trace_type), intent(inout) :: tr
+    logical, intent(in) :: has_stress
+    real(wp), intent(in) :: sK(:), sM(:), dt
+    complex(wp), intent(in) :: ph, I0, I1, I2
+    integer, intent(in) :: g
+    real(wp), intent(in) :: q(:), v(:), a(:), qn(:), an(:)
+    real(wp) :: aavg, tv, sq_n, sv_n, sa_n, sma_n
+    aavg = 0.5_wp*(a(g) + an(g))
+    tr%G1 = tr%G1 + ph*(q(g)*I0 + v(g)*I1 + 0.5_wp*aavg*I2)
+    tr%gmean = tr%gmean + q(g)*dt + v(g)*dt**2/2.0_wp + aavg*dt**3/6.0_wp
+    tr%gmax = max(tr%gmax, qn(g))
+    if (v(g) > 0.0_wp .and. aavg < 0.0_wp) then
+      tv = -v(g)/aavg
+      if (tv < dt) tr%gmax = max(tr%gmax, q(g) + 0.5_wp*v(g)*tv)
+    end if
+    if (has_stress) then
+      sq_n = dot_product(sK, qn)
+      sa_n = dot_product(sK, an)
+      sma_n = dot_product(sM, an)
+      sv_n = dot_product(sK, v + 0.5_wp*dt*(a + an))
+      tr%S1 = tr%S1 + ph*((tr%sq + 0.5_wp*(tr%sma + sma_n))*I0 + tr%sv*I1 + &
+        & 0.25_wp*(tr%sa + sa_n)*I2)
+      tr%sq = sq_n; tr%sv = sv_n; tr%sa = sa_n; tr%sma = sma_n
+    end if
+  end subroutine trace_step
+
+  !> Steady state: the remaining error of G1 estimated from the contraction of successive
+  !> period differences (module header).
+  pure subroutine ss_track(t, G1)
+    type(ss_tracker_type), intent(inout) :: t
+    complex(wp), intent(in) :: G1
+    complex(wp) :: d_cur, mu
+    if (t%have_prev) then
+      d_cur = G1 - t%G1_prev
+      if (t%have_d .and. abs(t%d_prev) > 0.0_wp) then
+        mu = d_cur/t%d_prev
+        if (abs(mu) < 1.0_wp) then
+          t%est = abs(d_cur)*abs(mu)/abs(1.0_wp - mu)
+        else
+          t%est = huge(1.0_wp)
+        end if
+      end if
+      if (abs(d_cur) == 0.0_wp) t%est = 0.0_wp
+      t%d_prev = d_cur
+      t%have_d = .true.
+    end if
+    t%G1_prev = G1
+    t%have_prev = .true.
+  end subroutine ss_track
+
+  !> The estimate relative to |G1|, without overflow when no estimate exists yet.
+  pure real(wp) function ss_relative(est, G1) result(r)
+    real(wp), intent(in) :: est
+    complex(wp), intent(in) :: G1
+    if (est < 1.0e-3_wp*huge(1.0_wp)*max(abs(G1), tiny(1.0_wp))) then
+      r = est/max(abs(G1), tiny(1.0_wp))
+    else
+      r = huge(1.0_wp)
+    end if
+  end function ss_relative
 
   !> I_k = int_0^dt tau^k e^{-i omega tau} dtau, k = 0, 1, 2 (power series, omega dt < 1).
   pure subroutine step_integrals(omega, dt, I0, I1, I2)

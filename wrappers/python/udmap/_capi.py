@@ -109,6 +109,12 @@ class DtiPoint(ctypes.Structure):
                 ("runs", _ci), ("seconds", _cd), ("lift_off", _ci)]
 
 
+class DtiWheelPoint(ctypes.Structure):
+    """udmap_dti_wheel_point."""
+    _fields_ = [("blade0", DtiPoint), ("blades", _ci), ("engine_order", _ci), ("phi", _cd),
+                ("gamma_spread", _cd), ("sigma_spread", _cd), ("phase_spread", _cd)]
+
+
 # ---------------------------------------------------------------------------- functions
 # errors and version
 get_version = declare("udmap_get_version", [], _ci)
@@ -209,6 +215,12 @@ dti_response = declare("udmap_dti_response", [vp, vp, vp, ctypes.POINTER(DtiSett
                                               c_double_p, ctypes.POINTER(DtiPoint)])
 dti_peak = declare("udmap_dti_peak", [vp, vp, vp, ctypes.POINTER(DtiSettings), _cd, _cd, _ci,
                                       c_double_p, ctypes.POINTER(DtiPoint)])
+dti_wheel_response = declare("udmap_dti_wheel_response",
+                             [vp, vp, vp, ctypes.POINTER(DtiSettings), _cd, _ci, _ci, _ci,
+                              c_double_p, ctypes.POINTER(DtiWheelPoint)])
+dti_wheel_peak = declare("udmap_dti_wheel_peak",
+                         [vp, vp, vp, ctypes.POINTER(DtiSettings), _cd, _cd, _cd, _ci, _ci, _ci,
+                          c_double_p, ctypes.POINTER(DtiWheelPoint)])
 
 wave_hbm_peaks = declare("udmap_wave_hbm_peaks",
                          [vp, vp, vp, _cd, _cd, _cd, _ci, _ci, c_double_p, c_double_p,

@@ -32,6 +32,7 @@ HbmSettings = _capi.HbmSettings
 HbmPoint = _capi.HbmPoint
 DtiSettings = _capi.DtiSettings
 DtiPoint = _capi.DtiPoint
+DtiWheelPoint = _capi.DtiWheelPoint
 _c_double_p = _capi.c_double_p
 
 
@@ -260,31 +261,74 @@ def dti(blade, contact, F_E: Iterable[float], freq: float | None = None, peak: b
     callable, called with 1 after each force.
     Returns dicts {F_E, f, gamma_1, sigma_1, gamma_max, gamma_0, ss_error, periods, runs,
     seconds, lift_off}."""
+    def call(err, s, ptr, pts):
+        if peak:
+            return _capi.dti_peak(err.ptr, _blade_ptr(blade), contact.ptr, ctypes.byref(s),
+                                  float(f_min), float(f_max), 1, ptr, pts)
+        return _capi.dti_response(err.ptr, _blade_ptr(blade), contact.ptr, ctypes.byref(s),
+                                  float(freq), 1, ptr, pts)
     contact = _contact(contact)
+    points = _dti_points(F_E, freq, peak, f_min, f_max, progress, settings, DtiPoint, call)
+    return [_dti_dict(p) for p in points]
+
+
+def dti_wheel(blade, contact, F_E: Iterable[float], blades: int, engine_order: int,
+              freq: float | None = None, peak: bool = False, f_min: float | None = None,
+              f_max: float | None = None, f_center: float | None = None, progress=None,
+              **settings) -> list[dict]:
+    """The whole wheel in time (PHYSICS.md 2.6, 7): `blades` blades and dampers, blade j under
+    F_E sin(2 pi f t + j phi), phi = 2 pi engine_order/blades, from rest to steady state, at
+    `freq` [Hz] or, with peak=True, at the frequency of blade 0's largest gamma_1 searched
+    around `f_center` (default: the in-phase single-harmonic peak in [f_min, f_max]).
+    Returns dicts with blade 0's fields of :func:`dti` and blades, engine_order, phi [rad],
+    gamma_spread, sigma_spread (the largest relative difference of the blades' first-harmonic
+    amplitudes), blade_spread (the larger of the two) and phase_spread (the largest deviation
+    of the phase step between neighbours from phi [rad])."""
+    def call(err, s, ptr, pts):
+        if peak:
+            return _capi.dti_wheel_peak(err.ptr, _blade_ptr(blade), contact.ptr, ctypes.byref(s),
+                                        float(f_min), float(f_max), float(f_center or 0.0),
+                                        int(blades), int(engine_order), 1, ptr, pts)
+        return _capi.dti_wheel_response(err.ptr, _blade_ptr(blade), contact.ptr,
+                                        ctypes.byref(s), float(freq), int(blades),
+                                        int(engine_order), 1, ptr, pts)
+    contact = _contact(contact)
+    points = _dti_points(F_E, freq, peak, f_min, f_max, progress, settings, DtiWheelPoint,
+                         call)
+    out = []
+    for w in points:
+        p = _dti_dict(w.blade0)
+        for k, _ in DtiWheelPoint._fields_[1:]:
+            p[k] = getattr(w, k)
+        p["blade_spread"] = max(p["gamma_spread"], p["sigma_spread"])
+        out.append(p)
+    return out
+
+
+def _dti_points(F_E, freq, peak, f_min, f_max, progress, settings, point_type, call) -> list:
+    """The kernel's points of `call(err, settings, F_E pointer, points)`, one force a call."""
     s = dti_settings(**settings)
     arr, _ = _forces(F_E)
     if peak and (f_min is None or f_max is None):
         raise InputError("dti: the peak search needs the band f_min, f_max")
     if not peak and freq is None:
         raise InputError("dti: give freq or peak=True")
-    keys = [k for k, _ in DtiPoint._fields_]
     out = []
     for F in arr:
         one, ptr = as_doubles(np.array([F]))
-        pts = (DtiPoint * 1)()
+        pts = (point_type * 1)()
         err = ErrorHandle()
-        if peak:
-            err.check(_capi.dti_peak(err.ptr, _blade_ptr(blade), contact.ptr, ctypes.byref(s),
-                                     float(f_min), float(f_max), 1, ptr, pts))
-        else:
-            err.check(_capi.dti_response(err.ptr, _blade_ptr(blade), contact.ptr, ctypes.byref(s),
-                                         float(freq), 1, ptr, pts))
-        p = {k: getattr(pts[0], k) for k in keys}
-        p["lift_off"] = bool(p["lift_off"])
-        out.append(p)
+        err.check(call(err, s, ptr, pts))
+        out.append(pts[0])
         if progress is not None:
             progress(1)
     return out
+
+
+def _dti_dict(point) -> dict:
+    p = {k: getattr(point, k) for k, _ in DtiPoint._fields_}
+    p["lift_off"] = bool(p["lift_off"])
+    return p
 
 
 def wave_hbm(blade: Blade, damper: Damper, f_min: float, f_max: float, ibpa_deg: float,

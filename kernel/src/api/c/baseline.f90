@@ -18,6 +18,7 @@ module udmap_api_c_baseline
   use udmap_baseline_hbm, only: hbm_settings_type, hbm_point_type, hbm_curve_type, hbm_peak, &
     & hbm_peaks, hbm_response, HBM_MAX_PEAKS
   use udmap_baseline_newmark, only: dti_settings_type, dti_point_type, dti_response, dti_peak
+  use udmap_baseline_wheel, only: wheel_point_type, wheel_response, wheel_peak
   implicit none
   private
 
@@ -73,6 +74,13 @@ module udmap_api_c_baseline
     real(c_double) :: seconds
     integer(c_int) :: lift_off
   end type c_dti_point
+
+  !> udmap_dti_wheel_point.
+  type, bind(C) :: c_dti_wheel_point
+    type(c_dti_point) :: blade0
+    integer(c_int) :: blades, engine_order
+    real(c_double) :: phi, gamma_spread, sigma_spread, phase_spread
+  end type c_dti_wheel_point
 
 contains
 
@@ -348,6 +356,74 @@ contains
     end if
     stat = set_error(ehandle, error)
   end function dti_points
+
+  !> The whole wheel (N blades, N dampers) at f_exc for n forces.
+  function udmap_dti_wheel_response(ehandle, blade, contact, settings, f_exc, blades, &
+      & engine_order, n, F_E, points) result(stat) bind(C, name="udmap_dti_wheel_response")
+    type(c_ptr), value :: ehandle, blade, contact
+    type(c_dti_settings), intent(in) :: settings
+    real(c_double), value :: f_exc
+    integer(c_int), value :: blades, engine_order, n
+    real(c_double), intent(in) :: F_E(*)
+    type(c_dti_wheel_point), intent(out) :: points(*)
+    integer(c_int) :: stat
+    stat = wheel_points(ehandle, blade, contact, settings, f_exc, f_exc, 0.0_c_double, blades, &
+      & engine_order, n, F_E, points, at_peak=.false.)
+  end function udmap_dti_wheel_response
+
+  !> The whole wheel at the frequency of blade 0's largest gamma_1, searched around f_center
+  !> (f_center <= 0: the in-phase H = 1 peak in [f_min, f_max]).
+  function udmap_dti_wheel_peak(ehandle, blade, contact, settings, f_min, f_max, f_center, &
+      & blades, engine_order, n, F_E, points) result(stat) bind(C, name="udmap_dti_wheel_peak")
+    type(c_ptr), value :: ehandle, blade, contact
+    type(c_dti_settings), intent(in) :: settings
+    real(c_double), value :: f_min, f_max, f_center
+    integer(c_int), value :: blades, engine_order, n
+    real(c_double), intent(in) :: F_E(*)
+    type(c_dti_wheel_point), intent(out) :: points(*)
+    integer(c_int) :: stat
+    stat = wheel_points(ehandle, blade, contact, settings, f_min, f_max, f_center, blades, &
+      & engine_order, n, F_E, points, at_peak=.true.)
+  end function udmap_dti_wheel_peak
+
+  function wheel_points(ehandle, blade, contact, settings, f_a, f_b, f_center, blades, &
+      & engine_order, n, F_E, points, at_peak) result(stat)
+    type(c_ptr), intent(in) :: ehandle, blade, contact
+    type(c_dti_settings), intent(in) :: settings
+    real(c_double), intent(in) :: f_a, f_b, f_center
+    integer(c_int), intent(in) :: blades, engine_order, n
+    real(c_double), intent(in) :: F_E(*)
+    type(c_dti_wheel_point), intent(out) :: points(*)
+    logical, intent(in) :: at_peak
+    integer(c_int) :: stat
+    type(error_type), allocatable :: error
+    type(structure_type) :: st
+    type(c_contact_type), pointer :: c
+    type(wheel_point_type) :: pt
+    integer :: i
+    call clear_error(ehandle)
+    call prepare(blade, contact, n, st, c, error)
+    if (.not.allocated(error)) then
+      do i = 1, n
+        if (at_peak .and. f_center > 0) then
+          call wheel_peak(st, c%element, real(f_a, wp), real(f_b, wp), real(F_E(i), wp), &
+            & blades, engine_order, dti_from_c(settings), pt, error, real(f_center, wp))
+        else if (at_peak) then
+          call wheel_peak(st, c%element, real(f_a, wp), real(f_b, wp), real(F_E(i), wp), &
+            & blades, engine_order, dti_from_c(settings), pt, error)
+        else
+          call wheel_response(st, c%element, real(f_a, wp), real(F_E(i), wp), blades, &
+            & engine_order, dti_from_c(settings), pt, error)
+        end if
+        if (allocated(error)) exit
+        points(i) = c_dti_wheel_point(blade0=dti_point_to_c(pt%dti_point_type), &
+          & blades=pt%blades, engine_order=pt%engine_order, phi=pt%phi, &
+          & gamma_spread=pt%gamma_spread, sigma_spread=pt%sigma_spread, &
+          & phase_spread=pt%phase_spread)
+      end do
+    end if
+    stat = set_error(ehandle, error)
+  end function wheel_points
 
   ! ------------------------------------------------------------------ helpers
 

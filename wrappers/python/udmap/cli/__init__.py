@@ -72,6 +72,7 @@ def build_parser() -> argparse.ArgumentParser:
     g.add_argument("--freq", type=positive, help="excitation frequency [Hz]")
     g.add_argument("--peak", action="store_true", help="search the frequency of the largest "
                    "first harmonic near the single-harmonic peak")
+    _add_wheel_options(p)
     p = add("reduce", cmd_reduce, "Platform Centred Reduction of an fe case to a matrices case",
             forces=False)
     p.add_argument("--out", required=True, help="the reduced case file (JSON) to write; its "
@@ -85,6 +86,18 @@ def build_parser() -> argparse.ArgumentParser:
     add_doe_parser(sub)
     add_fmu_parser(sub)
     return parser
+
+
+def _add_wheel_options(p) -> None:
+    """--blades N --engine-order EO (the whole wheel in time), unless already there."""
+    for flag, kw in (("--blades", dict(metavar="N", help="blades of the wheel (2..10000): "
+                                       "integrate the whole wheel")),
+                     ("--engine-order", dict(dest="engine_order", metavar="EO",
+                                             help="engine order: interblade phase 2 pi EO/N"))):
+        try:
+            p.add_argument(flag, type=int, default=None, **kw)
+        except argparse.ArgumentError:   # already an option of every command
+            pass
 
 
 def main(argv=None) -> int:

@@ -12,7 +12,7 @@ import numpy as np
 from .. import hbm
 from ..case import build_blade, build_contact, build_damper, build_model, load_case
 from ..case.plausibility import plausibility_warnings, with_hints
-from ..case.traveling import apply_options, require_in_phase, wave_of, wave_warnings
+from ..case.traveling import apply_options, wave_of, wave_warnings
 from ..errors import InputError, UdmapError
 from ..progress import Progress
 from .output import (add_verdicts, add_warning, emit, finite, point_json, print_head,
@@ -296,26 +296,79 @@ def _wave_hbm(case, blade, damper, args) -> list[dict]:
 
 def cmd_dti(args) -> None:
     case = _load(args, harmonics=False)
-    require_in_phase(case, "the time integration (dti)")
     blade = build_blade(case)
     a = case.analysis
     if args.freq is not None and not a["f_min"] <= args.freq <= a["f_max"]:
         raise InputError(f"--freq {args.freq} Hz is outside the band [analysis.f_min, "
                          f"analysis.f_max] = [{a['f_min']}, {a['f_max']}] Hz of the case")
-    with Progress(len(args.forces), "dti") as bar, bar.ticking():
-        points = hbm.dti(blade, build_contact(case), args.forces, freq=args.freq,
-                         peak=args.peak, f_min=a["f_min"], f_max=a["f_max"],
-                         progress=bar.update)
+    wheel = _wheel_of(args, case)
+    keys = ("F_E", "f", "gamma_1", "sigma_1", "gamma_max")
+    warnings = []
+    if wheel is not None and case.damper.get("kind") != "asymmetric":
+        warnings.append(f"damper.kind '{case.damper.get('kind')}' acts on gamma_P alone: the "
+                        "interblade phase does not change it, the blades are uncoupled and "
+                        "equal (blade_spread 0)")
+    if wheel is not None and not warnings:
+        N, EO = wheel
+        f_center = None
+        if args.peak and EO % N:
+            # the traveling-wave single-harmonic backbone at this phase gives the centre
+            a["ibpa_deg"], a["harmonics"] = 360.0 * (EO % N) / N, 1
+            model = build_model(case, blade, build_damper(case))
+            f_center = [p["f_res"] for p in model.backbone(args.forces)]
+        points = []
+        with Progress(len(args.forces), "dti (wheel)") as bar, bar.ticking():
+            for i, F in enumerate(args.forces):
+                points += hbm.dti_wheel(blade, build_contact(case), [F], N, EO, freq=args.freq,
+                                        peak=args.peak, f_min=a["f_min"], f_max=a["f_max"],
+                                        f_center=f_center[i] if f_center else None)
+                bar.update(1)
+        keys += ("blade_spread", "phase_spread")
+    else:
+        with Progress(len(args.forces), "dti") as bar, bar.ticking():
+            points = hbm.dti(blade, build_contact(case), args.forces, freq=args.freq,
+                             peak=args.peak, f_min=a["f_min"], f_max=a["f_max"],
+                             progress=bar.update)
+        if wheel is not None:
+            points = [dict(p, blade_spread=0.0, phase_spread=0.0) for p in points]
+            keys += ("blade_spread", "phase_spread")
     data = _wave({}, case)
-    data["points"] = [{k: finite(p[k]) for k in ("F_E", "f", "gamma_1", "sigma_1", "gamma_max")}
-                      for p in points]
+    data["points"] = [{k: finite(p[k]) for k in keys} for p in points]
+    if wheel is not None:
+        data.update(blades=wheel[0], engine_order=wheel[1])
+    for text in warnings:
+        add_warning(data, text)
 
     def table(d):
         print_head(d)
-        keys = ("F_E", "f", "gamma_1", "sigma_1", "gamma_max")
         print_rows([header(k) for k in keys], [[p[k] for k in keys] for p in d["points"]],
                    list(keys))
     emit(args, data, table)
+
+
+def _wheel_of(args, case):
+    """(N, EO) of the whole wheel from --blades/--engine-order or analysis.blades/engine_order,
+    or None for the single blade in phase."""
+    a = case.analysis
+    N = getattr(args, "blades", None)
+    EO = getattr(args, "engine_order", None)
+    N = a.get("blades") if N is None else N
+    EO = a.get("engine_order") if EO is None else EO
+    ibpa = getattr(args, "ibpa", None)
+    ibpa = a.get("ibpa_deg", 0.0) if ibpa is None else ibpa
+    if N is None and EO is None:
+        if ibpa and ibpa % 360.0:
+            raise InputError("analysis.ibpa_deg: dti integrates the whole wheel; give its "
+                             "blades and engine order (--blades N --engine-order EO)")
+        return None
+    if N is None or EO is None:
+        raise InputError("--blades: the whole wheel needs both --blades N and --engine-order EO"
+                         " (analysis.blades, analysis.engine_order)")
+    if not (isinstance(N, int) and 2 <= N <= 10000):
+        raise InputError(f"--blades: must be an integer 2..10000, got {N}")
+    if not (isinstance(EO, int) and EO >= 0):
+        raise InputError(f"--engine-order: must be an integer >= 0, got {EO}")
+    return N, EO
 
 
 def cmd_reduce(args) -> None:

@@ -22,7 +22,7 @@ UNITS = {
     "k_re": "N m/rad", "k_im": "N m/rad", "k_stuck": "N m/rad", "k_re_minus": "N m/rad",
     "k_im_minus": "N m/rad", "k_re_plus": "N m/rad", "k_im_plus": "N m/rad",
     "M_max": "N m", "M_min": "N m",
-    "seconds": "s",
+    "seconds": "s", "phase_spread": "rad",
     # the traveling wave (PHYSICS.md 2.6): the phase in degrees, as its name says; the wheel's
     # counts as the dimensionless 1
     "ibpa_deg": "deg", "engine_order": "1", "blades": "1",
