@@ -20,7 +20,7 @@ module udmap_baseline_wheel
   use udmap_core_error, only: error_type, fatal_error, UDMAP_EINPUT, UDMAP_EPHYSICS, UDMAP_ENUMERIC
   use udmap_core_lapack, only: dgesv
   use udmap_core_strings, only: itoa
-  use udmap_blade_platform, only: platform_rows, has_platform
+  use udmap_blade_platform, only: platform_rows, platform_translations_known
   use udmap_baseline_linear_structure, only: structure_type
   use udmap_baseline_types, only: seconds_since
   use udmap_baseline_newmark, only: dti_settings_type, dti_point_type, dti_runner_type, &
@@ -176,7 +176,7 @@ contains
       if (.not. allocated(st%blade)) then
         call fatal_error(error, "dti: a traveling wave needs the blade's platform rows", &
           & UDMAP_EINPUT)
-      else if (.not. has_platform(st%blade)) then
+      else if (.not. platform_translations_known(st%blade)) then
         call fatal_error(error, "blade: the platform translations are unknown (traveling "// &
           & "waves need u_P: blade.u_dof on a matrices blade, platform.tangent on an fe "// &
           & "blade)", UDMAP_EINPUT)
@@ -219,7 +219,7 @@ contains
     allocate(Bp(n, 3), XB(n, 3))
     Bp = 0.0_wp
     if (allocated(st%blade)) then
-      if (has_platform(st%blade)) call platform_rows(st%blade, Bp)
+      if (platform_translations_known(st%blade)) call platform_rows(st%blade, Bp)
     end if
     Bp(:, 3) = 0.0_wp
     Bp(g, 3) = 1.0_wp
