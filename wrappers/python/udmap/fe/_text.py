@@ -62,7 +62,8 @@ def number(token: str) -> float:
 def symmetric_from_triplets(rows, cols, vals, n: int, field: str) -> sp.csr_matrix:
     """Full symmetric storage from triplets (1-based) holding one triangle or both.
 
-    One triangle is mirrored; when both are present each off-diagonal pair must agree."""
+    One triangle is mirrored; a term whose mirror is not given is mirrored (so one triangle in
+    any DOF order works); both given, they are taken as they are (checked symmetric later)."""
     rows = np.asarray(rows, dtype=np.int64) - 1
     cols = np.asarray(cols, dtype=np.int64) - 1
     vals = np.asarray(vals, dtype=float)
@@ -71,8 +72,14 @@ def symmetric_from_triplets(rows, cols, vals, n: int, field: str) -> sp.csr_matr
     A = sp.coo_matrix((vals, (rows, cols)), shape=(n, n)).tocsr()
     A.sum_duplicates()
     upper, lower = np.any(rows < cols), np.any(rows > cols)
-    if upper and lower:
-        return A
+    if upper and lower:   # full storage, or one triangle of another order (Abaqus labelled)
+        C = A.tocoo()
+        off = C.row != C.col
+        r, c, v = C.row[off].astype(np.int64), C.col[off].astype(np.int64), C.data[off]
+        lone = ~np.isin(c * n + r, r * n + c)
+        if not lone.any():
+            return A
+        return sp.csr_matrix(A + sp.coo_matrix((v[lone], (c[lone], r[lone])), shape=(n, n)))
     off = sp.triu(A, 1) if upper else sp.tril(A, -1)
     return sp.csr_matrix(A + off.T)
 

@@ -23,6 +23,7 @@ from .model import FEModel, make_model
 
 #: DOF labels of the HBMAT mapping file -> component.
 LABELS = {"UX": 1, "UY": 2, "UZ": 3, "ROTX": 4, "ROTY": 5, "ROTZ": 6}
+_WORD = re.compile(r"[^\W\d_]{2,}")        # two letters: a word, never part of a number
 _REAL = re.compile(r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[EeDd][-+]?\d+)?")
 
 
@@ -44,8 +45,8 @@ def read_nodes_table(path: Path, field: str):
     ids, xyz = [], []
     for lineno, line in text_lines(path, field):
         s = line.strip()
-        if not s or not (s[0].isdigit() or s[0] in "+-"):
-            continue                  # header lines, NLIST page headers
+        if not s or not (s[0].isdigit() or s[0] in "+-") or _WORD.search(s):
+            continue                  # header lines in any language, NLIST page headers
         parts = _fields(s)
         try:
             node = int(parts[0])

@@ -38,6 +38,24 @@ def real(token: str) -> float:
     return float(t)
 
 
+def _untab(line: str) -> str:
+    """Tabs end a field: the text after a tab starts in the next field (8 columns, 16 in the
+    data fields of a large-field card), a field filled to its end is not skipped."""
+    if "\t" not in line:
+        return line
+    segs = line.split("\t")
+    large = segs[0][:8].strip().endswith("*") or segs[0].startswith("*")
+    out = ""
+    for seg in segs[:-1]:
+        out += seg
+        width = 16 if large and len(out) >= 8 else 8
+        start = 0 if len(out) < 8 else 8
+        used = (len(out) - start) % width
+        if used or not seg:
+            out += " " * ((width - used) if len(out) >= 8 or not large else 8 - len(out))
+    return out + segs[-1]
+
+
 def cards(path, field: str):
     """Yields ``(name, [fields 2..9 of every line, concatenated], "file:line")``."""
     current = None
@@ -54,7 +72,7 @@ def cards(path, field: str):
             items = [q.strip() for q in line.split(",")]
             head, data = items[0], items[1:9]
         else:
-            line = line.expandtabs(8)
+            line = _untab(line)
             if line[:8].strip().endswith("*") or line.startswith("*"):
                 head = line[:8].strip()
                 data = [line[8 + 16 * k:24 + 16 * k].strip() for k in range(4)]
