@@ -14,7 +14,7 @@ from udmap.fe import read_fe
 
 from fe_case_fixtures import case_dict, export, run  # noqa: F401  (fixture)
 from fe_compare import ccx_section
-from test_fe_readers_text import with_internal_node, write_labelled
+from fe_writers import with_internal_node, write_labelled
 
 
 @pytest.fixture

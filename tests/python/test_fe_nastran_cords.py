@@ -14,42 +14,8 @@ from udmap.fe import FEModel, read_fe
 from udmap.fe.nastran_coords import System, _from_points
 
 from fe_compare import rel
+from fe_writers import card, write_nastran
 from fe_deck import assemble, make_deck
-
-
-def _card(fields):
-    """A free-field card (8 data fields a line, continuation lines start with +)."""
-    data = fields[1:]
-    return [",".join([fields[0] if k == 0 else "+"] + data[k:k + 8])
-            for k in range(0, max(len(data), 1), 8)]
-
-
-def write_nastran(pch, bdf, K, M, dof_node, dof_comp, node_ids, xyz, cp=None, cd=None,
-                  cords=(), names=("KAAX", "MAAX"), extra=()):
-    """Punch (DMIG, IFO 6, upper triangle) and bulk data (CORD cards, GRIDs with ``cp``,
-    ``cd`` and coordinates ``xyz`` as given, i.e. already in CP), free field, 17 digits."""
-    out = []
-    for name, A in zip(names, (K, M)):
-        out += _card(["DMIG", name, "0", "6", "2", "", "", "", ""])
-        U = sp.triu(A).tocsc()
-        for j in range(A.shape[0]):
-            lo, hi = U.indptr[j], U.indptr[j + 1]
-            if lo == hi:
-                continue
-            f = ["DMIG", name, str(dof_node[j]), str(dof_comp[j]), ""]
-            for i, v in zip(U.indices[lo:hi], U.data[lo:hi]):
-                f += [str(dof_node[i]), str(dof_comp[i]), f"{v:.17e}", ""]
-            out += _card(f)
-    for text in extra:
-        out += text
-    pch.write_text("$ DMIG punch\n" + "\n".join(out) + "\n")
-    lines = ["SOL 103", "CEND", "  TITLE = local systems", "BEGIN BULK"]
-    for c in cords:
-        lines += _card(c)
-    for k, (i, p) in enumerate(zip(node_ids, xyz)):
-        lines += _card(["GRID", str(i), str(cp[k]) if cp is not None else "",
-                        *(f"{v:.17e}" for v in p), str(cd[k]) if cd is not None else ""])
-    bdf.write_text("\n".join(lines + ["ENDDATA"]) + "\n")
 
 
 # Systems of the test: 1 rectangular (rotated, shifted), 2 cylindrical defined in 1,
@@ -158,8 +124,8 @@ def test_local_systems_give_the_same_model(model, tmp_path):
 
 def test_tabs_lowercase_and_dmig_names(model, tmp_path):
     d, fe, K, M, dn, dc = model
-    extra = [_card(["DMIG", "MUG1T", "0", "6", "2", "", "", "", ""]),
-             _card(["DMIG", "MUG1T", str(dn[0]), str(dc[0]), "", str(dn[0]), str(dc[0]),
+    extra = [card(["DMIG", "MUG1T", "0", "6", "2", "", "", "", ""]),
+             card(["DMIG", "MUG1T", str(dn[0]), str(dc[0]), "", str(dn[0]), str(dc[0]),
                     "1.0", ""])]
     write_nastran(tmp_path / "m.pch", tmp_path / "m.bdf", K, M, dn, dc, fe.node_ids,
                   fe.node_xyz, extra=extra)
@@ -193,9 +159,9 @@ BAD = {
         r"blade\.files\.bdf: .*m\.bdf:\d+: GRID 1 has CD 99, a coordinate system that is not "
         r"defined"),
     "system defined twice": (lambda b: b.replace("BEGIN BULK", "BEGIN BULK\n" + "\n".join(
-        _card(CORDS[0]) * 2)), r"blade\.files\.bdf: .*m\.bdf:\d+: coordinate system 1 is "
+        card(CORDS[0]) * 2)), r"blade\.files\.bdf: .*m\.bdf:\d+: coordinate system 1 is "
                                r"defined again \(first at .*m\.bdf:\d+\)"),
-    "degenerate system": (lambda b: b.replace("BEGIN BULK", "BEGIN BULK\n" + "\n".join(_card(
+    "degenerate system": (lambda b: b.replace("BEGIN BULK", "BEGIN BULK\n" + "\n".join(card(
         ["CORD2R", "5", "0", "0", "0", "0", "0", "0", "1", "0", "0", "2"]))),
         r"blade\.files\.bdf: .*m\.bdf:\d+: the points A, B, C do not define a system"),
     "bad GRID": (lambda b: b.replace("GRID,1,,", "GRID,1,,x", 1),

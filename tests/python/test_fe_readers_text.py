@@ -10,13 +10,13 @@ import subprocess
 
 import numpy as np
 import pytest
-import scipy.sparse as sp
 
 from udmap import InputError
 from udmap.fe import read_fe
 
 from fe_compare import ccx_section, rel, same_model
 from fe_deck import make_deck, write_inp
+from fe_writers import with_internal_node, write_labelled, write_nastran
 from test_fe_readers import BLOCK_ABAQUS, DATA, ROTOR_ABAQUS, ROTOR_ANSYS
 
 CCX_FILES = ("sti", "mas", "dof", "inp")
@@ -82,7 +82,6 @@ def _written(fmt, fe, d):
     if fmt == "matrix_market":
         names = matrix_market.write(fe, d, "mm")
         return {"format": "matrix_market", "files": names}, d
-    from test_fe_nastran_cords import write_nastran
     write_nastran(d / "m.pch", d / "m.bdf", fe.K, fe.M, fe.dof_node, fe.dof_comp,
                   fe.node_ids, fe.node_xyz)
     return {"format": "nastran", "files": {"pch": "m.pch", "bdf": "m.bdf"}}, d
@@ -188,30 +187,6 @@ def test_ansys_hbmat_mapping_nwrite_and_nlist(tmp_path):
     files["dof_map"] = str(tmp_path / "temp.mapping")
     with pytest.raises(InputError, match=r"blade\.files\.dof_map: .*temp\.mapping:6: DOF TEMP"):
         read_fe({"format": "ansys", "files": files}, tmp_path)
-
-
-def write_labelled(path, A, dof_node, dof_comp):
-    """Abaqus ``*MATRIX OUTPUT, FORMAT=MATRIX INPUT``: ``node, dof, node, dof, value``."""
-    L = sp.tril(A).tocoo()
-    with open(path, "w") as f:
-        for i, j, v in zip(L.row, L.col, L.data):
-            f.write(f"{dof_node[i]},{dof_comp[i]}, {dof_node[j]},{dof_comp[j]}, {v:.16e}\n")
-
-
-def with_internal_node(fe, anchor, k=1e8, m=0.05):
-    """``fe`` plus an internal node -1 (3 DOFs, mass ``m``) tied to ``anchor`` by springs."""
-    n = fe.n
-    idx = fe.dof_index()
-    K = sp.lil_matrix(sp.block_diag([fe.K, sp.csr_matrix((3, 3))]))
-    M = sp.lil_matrix(sp.block_diag([fe.M, m * sp.identity(3)]))
-    for c in range(3):
-        a, b = idx[(anchor, c + 1)], n + c
-        K[a, a] += k
-        K[b, b] += k
-        K[a, b] -= k
-        K[b, a] -= k
-    return (sp.csr_matrix(K), sp.csr_matrix(M), np.append(fe.dof_node, [-1, -1, -1]),
-            np.append(fe.dof_comp, [1, 2, 3]))
 
 
 def test_abaqus_internal_nodes_have_no_coordinates(ccx, tmp_path):

@@ -56,10 +56,10 @@ def _check_expanded(dof_node, dof_comp, files):
     if shells:
         msg += (f": the deck {files['inp']} has {', '.join(shells)} elements, which CalculiX "
                 "expands into 3D solids (two or three nodes through the thickness of a "
-                "shell) and exports under the original node's id; where the expanded nodes lie "
-                "(along the normals CalculiX averages internally) is not in the export, so "
-                "their rows cannot be mapped exactly. Mesh the blade with solid elements "
-                "(C3D20R, C3D20, C3D10 or C3D8) and export it again")
+                "shell, eight around a beam) and exports under the original node's id; where "
+                "the expanded nodes lie (along the normals CalculiX averages internally) is not "
+                "in the export, so their rows cannot be mapped exactly. Mesh the blade with "
+                "solid elements (C3D20R, C3D20, C3D10 or C3D8) and export it again")
     raise InputError(msg)
 
 

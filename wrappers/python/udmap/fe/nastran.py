@@ -66,7 +66,7 @@ def cards(path, field: str):
         line = raw.split("$", 1)[0].rstrip()
         if not line.strip():
             continue
-        if line.strip().upper() == "ENDDATA":
+        if line.strip().upper().startswith("ENDDATA"):
             break
         if "," in line[:80]:
             items = [q.strip() for q in line.split(",")]
