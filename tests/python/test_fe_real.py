@@ -22,6 +22,8 @@ import scipy.sparse.linalg as sla
 from udmap import InputError
 from udmap.cli import main
 from udmap.fe import read_fe
+from udmap.fe._text import read_text
+from udmap.fe.nastran import cards, read_grids
 
 from fe_compare import ccx_section
 
@@ -150,3 +152,74 @@ def test_real_files_gzipped(tmp_path):
     a = read_fe({**sec, "files": {"pch": "n1.pch.gz", "bdf": "n1.bdf.gz"}}, tmp_path)
     b = read_fe({**sec, "files": {"pch": "n1.pch", "bdf": "n1.bdf"}}, d)
     assert abs(a.K - b.K).max() == 0 and abs(a.M - b.M).max() == 0
+
+
+def _f06_displacements(path: Path) -> dict:
+    """Grid id -> (T1 T2 T3 R1 R2 R3) of the first DISPLACEMENT VECTOR table of an .f06."""
+    lines = read_text(path, "f06").split("\n")
+    k = next(i for i, x in enumerate(lines) if "D I S P L A C E M E N T   V E C T O R" in x)
+    out = {}
+    for line in lines[k + 3:]:
+        parts = line.split()
+        if len(parts) != 8 or parts[1] != "G":
+            break
+        out[int(parts[0])] = np.array([float(v) for v in parts[2:]])
+    return out
+
+
+def test_nastran_cd_frames_against_nastran_output():
+    # One model solved by NX Nastran twice: displacements printed in each grid's CD frame,
+    # cylindrical (CORD2C, free field with 9 values on a line; grids on its axis too) and a
+    # shifted, rotated rectangular one (CORD2R 11). Rotated to basic with the frames the reader
+    # builds, the two agree to the 7 digits printed. GRID cards with tabs inside fixed fields.
+    d = REAL / "nastran"
+    basic, raw = {}, {}
+    for job in ("static_solid_shell_bar_global_radial_cd", "static_solid_shell_bar_xyz"):
+        ids, xyz, frames = read_grids(d / f"{job}.bdf")
+        u = _f06_displacements(d / f"{job}.f06.gz")
+        assert len(frames) == len(ids) == 25
+        raw[job] = np.array([u[int(g)] for g in ids])
+        basic[job] = (xyz, np.array([np.concatenate([frames[k] @ u[int(g)][:3],
+                                                      frames[k] @ u[int(g)][3:]])
+                                      for k, g in enumerate(ids)]))
+    (xa, ua), (xb, ub) = basic.values()
+    assert np.array_equal(xa, xb)
+    big = np.abs(ub).max()
+    assert np.abs(ua - ub).max() < 5e-7 * big
+    ra, rb = raw.values()
+    assert np.abs(ra - rb).max() > 0.1 * big          # as printed, in their frames, they differ
+
+
+def test_nastran_cp_positions_against_nastran_oload():
+    # MSC Nastran's sbuckl2a (tabs, GRDSET, grids in two CORD2S spherical systems, one shifted):
+    # the pressure PLOAD2 -2000 on its CTRIA3/CQUAD4 shell, integrated over the elements on
+    # the basic positions the reader gives, has the resultant force and moment Nastran printed
+    # (OLOAD RESULTANT of subcase 1).
+    d = REAL / "nastran"
+    ids, xyz, _ = read_grids(d / "sbuckl2a.bdf")
+    pos = {int(g): xyz[k] for k, g in enumerate(ids)}
+    force, moment = np.zeros(3), np.zeros(3)
+    g = 1 / np.sqrt(3)
+    nat = np.array([(-1, -1), (1, -1), (1, 1), (-1, 1)])
+    for name, f, _ in cards(d / "sbuckl2a.bdf", "bdf"):
+        if name not in ("CTRIA3", "CQUAD4"):
+            continue
+        x = np.array([pos[int(v)] for v in f[2:5 if name == "CTRIA3" else 6]])
+        fn = np.zeros_like(x)
+        if name == "CTRIA3":
+            fn[:] = -2000.0 * np.cross(x[1] - x[0], x[2] - x[0]) / 6
+        else:                 # consistent nodal loads of the bilinear quad (2x2 Gauss points)
+            for xi in (-g, g):
+                for eta in (-g, g):
+                    N = (1 + nat[:, 0] * xi) * (1 + nat[:, 1] * eta) / 4
+                    dxi = (nat[:, 0] * (1 + nat[:, 1] * eta) / 4) @ x
+                    deta = (nat[:, 1] * (1 + nat[:, 0] * xi) / 4) @ x
+                    fn += -2000.0 * np.outer(N, np.cross(dxi, deta))
+        force += fn.sum(axis=0)
+        moment += np.cross(x, fn).sum(axis=0)
+    text = read_text(d / "sbuckl2a.f06.gz", "f06")
+    totals = text[text.index("OLOAD    RESULTANT"):].split("TOTALS")[1].split("\n")[0].split()
+    printed = np.array([float(v) for v in totals])
+    assert printed[0] == -2.647650 and printed[4] == 8.367467e-02
+    got = np.concatenate([force, moment])
+    assert np.all(np.abs(got - printed) <= 5e-7 * np.abs(printed) + 1e-12), (got, printed)

@@ -68,9 +68,11 @@ def cards(path, field: str):
             continue
         if line.strip().upper().startswith("ENDDATA"):
             break
-        if "," in line[:80]:
+        if "," in line[:80]:      # free field: a line may also hold more than 8 data fields
             items = [q.strip() for q in line.split(",")]
-            head, data = items[0], items[1:9]
+            head, data = items[0], items[1:]
+            if len(data) > 8 and data[8].startswith("+"):
+                data = data[:8]   # field 10: the continuation marker
         else:
             line = _untab(line)
             if line[:8].strip().endswith("*") or line.startswith("*"):
