@@ -60,11 +60,11 @@ SECTIONS = {"ansys": (ROTOR_ANSYS, DATA), "abaqus": (BLOCK_ABAQUS, DATA),
 @pytest.mark.parametrize("name", ["ansys", "abaqus", "abaqus_rotor", "calculix", "nastran",
                                   "matrix_market"])
 @pytest.mark.parametrize("variant", ["gz", "crlf_tabs", "crlf_tabs_gz"])
-def test_every_format_gzipped_crlf_tabs(name, variant, ccx, tmp_path):
+def test_every_format_gzipped_crlf_tabs(name, variant, ccx, written, tmp_path):
     if name == "calculix":
         section, src = ccx_section("b"), ccx
     elif name in ("nastran", "matrix_market"):
-        section, src = _written(name, read_fe(ccx_section("b"), ccx), tmp_path / "src")
+        section, src = written[name]
     else:
         section, src = SECTIONS[name]
     plain = read_fe(section, src)
@@ -73,6 +73,13 @@ def test_every_format_gzipped_crlf_tabs(name, variant, ccx, tmp_path):
                         gz="gz" in variant)
     same_model(read_fe(sec, tmp_path / "v"), plain)
     assert all(f.endswith(".gz") == ("gz" in variant) for f in sec["files"].values())
+
+
+@pytest.fixture(scope="module")
+def written(ccx):
+    """The CalculiX export written as a NASTRAN punch and bulk data and as Matrix Market."""
+    fe = read_fe(ccx_section("b"), ccx)
+    return {fmt: _written(fmt, fe, ccx / fmt) for fmt in ("nastran", "matrix_market")}
 
 
 def _written(fmt, fe, d):
