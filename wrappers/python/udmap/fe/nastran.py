@@ -98,9 +98,10 @@ def _int(v, default=0):
     return int(v) if v else default
 
 
-def read_grids(path, field="blade.files.bdf"):
+def read_grids(path, field="blade.files.bdf", lines=None):
     """Grid ids, their positions in the basic system, and the frames (row -> 3x3 axes in basic)
-    of the grids whose ``CD`` is a local system."""
+    of the grids whose ``CD`` is a local system; ``lines`` (a dict), if given, gets each grid's
+    ``"field: file:line"``."""
     ids, cp, x, cd, where = [], [], [], [], []
     cords, dflt = [], ["", ""]
     for name, f, at in cards(path, field):
@@ -131,10 +132,12 @@ def read_grids(path, field="blade.files.bdf"):
              "x": np.array(x, dtype=float).reshape(-1, 3), "cd": np.array(cd, dtype=np.int64),
              "lines": where}
     xyz, frames = resolve(cords, grids, f"{field}: {path}")
+    if lines is not None:
+        lines.update(zip(ids, where))
     return grids["ids"], xyz, frames
 
 
-def to_basic(A, pairs, frames, node_ids, where):
+def to_basic(A, pairs, frames, node_ids, where, lines=None):
     """``B^T A B``: the rows and columns of grids with a local ``CD`` frame rotated to basic."""
     if not frames:
         return A
@@ -149,7 +152,8 @@ def to_basic(A, pairs, frames, node_ids, where):
         have = [index.get((g, c0 + k)) for k in range(3)]
         if None in have:
             kind = "translations" if c0 == 1 else "rotations"
-            raise InputError(f"{where}: GRID {g} has a local CD frame but the matrices hold "
+            at = (lines or {}).get(g, where)
+            raise InputError(f"{at}: GRID {g} has a local CD frame but the matrices hold "
                              f"only components {', '.join(str(c0 + k) for k in range(3) if have[k] is not None)} "
                              f"of its {kind}: a frame block can only be rotated to the basic "
                              "system whole (export the matrices with all three, or the grid "
@@ -231,8 +235,9 @@ def read(files: dict, names: dict | None = None) -> FEModel:
                                  "both below and above the diagonal")
             A = A + sp.triu(A, 1).T + sp.tril(A, -1).T
         out.append(sp.csr_matrix(A))
-    node_ids, xyz, frames = read_grids(files["bdf"])
+    lines = {}
+    node_ids, xyz, frames = read_grids(files["bdf"], lines=lines)
     where = f"blade.files ({files['pch']}, {files['bdf']})"
-    out = [to_basic(A, pairs, frames, node_ids, where) for A in out]
+    out = [to_basic(A, pairs, frames, node_ids, where, lines) for A in out]
     return make_model(out[0], out[1], [p[0] for p in pairs], [p[1] for p in pairs], node_ids,
                       xyz, where=where)
