@@ -129,6 +129,14 @@ def platform_centred_reduction(fe, *, platform_nodes, ref_point, axis, exc_node,
     node_xyz = np.ascontiguousarray(np.asarray(fe.node_xyz, dtype=np.float64))
     if node_xyz.shape != (node_ids.size, 3):
         raise InputError(f"node_xyz: shape {node_xyz.shape}, expected ({node_ids.size}, 3)")
+    internal = np.isnan(node_xyz).any(axis=1)   # internal nodes of the FE code: no coordinates
+    if internal.any():
+        on = np.isin(node_ids[internal], np.asarray(platform_nodes if platform_nodes is not None
+                                                    else [], dtype=np.int64))
+        if on.any():
+            raise InputError(f"platform_nodes: node {int(node_ids[internal][on][0])} has no "
+                             "coordinates (an internal node of the FE code)")
+        node_xyz = np.where(internal[:, None], 0.0, node_xyz)   # only platform nodes' are used
     kr, kc, kv = _lower(fe.K, "K", n)
     mr, mc, mv = _lower(fe.M, "M", n)
     if np.any(mv[mr == mc] <= 0):

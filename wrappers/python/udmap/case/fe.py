@@ -169,7 +169,7 @@ def _select(fe, sec, path, where):
         return sorted(set(sec["nodes"]))
     (x0, y0, z0), (x1, y1, z1) = sec["box"]
     lo, hi = np.array([x0, y0, z0]), np.array([x1, y1, z1])
-    tol = 1e-9 * max(1.0, float(np.abs(fe.node_xyz).max()))
+    tol = 1e-9 * max(1.0, float(np.nanmax(np.abs(fe.node_xyz))))   # internal nodes: NaN
     inside = np.all((fe.node_xyz >= lo - tol) & (fe.node_xyz <= hi + tol), axis=1)
     nodes = fe.node_ids[inside].tolist()
     # Only nodes that carry DOFs count (unused coordinates of the deck do not).
@@ -210,6 +210,18 @@ def _si(blade: dict) -> dict:
     return b
 
 
+def _no_internal(nodes, internal, path, sec, where):
+    """Internal nodes of the FE code (no coordinates) cannot be on the platform (its rigid
+    motion needs their positions), at the excitation or in a gauge."""
+    for node in nodes:
+        if node in internal:
+            at = path
+            if sec is not None and "nodes" in sec and node in sec["nodes"]:
+                at = f"{path}[{sec['nodes'].index(node)}]"
+            raise InputError(f"{at}: node {node} is an internal node of the FE code, without "
+                             f"coordinates ({where}): choose nodes of the mesh")
+
+
 def reduction_inputs(fe, blade: dict) -> dict:
     """The keyword arguments of ``platform_centred_reduction`` from the case, each checked
     against the model (node ids present, sets not empty, DOFs where they are needed)."""
@@ -218,6 +230,8 @@ def reduction_inputs(fe, blade: dict) -> dict:
     blade = _si(blade)
     has_dof = set(fe.dof_node.tolist())
     plat = _select(fe, blade["platform"], "blade.platform", where)
+    internal = fe.internal()
+    _no_internal(plat, internal, "blade.platform.nodes", blade["platform"], where)
     for node in plat:
         if node not in has_dof:
             raise InputError(f"blade.platform: node {node} has no DOF in the matrices "
@@ -230,6 +244,7 @@ def reduction_inputs(fe, blade: dict) -> dict:
     exc = blade["excitation"]["node"]
     if exc not in set(fe.node_ids.tolist()):
         raise InputError(f"blade.excitation.node: node {exc} is not in the model ({where})")
+    _no_internal([exc], internal, "blade.excitation.node", None, where)
     idx = fe.dof_index()
     if exc in plat or (clamp and exc in clamp) or not all((exc, c) in idx for c in (1, 2, 3)):
         raise InputError(f"blade.excitation.node: node {exc} must be a free node off the "
@@ -247,6 +262,7 @@ def reduction_inputs(fe, blade: dict) -> dict:
             if node not in set(fe.node_ids.tolist()):
                 raise InputError(f"blade.stress.gauge[{i}]: node {node} is not in the model "
                                  f"({where})")
+            _no_internal([node], internal, f"blade.stress.gauge[{i}]", None, where)
         if not np.linalg.norm(fe.coords(b) - fe.coords(a)) > 0:
             raise InputError("blade.stress.gauge: the two nodes are at the same place")
         kw["stress_rows"] = [gauge_row(fe, a, b, st["E"])]

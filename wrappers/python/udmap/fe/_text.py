@@ -1,8 +1,11 @@
-"""Text parsing shared by the readers: numbers (also with decimal commas), sparse triplets,
-Matrix Market files, symmetric storage."""
+"""Text parsing shared by the readers: the one way every export file is opened (gzip, CRLF, BOM),
+numbers (also with decimal commas), sparse triplets, Matrix Market files, symmetric storage."""
 from __future__ import annotations
 
+import gzip
+import io
 import re
+import zlib
 from pathlib import Path
 
 import numpy as np
@@ -11,11 +14,40 @@ import scipy.sparse as sp
 from ..errors import InputError
 
 
-def read_text(path: Path, field: str) -> str:
+def open_text(path: Path, field: str):
+    """Every file of every format is opened here: a text stream with universal newlines (CRLF and
+    CR read as LF), a UTF-8 byte-order mark dropped, undecodable bytes replaced, and gunzipped
+    when the file is gzip-compressed (told by its first bytes, whatever its name; a ``.gz`` name
+    on a file that is not gzip is an error)."""
+    p = Path(path)
     try:
-        return Path(path).read_text(errors="replace")
+        raw = open(p, "rb")
+        magic = raw.peek(2)[:2] if hasattr(raw, "peek") else b""
     except OSError as exc:
         raise InputError(f"{field}: cannot read {path}: {exc.strerror}") from None
+    if magic == b"\x1f\x8b":
+        stream = gzip.GzipFile(fileobj=raw, mode="rb")
+    elif p.suffix.lower() == ".gz":
+        raw.close()
+        raise InputError(f"{field}: {path}: named .gz but not gzip-compressed")
+    else:
+        stream = raw
+    return io.TextIOWrapper(stream, encoding="utf-8-sig", errors="replace", newline=None)
+
+
+def read_text(path: Path, field: str) -> str:
+    """The whole text of an export file (see :func:`open_text`)."""
+    try:
+        with open_text(path, field) as f:
+            return f.read()
+    except (OSError, EOFError, zlib.error) as exc:
+        raise InputError(f"{field}: {path}: cannot read it as text ({exc})") from None
+
+
+def text_lines(path: Path, field: str):
+    """``(line number, line)`` of an export file, tabs as spaces, trailing blanks removed."""
+    for lineno, line in enumerate(read_text(path, field).split("\n"), 1):
+        yield lineno, line.replace("\t", " ").rstrip()
 
 
 def number(token: str) -> float:
@@ -30,7 +62,8 @@ def number(token: str) -> float:
 def symmetric_from_triplets(rows, cols, vals, n: int, field: str) -> sp.csr_matrix:
     """Full symmetric storage from triplets (1-based) holding one triangle or both.
 
-    One triangle is mirrored; when both are present each off-diagonal pair must agree."""
+    One triangle is mirrored; a term whose mirror is not given is mirrored (so one triangle in
+    any DOF order works); both given, they are taken as they are (checked symmetric later)."""
     rows = np.asarray(rows, dtype=np.int64) - 1
     cols = np.asarray(cols, dtype=np.int64) - 1
     vals = np.asarray(vals, dtype=float)
@@ -39,8 +72,14 @@ def symmetric_from_triplets(rows, cols, vals, n: int, field: str) -> sp.csr_matr
     A = sp.coo_matrix((vals, (rows, cols)), shape=(n, n)).tocsr()
     A.sum_duplicates()
     upper, lower = np.any(rows < cols), np.any(rows > cols)
-    if upper and lower:
-        return A
+    if upper and lower:   # full storage, or one triangle of another order (Abaqus labelled)
+        C = A.tocoo()
+        off = C.row != C.col
+        r, c, v = C.row[off].astype(np.int64), C.col[off].astype(np.int64), C.data[off]
+        lone = ~np.isin(c * n + r, r * n + c)
+        if not lone.any():
+            return A
+        return sp.csr_matrix(A + sp.coo_matrix((v[lone], (c[lone], r[lone])), shape=(n, n)))
     off = sp.triu(A, 1) if upper else sp.tril(A, -1)
     return sp.csr_matrix(A + off.T)
 
@@ -48,13 +87,14 @@ def symmetric_from_triplets(rows, cols, vals, n: int, field: str) -> sp.csr_matr
 def read_triplets(path: Path, field: str, skip_header=True):
     """Whitespace or comma separated ``row col value`` lines; comments start with % # or *."""
     try:   # numpy's C parser for the plain whitespace layout; the loop below names bad lines
-        a = np.loadtxt(path, comments="%", ndmin=2, dtype=float)
+        with open_text(path, field) as f:
+            a = np.loadtxt(f, comments="%", ndmin=2, dtype=float)
         if a.shape[1] == 3 and np.all(a[:, :2] == np.round(a[:, :2])):
             return a[:, 0].astype(np.int64), a[:, 1].astype(np.int64), a[:, 2].copy()
-    except (ValueError, OSError):
+    except (ValueError, OSError, EOFError, zlib.error):
         pass
     r, c, v = [], [], []
-    for lineno, line in enumerate(read_text(path, field).splitlines(), 1):
+    for lineno, line in text_lines(path, field):
         s = line.strip()
         if not s or s[0] in "%#*" or s.startswith("**"):
             continue
@@ -133,31 +173,3 @@ def read_mm(path: Path, field: str, vector=False):
     if sym == "symmetric" and np.any(rows < cols):
         raise InputError(f"{field}: {path}: symmetric storage holds the lower triangle only")
     return symmetric_from_triplets(rows, cols, vals, nr, field)
-
-
-def parse_deck_nodes(path: Path, field: str):
-    """Node ids and coordinates of the ``*NODE`` blocks of an Abaqus or CalculiX deck
-    (node lines ``id, x, y, z``; keyword lines start with ``*``, comments with ``**``)."""
-    ids, xyz = [], []
-    in_node = False
-    for lineno, line in enumerate(read_text(path, field).splitlines(), 1):
-        s = line.strip()
-        if not s or s.startswith("**"):
-            continue
-        if s.startswith("*"):
-            key = s[1:].split(",")[0].strip().upper()
-            in_node = key == "NODE"
-            continue
-        if not in_node:
-            continue
-        parts = [p for p in s.split(",") if p.strip()]
-        try:
-            ids.append(int(parts[0]))
-            c = [float(p) for p in parts[1:4]] + [0.0] * (4 - len(parts))
-        except (ValueError, IndexError):
-            raise InputError(f"{field}: {path}:{lineno}: expected 'id, x, y, z', got "
-                             f"{s!r}") from None
-        xyz.append(c)
-    if not ids:
-        raise InputError(f"{field}: {path}: no *NODE lines")
-    return np.array(ids, dtype=np.int64), np.array(xyz, dtype=float).reshape(-1, 3)

@@ -6,20 +6,24 @@ Two layouts are read (told apart by the number of values per line):
 - coordinate (``FORMAT=COORDINATE``): ``row column value`` over Abaqus' global DOF numbering,
   which for a single part is the nodes in their ``*Node`` order with the same number of DOFs
   (3 for solids, 6 with rotations) at each node.
-One triangle or both may be given (Abaqus writes both for the coordinate format).
+One triangle or both may be given (Abaqus writes both for the coordinate format). Internal nodes
+that Abaqus adds itself (Lagrange multipliers, the extra nodes of some beams and connectors) are
+numbered negative and have no coordinates: they may carry DOFs (labelled layout only) anywhere but
+on the platform, at the excitation or in a gauge.
 """
 from __future__ import annotations
 
 import numpy as np
 
 from ..errors import InputError
-from ._text import parse_deck_nodes, read_text, symmetric_from_triplets
+from ._deck import parse_deck_nodes
+from ._text import symmetric_from_triplets, text_lines
 from .model import FEModel, make_model
 
 
 def _lines(path, field):
     out = []
-    for lineno, line in enumerate(read_text(path, field).splitlines(), 1):
+    for lineno, line in text_lines(path, field):
         s = line.strip()
         if not s or s.startswith("*") or s.startswith("%") or s.startswith("#"):
             continue

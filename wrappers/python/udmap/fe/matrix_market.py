@@ -8,13 +8,13 @@ import numpy as np
 import scipy.sparse as sp
 
 from ..errors import InputError
-from ._text import read_mm, read_text
+from ._text import read_mm, text_lines
 from .model import FEModel, make_model
 
 
 def _csv(path: Path, field: str, ncol: int, kinds):
     rows = []
-    for lineno, line in enumerate(read_text(path, field).splitlines(), 1):
+    for lineno, line in text_lines(path, field):
         s = line.strip()
         if not s or s.startswith("#"):
             continue

@@ -15,7 +15,10 @@ COMPONENTS = ("UX", "UY", "UZ", "RX", "RY", "RZ")
 @dataclass
 class FEModel:
     """Sparse ``K``, ``M`` (full symmetric storage, SI units), the map from every row to
-    ``(dof_node[i], dof_comp[i])`` with components 1..6, and the node coordinates."""
+    ``(dof_node[i], dof_comp[i])`` with components 1..6, and the node coordinates. Internal
+    nodes that the FE code numbers itself (Abaqus numbers them negative) have no coordinates:
+    their rows of ``node_xyz`` are NaN; they may carry DOFs anywhere except on the platform, at
+    the excitation or in a gauge (:meth:`internal`)."""
     K: sp.csr_matrix
     M: sp.csr_matrix
     dof_node: np.ndarray   # int64 (n,)
@@ -38,6 +41,10 @@ class FEModel:
     def coords(self, node: int) -> np.ndarray:
         return self.node_xyz[self.node_index()[int(node)]]
 
+    def internal(self) -> set:
+        """Ids of the nodes without coordinates (internal nodes of the FE code)."""
+        return set(self.node_ids[np.isnan(self.node_xyz).any(axis=1)].tolist())
+
 
 def make_model(K, M, dof_node, dof_comp, node_ids, node_xyz, *, where: str) -> FEModel:
     """Builds an :class:`FEModel`, checking the sizes (``where`` names the files in errors)."""
@@ -57,20 +64,30 @@ def make_model(K, M, dof_node, dof_comp, node_ids, node_xyz, *, where: str) -> F
                          f"{n} x {n}")
     if len(node_ids) != len(node_xyz):
         raise InputError(f"{where}: {len(node_ids)} node ids but {len(node_xyz)} coordinates")
-    if len(np.unique(node_ids)) != len(node_ids):
-        raise InputError(f"{where}: duplicate node ids in the node coordinates")
+    uniq, counts = np.unique(node_ids, return_counts=True)
+    if len(uniq) != len(node_ids):
+        raise InputError(f"{where}: node {int(uniq[np.argmax(counts > 1)])} is given twice in "
+                         "the node coordinates")
     if n and (dof_comp.min() < 1 or dof_comp.max() > 6):
         raise InputError(f"{where}: DOF components must be 1..6")
     pairs = dof_node * 8 + dof_comp
-    if len(np.unique(pairs)) != n:
-        raise InputError(f"{where}: the DOF map lists a (node, component) twice")
+    uniq, counts = np.unique(pairs, return_counts=True)
+    if len(uniq) != n:
+        k = int(np.argmax(counts > 1))
+        rows = np.flatnonzero(pairs == uniq[k])[:3] + 1
+        raise InputError(f"{where}: the DOF map lists (node {int(uniq[k] // 8)}, component "
+                         f"{int(uniq[k] % 8)}) twice (rows {', '.join(map(str, rows))})")
+    if not np.all(np.isfinite(node_xyz)):
+        raise InputError(f"{where}: non-finite node coordinates")
     missing = np.setdiff1d(dof_node, node_ids)
-    if len(missing):
-        raise InputError(f"{where}: the DOF map refers to node {int(missing[0])}, which has no "
-                         "coordinates")
-    if not (np.all(np.isfinite(K.data)) and np.all(np.isfinite(M.data)) and
-            np.all(np.isfinite(node_xyz))):
-        raise InputError(f"{where}: non-finite values in the matrices or coordinates")
+    if np.any(missing >= 0):
+        raise InputError(f"{where}: the DOF map refers to node {int(missing[missing >= 0][0])}, "
+                         "which has no coordinates")
+    if len(missing):   # internal nodes numbered negative by the FE code (Abaqus): no coordinates
+        node_ids = np.concatenate([node_ids, missing])
+        node_xyz = np.vstack([node_xyz, np.full((len(missing), 3), np.nan)])
+    if not (np.all(np.isfinite(K.data)) and np.all(np.isfinite(M.data))):
+        raise InputError(f"{where}: non-finite values in the matrices")
     K.sort_indices()
     M.sort_indices()
     return FEModel(K, M, dof_node, dof_comp, node_ids, node_xyz)
