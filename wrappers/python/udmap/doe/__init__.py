@@ -17,20 +17,22 @@ parameters (element counts) are rounded, ``airfoil.elements`` to an even number.
 ``NAME=LO:HI:log`` samples ``ln(value)`` uniformly (stiffnesses spanning decades).
 """
 from .executors import chunk_ranges, default_chunk, default_workers, make_executor
-from .io import Output, cell, columns, format_rows, read_csv
-from .parameters import (SECTIONS, Parameter, parameter_names, parse_vary, resolve_name,
-                         validation_dict, with_values)
+from .io import (FORMATS, OUTPUTS, Output, cell, columns, format_chunk, format_rows,
+                 parse_outputs, read_csv)
+from .parameters import (SECTIONS, STIFFNESS_SCALE, Parameter, parameter_names, parse_vary,
+                         resolve_name, validation_dict, with_values)
 from .plot import pareto_front, plot_doe
 from .run import make_spec, parse_forces, run_doe
 from .sampling import METHODS, DesignValues, design_values, unit_sample
 from .worker import (ADM_DECADES, ADM_GRID, ADM_TINY, STATUS_ERROR, STATUS_INPUT, STATUS_NUMERIC,
-                     STATUS_OK, STATUS_PHYSICS, DesignContext, admissible_grid, context_for,
-                     run_chunk)
+                     STATUS_OK, STATUS_PHYSICS, ChunkRows, DesignContext, admissible_grid,
+                     context_for, design_references, run_chunk)
 
-__all__ = ["chunk_ranges", "default_chunk", "default_workers", "make_executor", "Output", "cell",
-           "columns", "format_rows", "read_csv", "SECTIONS", "Parameter", "parameter_names",
+__all__ = ["chunk_ranges", "default_chunk", "default_workers", "make_executor", "FORMATS",
+           "OUTPUTS", "Output", "cell", "columns", "format_chunk", "format_rows", "parse_outputs",
+           "read_csv", "SECTIONS", "STIFFNESS_SCALE", "Parameter", "parameter_names",
            "parse_vary", "resolve_name", "validation_dict", "with_values", "pareto_front",
            "plot_doe", "make_spec", "parse_forces", "run_doe", "METHODS", "DesignValues",
            "design_values", "unit_sample", "ADM_DECADES", "ADM_GRID", "ADM_TINY", "STATUS_ERROR",
-           "STATUS_INPUT", "STATUS_NUMERIC", "STATUS_OK", "STATUS_PHYSICS", "DesignContext",
-           "admissible_grid", "context_for", "run_chunk"]
+           "STATUS_INPUT", "STATUS_NUMERIC", "STATUS_OK", "STATUS_PHYSICS", "ChunkRows", "DesignContext",
+           "admissible_grid", "context_for", "design_references", "run_chunk"]
