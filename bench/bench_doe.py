@@ -17,7 +17,8 @@ LocalCluster (``_dask_local<K>``); and serially
                 columns: only the stages F_adm needs)
   gg10_scaled   mu fixed, CF 600..1200 N and stiffness_scale 0.5..2: designs that differ only
                 in CF and a common factor of the contact stiffnesses share one tracing
-                (PHYSICS.md 2.3), so the run traces once. Records (INTERFACES.md "Benchmark output", method "doe"):
+                (PHYSICS.md 2.3), so the run traces once.
+Records (INTERFACES.md "Benchmark output", method "doe"):
 seconds per design = wall clock of the run / designs (pool or cluster start-up included), with
 extras designs, cores, designs_per_second_per_core, designs_per_cpu_second (designs over the
 CPU time of this process and its finished children: the per-core rate that other load on a

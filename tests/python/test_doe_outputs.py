@@ -16,7 +16,7 @@ import pytest
 from udmap.case import build_blade, build_damper, build_model, load_case
 from udmap.damper import Damper
 from udmap.doe import (OUTPUTS, ChunkRows, columns, format_chunk, format_rows, make_spec,
-                       parse_vary, run_doe, with_values)
+                       parse_vary, read_csv, run_doe, with_values)
 from udmap.doe.worker import _AsymmetricBlocks
 from udmap.model import DesignBatch
 
@@ -27,15 +27,16 @@ VARY = ["mu=0.15:0.6", "CF=500:1500"]  # above mu ~ 0.35 contacts lift off: jump
 
 
 def _read(path):
-    with open(path, newline="") as f:
-        return list(csv.DictReader(f))
+    """The rows of a doe CSV as dicts."""
+    header, rows = read_csv(path)
+    return [dict(zip(header, r)) for r in rows]
 
 
 @pytest.fixture(scope="module")
 def default_run(tmp_path_factory):
+    """32 designs with every output (blade A, mu and CF, three forces)."""
     out = tmp_path_factory.mktemp("outputs") / "all.csv"
-    summary = run_doe(CASE, VARY, 32, out, forces=FORCES, workers=1, progress=False)
-    return out, summary
+    return out, run_doe(CASE, VARY, 32, out, forces=FORCES, workers=1, progress=False)
 
 
 @pytest.mark.parametrize("outputs", ["F_adm", "F_lim", "F_lim,gamma_b,lift_off",
@@ -118,7 +119,8 @@ def test_vectorised_writer_writes_the_row_writers_bytes():
     assert counts == expect_counts
     parsed = list(csv.reader(text.splitlines()))
     assert len(parsed) == n and {len(r) for r in parsed} == {len(columns(spec))}
-    assert parsed[1][-1] == 'jammed, "mu" = 2 second line' and parsed[4][5:8] == ["1e+16", "", "-0.0"]
+    assert parsed[1][-1] == 'jammed, "mu" = 2 second line'
+    assert parsed[4][5:8] == ["1e+16", "", "-0.0"]
 
 
 def test_parquet_alone_holds_the_csvs_values(default_run, tmp_path):

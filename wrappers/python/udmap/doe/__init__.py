@@ -34,5 +34,5 @@ __all__ = ["chunk_ranges", "default_chunk", "default_workers", "make_executor", 
            "parse_vary", "resolve_name", "validation_dict", "with_values", "pareto_front",
            "plot_doe", "make_spec", "parse_forces", "run_doe", "METHODS", "DesignValues",
            "design_values", "unit_sample", "ADM_DECADES", "ADM_GRID", "ADM_TINY", "STATUS_ERROR",
-           "STATUS_INPUT", "STATUS_NUMERIC", "STATUS_OK", "STATUS_PHYSICS", "ChunkRows", "DesignContext",
-           "admissible_grid", "context_for", "design_references", "run_chunk"]
+           "STATUS_INPUT", "STATUS_NUMERIC", "STATUS_OK", "STATUS_PHYSICS", "ChunkRows",
+           "DesignContext", "admissible_grid", "context_for", "design_references", "run_chunk"]

@@ -1,9 +1,10 @@
 """Executors of the design of experiments: serial, process pool, thread pool, Dask distributed.
 
 Each runs :func:`udmap.doe.worker.run_chunk` on chunks ``(start, values, refs)`` and yields its
-results in completion order (the output puts them back in design order). A bounded number of chunks is in
-flight, so millions of designs never sit in memory as futures. Worker processes keep their
-context (the nominal case, the shared blade) for the whole run: the pool stays warm.
+results in completion order (the output puts them back in design order). A bounded number of
+chunks is in flight, so millions of designs never sit in memory as futures. Worker processes keep
+their context (the nominal case, the shared blade, the model and its tracings) for the whole run:
+the pool stays warm.
 """
 from __future__ import annotations
 
