@@ -238,3 +238,19 @@ def test_runs_count_their_tracings(tmp_path):
     # Sobol over mu and CF: every design its own tracing, as before
     s = run_doe(CASE, VARY, 8, tmp_path / "s.csv", forces="2", workers=1, progress=False)
     assert s["traces"] == 8
+
+
+@pytest.mark.parametrize("options,needle", [
+    ({"outputs": "F_lim"}, "--plot needs the outputs F_adm and hcf_ok"),
+    ({"format": "parquet"}, "--plot reads the CSV"),
+    ({"format": "feather"}, "--format must be one of csv, parquet"),
+    ({"outputs": ""}, "--outputs: expected at least one of F_lim"),
+])
+def test_options_that_cannot_go_together_stop_before_anything_is_written(tmp_path, options,
+                                                                         needle):
+    from udmap.errors import InputError
+    options.setdefault("plot", "format" not in options or options["format"] == "parquet")
+    with pytest.raises(InputError, match=needle.replace("(", r"\(")):
+        run_doe(CASE, ["mu=0.2:0.3"], 4, tmp_path / "x.csv", forces="2", workers=1,
+                progress=False, **options)
+    assert list(tmp_path.iterdir()) == []

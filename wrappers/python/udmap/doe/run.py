@@ -87,6 +87,8 @@ def run_doe(case, vary, samples: int, out, *, method: str = "sobol", forces=None
     chosen = io.parse_outputs(outputs)
     if plot and format == "parquet":
         raise InputError("--plot reads the CSV: use it with --format csv")
+    if plot and chosen and not {"F_adm", "hcf_ok"} <= set(chosen):
+        raise InputError("--plot needs the outputs F_adm and hcf_ok (add them to --outputs)")
     params = parse_vary(case, vary)
     force_values, labels = parse_forces(forces) if forces not in (None, "", []) else ([], [])
     values = design_values(params, unit_sample(method, samples, len(params), seed))
