@@ -24,7 +24,7 @@ extras designs, cores, designs_per_second_per_core, designs_per_cpu_second (desi
 CPU time of this process and its finished children: the per-core rate that other load on a
 shared machine does not distort; the Dask scheduler's and workers' housekeeping included),
 startup_seconds (the Dask cluster's start), designs_per_second_per_core_after_startup, traces
-(dampers traced by the run) and outputs (the --outputs of the run, null: all), and,
+(dampers traced by the first run) and outputs (the --outputs of the run, null: all), and,
 for the serial runs, the split of a
 design's time into the kernel's C calls and the Python around them (kernel_seconds,
 python_seconds, measured in a separate run that times every C call). The errors compare the
@@ -178,7 +178,9 @@ def main() -> int:
                          "designs_per_second_per_core_after_startup":
                              n / ((med * n - statistics.median(startup)) * k),
                          "goal_designs_per_second_per_core": GOAL,
-                         "traces": statistics.median(traces),
+                         # the first run's: later repeats find the tracings of the warm
+                         # worker's model (a serial run keeps its context between runs)
+                         "traces": traces[0],
                          "outputs": options.get("outputs"),
                          "status": summary["status"]}
                 if k == 1:
