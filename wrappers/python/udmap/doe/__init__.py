@@ -2,10 +2,13 @@
 
 A design is the case with some blade, damper or analysis parameters changed. The designs are
 sampled with :mod:`scipy.stats.qmc` (Sobol, Latin hypercube) or on a full grid, evaluated in
-chunks by a serial, process-pool, thread-pool or Dask executor, and streamed in design order to a
-CSV file (plus Parquet when pyarrow is installed). A worker reuses what the varied parameters
-leave unchanged (the blade, the model's bare-blade data, a damper whose CF alone varies; see
-:class:`DesignContext`), and every design goes through the same kernel calls on the same state
+chunks by a serial, process-pool, thread-pool or Dask executor (a chunk of asymmetric dampers
+is one kernel call, udmap_model_designs, computing only the stages the chosen ``--outputs``
+need), and streamed in design order to a CSV file (plus Parquet when pyarrow is installed, or
+Parquet alone). A worker reuses what the varied parameters leave unchanged (the blade, the
+model's bare-blade data, one tracing for designs that differ only in CF and
+``stiffness_scale``; see :class:`DesignContext`), and every design goes through the same kernel
+calls on the same state
 whichever worker computes it and whatever it computed before, so serial, pooled and Dask runs
 give the same file byte for byte for the same seed.
 
