@@ -15,8 +15,10 @@ give the same file byte for byte for the same seed.
 Parameter names (``--vary NAME=LO:HI``): a dotted path into the case (``damper.mu``,
 ``blade.airfoil.h``, ``airfoil.h`` when the section is unambiguous, ``damper.flat_points[0][1]``)
 or a flat FMU name (``mu``, ``CF``, ``kt_flat``, ``beta_L_deg``, ``neck_L``, ``platform_m``,
-``airfoil_elements``, ``E``, ``flat1_x``, ``curved_y``, ``f_min``, ``sigma_all``, ...). Integer
-parameters (element counts) are rounded, ``airfoil.elements`` to an even number.
+``airfoil_elements``, ``E``, ``flat1_x``, ``curved_y``, ``f_min``, ``sigma_all``, ...), and
+``stiffness_scale``, a common factor of the asymmetric damper's kn_flat, kt_flat, kn_curved,
+kt_curved (1: the case's values). Integer parameters (element counts) are rounded,
+``airfoil.elements`` to an even number.
 ``NAME=LO:HI:log`` samples ``ln(value)`` uniformly (stiffnesses spanning decades).
 """
 from .executors import chunk_ranges, default_chunk, default_workers, make_executor
