@@ -254,3 +254,16 @@ def test_options_that_cannot_go_together_stop_before_anything_is_written(tmp_pat
         run_doe(CASE, ["mu=0.2:0.3"], 4, tmp_path / "x.csv", forces="2", workers=1,
                 progress=False, **options)
     assert list(tmp_path.iterdir()) == []
+
+
+def test_stiffness_scale_multiplies_the_four_contact_stiffnesses_and_is_validated():
+    from udmap.errors import InputError
+    (p,) = parse_vary(CASE, ["stiffness_scale=0.5:2"])
+    assert p.path == ("damper", "stiffness_scale") and p.integer == 0
+    case = with_values(CASE, [("damper", "kn_flat"), p.path], [1e8, 3.0])
+    d = case.damper
+    assert (d["kn_flat"], d["kt_flat"], d["kn_curved"], d["kt_curved"]) == \
+        (3e8, 3 * 40e6, 3 * 80e6, 3 * 50e6)
+    assert CASE.damper["kn_flat"] == 60e6  # the case itself unchanged
+    with pytest.raises(InputError, match=r"--vary stiffness_scale=0.0:2.0: .*kn_flat"):
+        parse_vary(CASE, [("stiffness_scale", 0.0, 2.0)])
