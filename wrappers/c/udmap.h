@@ -299,6 +299,59 @@ int udmap_model_curve_size(udmap_error error, udmap_model model, int i, int *npo
 int udmap_model_curve_get(udmap_error error, udmap_model model, int i, int npoints, double *f_hz,
                           double *gamma_P, double *sigma_a, int *branch, int *part);
 
+/* ---------------------------------------------------------------- many designs at once */
+
+/* The stages udmap_model_designs computes (bit flags; the outputs a design of experiments
+ * asks for decide them): */
+#define UDMAP_DESIGN_LIMIT 1           /* F_lim */
+#define UDMAP_DESIGN_LIMIT_BACKBONE 2  /* F_lim_backbone */
+#define UDMAP_DESIGN_PEAKS 4           /* gamma_P, f_res, sigma_a, unbounded, hcf_ok at F_E */
+#define UDMAP_DESIGN_JUMPS 8           /* the jump flags at F_E (computes the peaks) */
+#define UDMAP_DESIGN_ADMISSIBLE 16     /* F_adm (computes F_lim and F_lim_backbone) */
+/* Where a design failed (udmap_design_outputs.stage): */
+#define UDMAP_DESIGN_FAILED_DAMPER 1     /* tracing or rescaling the damper */
+#define UDMAP_DESIGN_FAILED_LIMIT 2      /* coupling the damper, F_lim */
+#define UDMAP_DESIGN_FAILED_PEAKS 3      /* the peaks */
+#define UDMAP_DESIGN_FAILED_ADMISSIBLE 4 /* F_adm */
+
+/* Where udmap_model_designs writes (caller's arrays; NULL: not written). Per design: F_lim,
+ * F_lim_backbone [N], the damper's gamma_b [rad], M_max, M_min [N m], lift_off (0/1); per
+ * design and force (design by design, nforces each): gamma_P [rad], f_res [Hz], sigma_a [Pa],
+ * unbounded, hcf_ok, jump (0/1, as udmap_point and udmap_model_backbone_jumps give them);
+ * per design F_adm [N] (udmap_model_admissible_force with the smaller of F_lim and
+ * F_lim_backbone and the model's sigma_all and rtol; F_lim/2 without stress rows), status
+ * (required: UDMAP_OK or the status of the design's failure), stage (0, or the
+ * UDMAP_DESIGN_FAILED_* stage) and message (message_len characters per design, the failure's
+ * message NUL-terminated). What precedes a failed stage is written; traces: dampers traced
+ * by the call. */
+typedef struct {
+  double *F_lim, *F_lim_backbone, *gamma_b, *M_max, *M_min;
+  int *lift_off;
+  double *gamma_P, *f_res, *sigma_a;
+  int *unbounded, *hcf_ok, *jump;
+  double *F_adm;
+  int *status, *stage;
+  char *message;
+  int message_len;
+  int traces;
+} udmap_design_outputs;
+
+/* n designs on one model in one call, each as the single calls would compute it (set the
+ * damper, F_lim, F_lim_backbone, the backbone at the nforces forces F_E [N] with its jump
+ * flags, F_adm: bit for bit the same numbers), only the stages asked for. params: n
+ * asymmetric damper blocks, or NULL for the model's own damper in every design. reference
+ * (NULL: each design traced for its own block): per design a block equal to its own but for
+ * CF and a common factor kappa of kn_flat, kt_flat, kn_curved, kt_curved; the design then
+ * takes the damper traced for the reference, rescaled exactly (PHYSICS.md 2.3: amplitudes by
+ * (CF/CF_ref)/kappa, moments by CF/CF_ref, k by kappa), so designs that share a reference
+ * share one tracing. The model keeps the last few traced dampers between calls; afterwards
+ * it is coupled to its own damper again. A failing design is recorded in out and the call
+ * goes on; the call itself fails only on bad arguments. */
+int udmap_model_designs(udmap_error error, udmap_model model, int n,
+                        const udmap_asymmetric_params *params,
+                        const udmap_asymmetric_params *reference, int nforces,
+                        const double *F_E, int stages, udmap_design_outputs *out);
+
 /* ---------------------------------------------------------------- standard method, time integration */
 
 /* The standard convergence-based method (PHYSICS.md 6) and the time-domain ground truth

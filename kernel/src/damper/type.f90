@@ -40,9 +40,13 @@ module udmap_damper_type
     integer :: revision = 0
     !> Largest amplitude with a defined k: a table without delta_M ends at its last row [rad].
     real(wp) :: gamma_max = huge(1.0_wp)
-    !> Asymmetric kind: parameters (CF current), reference CF of the tracing, CF/CF_ref.
+    !> Asymmetric kind: parameters (CF and contact stiffnesses current), reference CF of the
+    !> tracing, CF/CF_ref; k_scale (kappa) the common factor of the contact stiffnesses against
+    !> the traced ones (k_ref: kn_flat, kt_flat, kn_curved, kt_curved then), and gamma_scale =
+    !> CF_scale/k_scale, the factor of every amplitude (PHYSICS.md 2.3).
     type(asymmetric_params_type) :: params
-    real(wp) :: CF_ref = 0, CF_scale = 1
+    real(wp) :: CF_ref = 0, CF_scale = 1, k_scale = 1, gamma_scale = 1
+    real(wp) :: k_ref(4) = 0
     type(damper_geometry_type) :: geometry
     type(ramp_type) :: ramp
     type(stiffness_table_type) :: table
@@ -62,6 +66,8 @@ module udmap_damper_type
     procedure :: stiffness_direct
     !> New centrifugal load: rescales (PHYSICS.md 2.3), no new tracing.
     procedure :: set_CF
+    !> New CF and a common factor of the contact stiffnesses: rescales, no new tracing.
+    procedure :: set_scale
     !> The steady loop M_r(tau) at amplitude gamma_a, gamma = gamma_a cos(tau).
     procedure :: loop
     !> Number of jumps of k(gamma) (PHYSICS.md 2.5; asymmetric kind with lift-off only).
@@ -106,6 +112,9 @@ contains
     damper%params = params
     damper%CF_ref = params%CF
     damper%CF_scale = 1
+    damper%k_scale = 1
+    damper%gamma_scale = 1
+    damper%k_ref = [params%kn_flat, params%kt_flat, params%kn_curved, params%kt_curved]
     damper%lift_off = damper%table%lift_off
     damper%k_stuck = damper%table%k_stuck
     call update_scaled(damper)
@@ -238,11 +247,12 @@ contains
     case (DAMPER_ASYMMETRIC)
       if (slope) then
         k = 0
-        if (gamma > 0) k = table_stiffness_derivative(self%table, gamma/self%CF_scale)/self%CF_scale
+        if (gamma > 0) k = self%k_scale* &
+          & table_stiffness_derivative(self%table, gamma/self%gamma_scale)/self%gamma_scale
       else if (gamma > 0) then
-        k = table_stiffness(self%table, gamma/self%CF_scale)
+        k = self%k_scale*table_stiffness(self%table, gamma/self%gamma_scale)
       else
-        k = self%table%k_small
+        k = self%k_scale*self%table%k_small
       end if
     case (DAMPER_JENKINS)
       k = jenkins_stiffness(self%kt, self%M_slip, gamma, slope)
@@ -281,9 +291,10 @@ contains
     end if
     call cf_only_ramp(self%geometry, self%CF_ref, ramp, error)
     if (allocated(error)) return
-    call steady_loop(self%geometry, ramp, gamma/self%CF_scale, lp, work, error)
+    call steady_loop(self%geometry, ramp, gamma/self%gamma_scale, lp, work, error)
     if (allocated(error)) return
     call loop_stiffness(lp, lp%p0, k)
+    k = self%k_scale*k
   end subroutine stiffness_direct
 
   !> New centrifugal load CF [N] for the asymmetric kind: k(gamma; CF) = k(gamma CF_ref/CF;
@@ -301,9 +312,33 @@ contains
     if (allocated(error)) return
     self%params%CF = CF
     self%CF_scale = CF/self%CF_ref
+    self%gamma_scale = self%CF_scale/self%k_scale
     call update_scaled(self)
     self%revision = self%revision + 1
   end subroutine set_CF
+
+  !> New centrifugal load CF [N] and all four contact stiffnesses kappa times the traced ones
+  !> (kappa > 0), for the asymmetric kind, without tracing again (PHYSICS.md 2.3):
+  !> k(gamma; CF, kappa) = kappa k(gamma CF_ref/(kappa CF); CF_ref, 1); amplitudes scale with
+  !> CF/kappa, moments with CF. set_scale(CF_ref, 1) restores the traced damper exactly.
+  subroutine set_scale(self, CF, kappa, error)
+    class(damper_type), intent(inout) :: self
+    real(wp), intent(in) :: CF, kappa
+    type(error_type), allocatable, intent(out) :: error
+    if (self%kind /= DAMPER_ASYMMETRIC) then
+      call fatal_error(error, "set_scale: only the asymmetric damper has contact stiffnesses "// &
+        & "and a centrifugal load", UDMAP_EINPUT)
+      return
+    end if
+    call check_positive(kappa, "set_scale: stiffness factor 'kappa'", "", error)
+    if (allocated(error)) return
+    self%k_scale = kappa
+    self%params%kn_flat = kappa*self%k_ref(1)
+    self%params%kt_flat = kappa*self%k_ref(2)
+    self%params%kn_curved = kappa*self%k_ref(3)
+    self%params%kt_curved = kappa*self%k_ref(4)
+    call self%set_CF(CF, error)
+  end subroutine set_scale
 
   !> The steady loop at amplitude gamma_a > 0: M_r [N m] at the given tau [rad], with
   !> gamma = gamma_a cos(tau) (asymmetric: traced with the history of PHYSICS.md 2.1;
@@ -330,7 +365,7 @@ contains
     end if
     select case (self%kind)
     case (DAMPER_ASYMMETRIC)
-      call steady_loop(self%geometry, self%ramp, gamma_a/self%CF_scale, lp, work, error)
+      call steady_loop(self%geometry, self%ramp, gamma_a/self%gamma_scale, lp, work, error)
       if (allocated(error)) return
       do i = 1, size(tau)
         M_r(i) = self%CF_scale*loop_moment(lp, tau(i))
@@ -358,11 +393,11 @@ contains
     real(wp), intent(out) :: gamma_c
     complex(wp), intent(out) :: k_minus, k_plus
     complex(wp), intent(out), optional :: dk_minus, dk_plus
-    gamma_c = self%CF_scale*self%table%jump_gamma(i)
-    k_minus = self%table%jump_k(1, i)
-    k_plus = self%table%jump_k(2, i)
-    if (present(dk_minus)) dk_minus = self%table%jump_dk(1, i)/self%CF_scale
-    if (present(dk_plus)) dk_plus = self%table%jump_dk(2, i)/self%CF_scale
+    gamma_c = self%gamma_scale*self%table%jump_gamma(i)
+    k_minus = self%k_scale*self%table%jump_k(1, i)
+    k_plus = self%k_scale*self%table%jump_k(2, i)
+    if (present(dk_minus)) dk_minus = self%k_scale*self%table%jump_dk(1, i)/self%gamma_scale
+    if (present(dk_plus)) dk_plus = self%k_scale*self%table%jump_dk(2, i)/self%gamma_scale
   end subroutine jump
 
   !> lim E(gamma)/gamma for gamma -> infinity [N m] (E the energy dissipated per cycle):
@@ -380,8 +415,9 @@ contains
   !> Fills the CF-dependent fields of the asymmetric kind from the reference table.
   pure subroutine update_scaled(self)
     type(damper_type), intent(inout) :: self
-    self%gamma_b = self%CF_scale*self%table%gamma_b
-    self%gamma_s = self%CF_scale*self%table%gamma_s
+    self%gamma_b = self%gamma_scale*self%table%gamma_b
+    self%gamma_s = self%gamma_scale*self%table%gamma_s
+    self%k_stuck = self%k_scale*self%table%k_stuck
     self%M_max = self%CF_scale*self%table%base%M_max
     self%M_min = self%CF_scale*self%table%base%M_min
   end subroutine update_scaled
@@ -405,7 +441,7 @@ contains
     if (self%kind == DAMPER_ASYMMETRIC .and. .not. (gamma > 0)) then
       k = self%table%k_small
     else if (self%kind == DAMPER_ASYMMETRIC) then
-      k = table_stiffness_exact(self%table, gamma/self%CF_scale)
+      k = self%k_scale*table_stiffness_exact(self%table, gamma/self%gamma_scale)
     else
       k = self%stiffness(gamma)
     end if

@@ -185,6 +185,21 @@ model_set_force_table = declare("udmap_model_set_force_table", [vp, vp, _ci])
 model_point_harmonics = declare("udmap_model_point_harmonics",
                                 [vp, vp, _ci, _ci, c_double_p, c_double_p, c_int_p])
 
+
+class DesignOutputs(ctypes.Structure):
+    """udmap_design_outputs: where udmap_model_designs writes (NULL: not written)."""
+    _fields_ = [(name, c_double_p) for name in ("F_lim", "F_lim_backbone", "gamma_b", "M_max",
+                                                "M_min")] + \
+        [("lift_off", c_int_p)] + [(name, c_double_p) for name in ("gamma_P", "f_res",
+                                                                     "sigma_a")] + \
+        [(name, c_int_p) for name in ("unbounded", "hcf_ok", "jump")] + \
+        [("F_adm", c_double_p), ("status", c_int_p), ("stage", c_int_p),
+         ("message", ctypes.c_char_p), ("message_len", _ci), ("traces", _ci)]
+
+
+model_designs = declare("udmap_model_designs", [vp, vp, _ci, vp, vp, _ci, c_double_p, _ci,
+                                                ctypes.POINTER(DesignOutputs)])
+
 # reduction
 reduce = declare("udmap_reduce", [
     vp, _ci, ctypes.c_int64, vp, vp, vp, ctypes.c_int64, vp, vp, vp, vp, vp, _ci, vp,

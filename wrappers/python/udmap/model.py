@@ -280,3 +280,74 @@ class BackbonePoints:
         if status:
             model._err.check(status)
         return [f != 0 for f in self._jumps[:n]]
+
+
+#: Stages of :meth:`DesignBatch.run` (udmap_model_designs, wrappers/c/udmap.h).
+DESIGN_LIMIT, DESIGN_LIMIT_BACKBONE, DESIGN_PEAKS, DESIGN_JUMPS, DESIGN_ADMISSIBLE = \
+    1, 2, 4, 8, 16
+#: Where a design failed (``stage``): the damper, its coupling or F_lim, the peaks, F_adm.
+DESIGN_FAILED_DAMPER, DESIGN_FAILED_LIMIT, DESIGN_FAILED_PEAKS, DESIGN_FAILED_ADMISSIBLE = \
+    1, 2, 3, 4
+
+
+class DesignBatch:
+    """Many designs on one model in one kernel call (``udmap_model_designs``): arrays in,
+    arrays out, only the stages asked for, each design's numbers those of the single calls bit
+    for bit. Designs given with a reference parameter block (equal but for CF and a common
+    factor of the four contact stiffnesses) share the damper traced for it, rescaled exactly
+    (PHYSICS.md 2.3). The output arrays are reused from call to call."""
+
+    MESSAGE_LEN = 4096
+
+    def __init__(self, forces):
+        self.forces, self._forces_ptr = as_doubles(np.asarray(forces, dtype=float).ravel())
+        self._n = -1
+
+    def _alloc(self, n: int) -> None:
+        nf = len(self.forces)
+        self.out = {k: np.zeros(n) for k in ("F_lim", "F_lim_backbone", "gamma_b", "M_max",
+                                             "M_min", "F_adm")}
+        self.out.update({k: np.zeros((n, nf)) for k in ("gamma_P", "f_res", "sigma_a")})
+        self.out.update({k: np.zeros((n, nf), dtype=np.intc)
+                         for k in ("unbounded", "hcf_ok", "jump")})
+        self.out.update({k: np.zeros(n, dtype=np.intc) for k in ("lift_off", "status", "stage")})
+        self._messages = ctypes.create_string_buffer(max(n, 1) * self.MESSAGE_LEN)
+        s = _capi.DesignOutputs()
+        for name, arr in self.out.items():
+            setattr(s, name, arr.ctypes.data_as(_capi.c_int_p if arr.dtype == np.intc
+                                                else _capi.c_double_p))
+        s.message = ctypes.cast(self._messages, ctypes.c_char_p)
+        s.message_len = self.MESSAGE_LEN
+        self._struct = s
+        self._n = n
+
+    def run(self, model: Model, stages: int, params=None, reference=None) -> dict:
+        """The designs: ``params`` an (n, 16) array of asymmetric parameter blocks (or None:
+        one design with the model's own damper), ``reference`` the same shape or None (each
+        design traced for its own block). Returns the output arrays (views valid until the
+        next call; missing stages keep stale values, see ``status`` and ``stage``) and
+        ``traces`` (dampers traced by this call)."""
+        if params is None:
+            n, pp, rp = 1, None, None
+        else:
+            params = np.ascontiguousarray(params, dtype=np.float64)
+            n = params.shape[0]
+            pp = params.ctypes.data
+            rp = None
+            if reference is not None:
+                reference = np.ascontiguousarray(reference, dtype=np.float64)
+                rp = reference.ctypes.data
+        if n != self._n:
+            self._alloc(n)
+        status = _capi.model_designs(model._err.ptr, model._ptr, n, pp, rp, len(self.forces),
+                                     self._forces_ptr, int(stages), ctypes.byref(self._struct))
+        if status:
+            model._err.check(status)
+        result = dict(self.out)
+        result["traces"] = self._struct.traces
+        return result
+
+    def message(self, i: int) -> str:
+        """The failure message of design i of the last call."""
+        raw = self._messages.raw[i * self.MESSAGE_LEN:(i + 1) * self.MESSAGE_LEN]
+        return raw.split(b"\0", 1)[0].decode("utf-8", "replace")

@@ -4,6 +4,7 @@
 module udmap_api_c_model
   use, intrinsic :: iso_c_binding, only: c_ptr, c_null_ptr, c_associated, c_f_pointer, &
     & c_loc, c_int, c_double
+  use, intrinsic :: iso_fortran_env, only: int64
   use udmap_core_kinds, only: wp
   use udmap_core_error, only: error_type, fatal_error, UDMAP_EINPUT
   use udmap_api_c_support, only: set_error, clear_error, check_handle, check_input, take_handle, &
@@ -19,7 +20,16 @@ module udmap_api_c_model
   use udmap_mapping_model_data, only: regime_of, check_forces, REGIME_LIMIT
   implicit none
   private
-  public :: c_analysis_type, c_point_type, c_model_type
+  public :: c_analysis_type, c_point_type, c_model_type, traced_damper_type, model_from_handle
+
+  !> A damper traced by udmap_model_designs for one parameter block (bit for bit), or the
+  !> error its tracing gave; kept in the model handle between calls.
+  type :: traced_damper_type
+    logical :: used = .false.
+    integer(int64) :: key(16) = 0
+    type(damper_type) :: damper
+    type(error_type), allocatable :: error
+  end type traced_damper_type
 
   !> Largest number of roots a udmap_point carries (UDMAP_MAX_ROOTS).
   integer, parameter :: max_roots = 8
@@ -41,6 +51,10 @@ module udmap_api_c_model
     logical, allocatable :: jump(:)
     !> The points of the last backbone or response call (for their harmonic content).
     type(point_type), allocatable :: last(:)
+    !> Dampers traced by udmap_model_designs (a few, reused round-robin from next_traced); the
+    !> array is allocated once, so that the model may point at its elements.
+    type(traced_damper_type), allocatable :: traced(:)
+    integer :: next_traced = 1
   end type c_model_type
 
 contains

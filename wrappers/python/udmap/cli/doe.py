@@ -49,6 +49,13 @@ def add_doe_parser(sub) -> argparse.ArgumentParser:
     p.add_argument("--out", required=True, metavar="FILE",
                    help="output CSV (a Parquet copy FILE.parquet when pyarrow is installed; "
                         "FILE.meta.json describes the run for --resume)")
+    p.add_argument("--outputs", default=None, metavar="NAME,...",
+                   help="the output columns: any of " + ", ".join(doe.OUTPUTS) +
+                        " (per-force ones for every force; default all); the kernel computes "
+                        "only what they need")
+    p.add_argument("--format", choices=doe.FORMATS, default="csv",
+                   help="csv (default; a Parquet copy too when pyarrow is installed) or "
+                        "parquet (FILE written as Parquet alone)")
     p.add_argument("--resume", action="store_true",
                    help="continue an interrupted run in FILE")
     p.add_argument("--force", action="store_true", help="overwrite an existing FILE")
@@ -79,7 +86,8 @@ def cmd_doe(args) -> None:
         forces=args.forces, seed=args.seed,
         workers=args.threads if args.threads is not None else args.workers,
         threads=args.threads is not None, dask=args.dask, chunk=args.chunk,
-        resume=args.resume, overwrite=args.force, plot=args.plot)
+        resume=args.resume, overwrite=args.force, plot=args.plot, outputs=args.outputs,
+        format=args.format)
     if summary["interrupted"]:
         print(f"udmap: interrupted: {summary['written']} of {summary['designs']} designs are in "
               f"{summary['out']} (finished chunks waiting for an earlier one in "
@@ -92,13 +100,14 @@ def cmd_doe(args) -> None:
     rate = summary["designs_per_second"]
     recovered = f", {summary['recovered']} recovered" if summary["recovered"] else ""
     print(f"{summary['designs']} designs in {summary['out']} "
-          f"({summary['computed']} computed{recovered} in {summary['seconds']:.2f} s"
+          f"({summary['computed']} computed{recovered} in {summary['seconds']:.2f} s, "
+          f"{summary['traces']} damper tracing" + ("s" if summary["traces"] != 1 else "")
           + (f", {rate:.0f} designs/s, {summary['workers']} {summary['executor']} worker"
              + ("s" if summary["workers"] > 1 else "") if rate else "") + ")")
     print("status: " + ", ".join(f"{k} {v}" for k, v in sorted(summary["status"].items())))
     for label, share in summary.get("hcf_share", {}).items():
         print(f"hcf_ok at F_E = {label} N: {100 * share:.1f} % of the designs")
-    if summary.get("parquet"):
+    if summary.get("parquet") and summary["parquet"] != summary["out"]:
         print(f"parquet: {summary['parquet']}")
     for path in summary.get("plots", []):
         print(f"plot: {path}")

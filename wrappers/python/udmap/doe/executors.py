@@ -1,9 +1,10 @@
 """Executors of the design of experiments: serial, process pool, thread pool, Dask distributed.
 
-Each runs :func:`udmap.doe.worker.run_chunk` on chunks ``(start, values)`` and yields its results
-in completion order (the output puts them back in design order). A bounded number of chunks is in
-flight, so millions of designs never sit in memory as futures. Worker processes keep their
-context (the nominal case, the shared blade) for the whole run: the pool stays warm.
+Each runs :func:`udmap.doe.worker.run_chunk` on chunks ``(start, values, refs)`` and yields its
+results in completion order (the output puts them back in design order). A bounded number of
+chunks is in flight, so millions of designs never sit in memory as futures. Worker processes keep
+their context (the nominal case, the shared blade, the model and its tracings) for the whole run:
+the pool stays warm.
 """
 from __future__ import annotations
 
@@ -72,8 +73,8 @@ class SerialExecutor:
         return False
 
     def run(self, spec, ranges):
-        for start, values in ranges:
-            yield run_chunk(spec, start, values)
+        for start, values, refs in ranges:
+            yield run_chunk(spec, start, values, refs)
 
 
 class PoolExecutor:
@@ -117,7 +118,7 @@ class PoolExecutor:
         def submit():
             item = next(todo, None)
             if item is not None:
-                pending.add(self.pool.submit(run_chunk, spec, item[0], item[1]))
+                pending.add(self.pool.submit(run_chunk, spec, *item))
 
         for _ in range(2 * self.workers):
             submit()
@@ -137,10 +138,10 @@ def _dask_chunk_function():
     the result are plain Python data; a udmap error comes back as ``("error", status,
     message)`` rather than as an exception of a udmap class, for the same reason."""
 
-    def udmap_doe_chunk(spec, start, values):
+    def udmap_doe_chunk(spec, start, values, refs=None):
         import udmap.doe.worker
         try:
-            return ("ok", udmap.doe.worker.run_chunk(spec, start, values))
+            return ("ok", udmap.doe.worker.run_chunk(spec, start, values, refs))
         except udmap.UdmapError as exc:
             return ("error", exc.status, str(exc))
 
@@ -224,7 +225,7 @@ class DaskExecutor:
             item = next(todo, None)
             if item is None:
                 return None
-            return self.client.submit(chunk_function, spec_future, item[0], item[1], pure=False)
+            return self.client.submit(chunk_function, spec_future, *item, pure=False)
 
         first = [f for f in (submit() for _ in range(2 * self.workers)) if f is not None]
         queue = as_completed(first)

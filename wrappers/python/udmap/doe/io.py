@@ -21,27 +21,57 @@ import os
 import re
 from pathlib import Path
 
+import numpy as np
+
 from ..errors import InputError
 from ..parameters import FIELDS
 
 SUMMARY_COLUMNS = ("F_lim", "F_lim_backbone", "gamma_b", "M_max", "M_min", "lift_off")
 FORCE_FIELDS = ("gamma_P", "f_res", "sigma_a", "hcf_ok", "jump")
+#: The outputs ``--outputs`` chooses from (per-force fields for every force), in column order.
+OUTPUTS = SUMMARY_COLUMNS + FORCE_FIELDS + ("F_adm",)
+FORMATS = ("csv", "parquet")
 META_FORMAT = "udmap-doe-1"
 # Record header of the journal of chunks waiting for an earlier one: "#chunk START COUNT BYTES".
 _JOURNAL_TAG = b"#chunk"
 # What a resumed run must share with the one that wrote the file.
 _RUN_KEYS = ("name", "blade", "damper", "analysis", "params", "forces", "labels", "samples",
-             "method", "seed")
+             "method", "seed", "outputs")
+
+
+def parse_outputs(text) -> list[str] | None:
+    """``--outputs F_adm,sigma_a,...`` (or a list) into the chosen output names, None for the
+    default (all of :data:`OUTPUTS`); an unknown name is an InputError naming it and the valid
+    ones."""
+    if text is None:
+        return None
+    items = [s.strip() for s in text.split(",")] if isinstance(text, str) else list(text)
+    items = [s for s in items if s != ""]
+    if not items:
+        raise InputError(f"--outputs: expected at least one of {', '.join(OUTPUTS)}")
+    for name in items:
+        if name not in OUTPUTS:
+            raise InputError(f"--outputs: unknown output {name!r} (valid: {', '.join(OUTPUTS)})")
+    chosen = [name for name in OUTPUTS if name in items]
+    return None if chosen == list(OUTPUTS) else chosen
+
+
+def output_names(spec: dict) -> tuple:
+    """The outputs of a run, in column order (all of them by default)."""
+    return tuple(spec.get("outputs") or OUTPUTS)
 
 
 def columns(spec: dict) -> list[str]:
     """The header: design, the varied parameters by name, F_lim, F_lim_backbone, gamma_b,
     M_max, M_min, lift_off, per force F gamma_P@F, f_res@F, sigma_a@F, hcf_ok@F, jump@F (gamma_P
-    at a jump of k, PHYSICS.md 2.5), then F_adm, status, message."""
-    cols = ["design"] + [p["name"] for p in spec["params"]] + list(SUMMARY_COLUMNS)
+    at a jump of k, PHYSICS.md 2.5), then F_adm, status, message; of the outputs only the
+    chosen ones (``--outputs``)."""
+    out = output_names(spec)
+    cols = ["design"] + [p["name"] for p in spec["params"]] + \
+        [c for c in SUMMARY_COLUMNS if c in out]
     for label in spec["labels"]:
-        cols += [f"{field}@{label}" for field in FORCE_FIELDS]
-    return cols + ["F_adm", "status", "message"]
+        cols += [f"{field}@{label}" for field in FORCE_FIELDS if field in out]
+    return cols + (["F_adm"] if "F_adm" in out else []) + ["status", "message"]
 
 
 #: SI units of the computed columns (docs/outputs.md); per-force columns take their field's.
@@ -72,11 +102,13 @@ def column_units(spec: dict) -> dict:
     columns without a unit (design, flags, status, message) are left out."""
     units = {p["name"]: parameter_unit(spec, path)
              for p, path in zip(spec["params"], spec["paths"])}
-    units.update({c: COLUMN_UNITS[c] for c in SUMMARY_COLUMNS if c in COLUMN_UNITS})
+    out = output_names(spec)
+    units.update({c: COLUMN_UNITS[c] for c in SUMMARY_COLUMNS if c in COLUMN_UNITS and c in out})
     for label in spec["labels"]:
         units.update({f"{f}@{label}": COLUMN_UNITS[f] for f in FORCE_FIELDS
-                      if f in COLUMN_UNITS})
-    units["F_adm"] = COLUMN_UNITS["F_adm"]
+                      if f in COLUMN_UNITS and f in out})
+    if "F_adm" in out:
+        units["F_adm"] = COLUMN_UNITS["F_adm"]
     return units
 
 
@@ -146,11 +178,21 @@ def tally(spec: dict, cells: list[str], counts: dict) -> None:
     (keys ``hcf_ok@F``)."""
     status = cells[-2]
     counts[status] = counts.get(status, 0) + 1
-    base = 1 + len(spec["params"]) + len(SUMMARY_COLUMNS)
-    for i, label in enumerate(spec["labels"]):
-        if cells[base + len(FORCE_FIELDS) * i + 3] == "true":
+    for label, at in _hcf_positions(spec):
+        if cells[at] == "true":
             key = f"hcf_ok@{label}"
             counts[key] = counts.get(key, 0) + 1
+
+
+def _hcf_positions(spec: dict) -> list[tuple[str, int]]:
+    """(label, column index) of the hcf_ok@F columns of a run (none when not chosen)."""
+    out = output_names(spec)
+    if "hcf_ok" not in out:
+        return []
+    base = 1 + len(spec["params"]) + sum(c in out for c in SUMMARY_COLUMNS)
+    per = sum(f in out for f in FORCE_FIELDS)
+    at = [f for f in FORCE_FIELDS if f in out].index("hcf_ok")
+    return [(label, base + per * i + at) for i, label in enumerate(spec["labels"])]
 
 
 def format_rows(spec: dict, start: int, values, rows) -> tuple[str, dict]:
@@ -164,6 +206,68 @@ def format_rows(spec: dict, start: int, values, rows) -> tuple[str, dict]:
     return "".join(lines), counts
 
 
+def _float_cells(a) -> list[str]:
+    """Cells of an array of floats: repr (as :func:`cell`), '' where not finite (missing)."""
+    cells = list(map(repr, a.tolist()))
+    bad = ~np.isfinite(a)
+    if bad.any():
+        for i in np.flatnonzero(bad):
+            cells[i] = ""
+    return cells
+
+
+_FLAG_TEXT = np.array(["", "false", "true"])
+
+
+def _message_cell(message: str) -> str:
+    """A message as its CSV field (one line; quoted when it holds a comma or a quote)."""
+    message = cell(message)
+    if "," in message or '"' in message:
+        message = '"' + message.replace('"', '""') + '"'
+    return message
+
+
+def format_chunk(spec: dict, start: int, values, rows) -> tuple[str, dict]:
+    """The text of a chunk of designs ``start, start + 1, ...`` from its columns ``rows`` (a
+    :class:`udmap.doe.worker.ChunkRows`) and its counts: column by column (numpy masks, the
+    floats' shortest round-trip text), the same bytes as :func:`format_rows` writes for the
+    same rows."""
+    out = output_names(spec)
+    n = rows.n
+    cols = [list(map(str, range(start, start + n)))]
+    for column in zip(*values) if n else []:
+        cols.append(list(map(cell, column)))
+    for c in SUMMARY_COLUMNS:
+        if c not in out:
+            continue
+        if c == "lift_off":
+            cols.append(_FLAG_TEXT[rows.lift_off + 1].tolist())
+        else:
+            cols.append(_float_cells(rows.num[c]))
+    for i in range(len(spec["labels"])):
+        for f in FORCE_FIELDS:
+            if f not in out:
+                continue
+            if f in rows.flags:
+                cols.append(_FLAG_TEXT[rows.flags[f][:, i] + 1].tolist())
+            else:
+                cols.append(_float_cells(rows.force[f][:, i]))
+    if "F_adm" in out:
+        cols.append(_float_cells(rows.num["F_adm"]))
+    cols.append(rows.status)
+    cols.append([_message_cell(m) if m else "" for m in rows.message])
+    text = "\n".join(map(",".join, zip(*cols)))
+    counts: dict = {}
+    for status in rows.status:
+        counts[status] = counts.get(status, 0) + 1
+    if "hcf_ok" in out:
+        passing = (rows.flags["hcf_ok"] == 1).sum(axis=0)
+        for label, k in zip(spec["labels"], passing.tolist()):
+            if k:
+                counts[f"hcf_ok@{label}"] = k
+    return (text + "\n" if n else ""), counts
+
+
 def split_counts(counts: dict) -> tuple[dict, dict]:
     """(designs per status, passing designs per force label) from a tally."""
     status = {k: v for k, v in counts.items() if not k.startswith("hcf_ok@")}
@@ -172,15 +276,22 @@ def split_counts(counts: dict) -> tuple[dict, dict]:
 
 
 def _jsonable(spec: dict) -> dict:
-    return json.loads(json.dumps({k: spec[k] for k in _RUN_KEYS}, default=str))
+    return json.loads(json.dumps({k: spec.get(k) for k in _RUN_KEYS}, default=str))
 
 
 class Output:
     """The CSV file of a run (and its meta file and Parquet copy), written in design order."""
 
-    def __init__(self, out, spec: dict, values):
+    def __init__(self, out, spec: dict, values, format: str = "csv"):
         out = Path(out)
-        if out.suffix == ".parquet":
+        if format not in FORMATS:
+            raise InputError(f"--format must be one of {', '.join(FORMATS)}, got {format!r}")
+        self.format = format
+        if format == "parquet":
+            # Parquet alone: the rows are staged in FILE.rows.csv (what --resume continues)
+            # and converted when the run completes; the staging file then goes
+            self.path, self.parquet_path = out.with_name(out.name + ".rows.csv"), out
+        elif out.suffix == ".parquet":
             self.path, self.parquet_path = out.with_suffix(".csv"), out
         else:
             self.path = out
@@ -188,7 +299,9 @@ class Output:
                 out.with_name(out.name + ".parquet")
         if self.path == self.parquet_path:
             raise InputError(f"--out {out}: choose a name ending in .csv")
-        self.meta_path = self.path.with_name(self.path.name + ".meta.json")
+        #: The run's result: the CSV, or the Parquet file with --format parquet.
+        self.result_path = self.parquet_path if format == "parquet" else self.path
+        self.meta_path = self.result_path.with_name(self.result_path.name + ".meta.json")
         self.journal_path = self.path.with_name(self.path.name + ".pending")
         self.spec = spec
         self.values = values
@@ -207,10 +320,19 @@ class Output:
         its last complete line. Returns the first design still to compute. Raises InputError
         (before writing anything) when the file exists without ``resume``/``overwrite`` or
         belongs to another run."""
+        if self.format == "parquet":
+            try:
+                import pyarrow.parquet  # noqa: F401
+            except ImportError:
+                raise InputError("--format parquet needs the Python package pyarrow "
+                                 "(pip install pyarrow)") from None
         if self.path.exists() and resume:
             first = self._scan()
             self._recover(first)
         else:
+            if self.result_path.exists() and not overwrite:
+                raise InputError(f"--out {self.result_path} exists: pass --resume to continue "
+                                 "that run or --force to overwrite it")
             if self.path.exists() and not overwrite:
                 raise InputError(f"--out {self.path} exists: pass --resume to continue that run "
                                  "or --force to overwrite it")
@@ -370,8 +492,26 @@ class Output:
             if self.written >= len(self.values) and self.journal_path.exists():
                 self.journal_path.unlink()
 
+    def record(self, **fields) -> None:
+        """Adds fields to FILE.meta.json (after the run: e.g. the traces it made)."""
+        try:
+            meta = json.loads(self.meta_path.read_text())
+            meta.update(fields)
+            tmp = self.meta_path.with_name(self.meta_path.name + ".tmp")
+            tmp.write_text(json.dumps(meta, indent=1))
+            os.replace(tmp, self.meta_path)
+        except (OSError, ValueError) as exc:
+            raise InputError(f"--out {self.meta_path}: {exc}") from None
+
     def finish(self) -> str | None:
-        """After a complete run: the Parquet copy when pyarrow is installed (its path)."""
+        """After a complete run: the Parquet copy when pyarrow is installed (its path); with
+        --format parquet the Parquet file, and the staged rows removed."""
+        path = self._parquet()
+        if self.format == "parquet":
+            self.path.unlink()
+        return path
+
+    def _parquet(self) -> str | None:
         try:
             import pyarrow.csv as pacsv
             import pyarrow.parquet as pq
@@ -382,12 +522,14 @@ class Output:
         types = {c: pa.float64() for c in cols}
         types.update({"design": pa.int64(), "lift_off": pa.bool_(), "status": pa.string(),
                       "message": pa.string()})
+        types = {c: t for c, t in types.items() if c in cols}
         for p, path in zip(self.spec["params"], self.spec["paths"]):
             if p["integer"]:
                 types[p["name"]] = pa.int64()
         for label in self.spec["labels"]:
-            types[f"hcf_ok@{label}"] = pa.bool_()
-            types[f"jump@{label}"] = pa.bool_()
+            for f in ("hcf_ok", "jump"):
+                if f"{f}@{label}" in cols:
+                    types[f"{f}@{label}"] = pa.bool_()
         reader = pacsv.open_csv(self.path, convert_options=pacsv.ConvertOptions(
             column_types=types, strings_can_be_null=False, true_values=["true"],
             false_values=["false"]))

@@ -11,6 +11,12 @@ from ..case import Case, validate
 from ..errors import InputError
 
 SECTIONS = ("blade", "damper", "analysis")
+#: A common factor of the asymmetric damper's four contact stiffnesses (kn_flat, kt_flat,
+#: kn_curved, kt_curved; 1 = the case's values): a design parameter of its own, not a case
+#: field. Designs that differ only in it and CF share one tracing (PHYSICS.md 2.3).
+STIFFNESS_SCALE = "stiffness_scale"
+STIFFNESS_SCALE_PATH = ("damper", STIFFNESS_SCALE)
+STIFFNESS_FIELDS = ("kn_flat", "kt_flat", "kn_curved", "kt_curved")
 # Numeric leaves that are identifiers or data, not design parameters.
 _NOT_PARAMETERS = {("blade", "gamma_dof"), ("blade", "exc_dof"), ("blade", "u_dof"),
                    ("blade", "v_dof")}
@@ -86,6 +92,9 @@ def parameter_names(case: Case) -> dict[str, tuple]:
     if "curved_point" in case.damper:
         for j, axis in enumerate("xy"):
             names[f"curved_{axis}"] = ("damper", "curved_point", j)
+    if case.damper.get("kind") == "asymmetric":
+        names[STIFFNESS_SCALE] = STIFFNESS_SCALE_PATH
+        names["damper." + STIFFNESS_SCALE] = STIFFNESS_SCALE_PATH
     return names
 
 
@@ -139,8 +148,17 @@ def with_values(case: Case, paths: Sequence[tuple], values: Sequence) -> Case:
     """``case`` with the parameters at ``paths`` set to ``values`` (no validation, no deep copy:
     the untouched parts are shared with ``case``)."""
     sections = case_sections(case)
+    scale = None
     for path, value in zip(paths, values):
+        if path == STIFFNESS_SCALE_PATH:
+            scale = value
+            continue
         sections[path[0]] = _set_copied(sections[path[0]], path[1:], value)
+    if scale is not None:  # after the stiffnesses themselves, if they vary too
+        damper = dict(sections["damper"])
+        for name in STIFFNESS_FIELDS:
+            damper[name] = damper[name] * scale
+        sections["damper"] = damper
     return Case(blade=sections["blade"], damper=sections["damper"],
                 analysis=sections["analysis"], name=case.name, base_dir=case.base_dir)
 
@@ -196,7 +214,7 @@ def parse_vary(case: Case, specs: Sequence) -> list[Parameter]:
         if scale == "log" and not lo > 0:
             raise InputError(f"--vary {text}: a log range needs LO > 0")
         path = resolve_name(case, name)
-        current = get_value(case_sections(case), path)
+        current = 1.0 if path == STIFFNESS_SCALE_PATH else get_value(case_sections(case), path)
         integer = 0
         if isinstance(current, int):
             integer = 2 if path == ("blade", "airfoil", "elements") else 1

@@ -15,6 +15,7 @@ from . import executors, io
 from .parameters import Parameter, parse_vary
 from .plot import plot_doe
 from .sampling import METHODS, design_values, unit_sample
+from .worker import design_references
 
 def parse_forces(text) -> tuple[list[float], list[str]]:
     """``'1,2.5'`` (or a list of numbers) into forces and their column labels as written."""
@@ -42,7 +43,8 @@ def parse_forces(text) -> tuple[list[float], list[str]]:
 
 
 def make_spec(case: Case, params: Sequence[Parameter], forces: Sequence[float],
-              labels: Sequence[str], samples: int, method: str, seed: int) -> dict:
+              labels: Sequence[str], samples: int, method: str, seed: int,
+              outputs=None) -> dict:
     """The run description: everything a worker needs (plain data, picklable) plus what a
     resumed run must match; ``token`` identifies it."""
     spec = {
@@ -53,6 +55,7 @@ def make_spec(case: Case, params: Sequence[Parameter], forces: Sequence[float],
         "paths": [list(p.path) for p in params],
         "forces": list(forces), "labels": list(labels),
         "samples": int(samples), "method": method, "seed": int(seed),
+        "outputs": list(outputs) if outputs else None,
     }
     text = json.dumps(spec, sort_keys=True, default=str)
     spec["token"] = hashlib.sha256(text.encode()).hexdigest()[:16]
@@ -63,14 +66,17 @@ def run_doe(case, vary, samples: int, out, *, method: str = "sobol", forces=None
             seed: int = 0, workers: int | None = None, threads: bool = False,
             dask: str | None = None, chunk: int | None = None, resume: bool = False,
             overwrite: bool = False, progress: bool = True, plot: bool = False,
-            stream=None) -> dict:
+            stream=None, outputs=None, format: str = "csv") -> dict:
     """Runs a design of experiments and returns a summary dict.
 
     ``case``: a :class:`~udmap.case.Case`, a path or None (the embedded blade A); ``vary``:
     ``NAME=LO:HI[:log]`` strings or (name, lo, hi) tuples; ``forces``: '1,2' or numbers (the
     per-force columns); ``workers``: processes (default all cores; 1 runs in this process),
     ``threads=True`` for threads instead; ``dask``: 'local:K' or 'tcp://HOST:PORT';
-    ``chunk``: designs per task and per write; ``resume``: continue ``out``.
+    ``chunk``: designs per task and per write; ``resume``: continue ``out``; ``outputs``:
+    'F_adm,sigma_a' or a list of names of :data:`udmap.doe.io.OUTPUTS` (default all; the
+    kernel computes only what they need); ``format``: 'csv' (default, with a Parquet copy
+    when pyarrow is installed) or 'parquet' (Parquet alone).
     """
     if not isinstance(case, Case):
         case = load_case(case)
@@ -78,23 +84,37 @@ def run_doe(case, vary, samples: int, out, *, method: str = "sobol", forces=None
         raise InputError(f"--samples must be a positive integer, got {samples!r}")
     if method not in METHODS:
         raise InputError(f"--method must be one of {', '.join(METHODS)}, got {method!r}")
+    chosen = io.parse_outputs(outputs)
+    if plot and format == "parquet":
+        raise InputError("--plot reads the CSV: use it with --format csv")
+    if plot and chosen and not {"F_adm", "hcf_ok"} <= set(chosen):
+        raise InputError("--plot needs the outputs F_adm and hcf_ok (add them to --outputs)")
     params = parse_vary(case, vary)
     force_values, labels = parse_forces(forces) if forces not in (None, "", []) else ([], [])
     values = design_values(params, unit_sample(method, samples, len(params), seed))
-    spec = make_spec(case, params, force_values, labels, samples, method, seed)
+    spec = make_spec(case, params, force_values, labels, samples, method, seed, chosen)
     executor = executors.make_executor(workers=workers, threads=threads, dask=dask)
     if chunk is None:
         chunk = executors.default_chunk(samples, executor.workers)
     if chunk < 1:
         raise InputError(f"--chunk must be at least 1, got {chunk}")
-    output = io.Output(out, spec, values)
+    output = io.Output(out, spec, values, format=format)
     first = output.open(resume=resume, overwrite=overwrite)  # InputError before any work
     t0 = time.perf_counter()
     counts = dict(output.counts)
     bounds = executors.chunk_ranges(first, samples, output.held, chunk)
     todo = sum(e - s for s, e in bounds)
-    ranges = ((s, values[s:e]) for s, e in bounds)  # the values of a chunk when it is sent
+    refs = design_references(spec, values)  # designs sharing a tracing (PHYSICS.md 2.3)
+
+    def chunk_refs(s, e):
+        if refs is None or not (refs[s:e] >= 0).any():
+            return None
+        return [values[int(r)] if r >= 0 else None for r in refs[s:e]]
+
+    # the values of a chunk when it is sent
+    ranges = ((s, values[s:e], chunk_refs(s, e)) for s, e in bounds)
     computed = 0
+    traces = 0
     interrupted = False
     try:
         if todo > 0:
@@ -105,6 +125,7 @@ def run_doe(case, vary, samples: int, out, *, method: str = "sobol", forces=None
                     for start, n, text, chunk_counts in executor.run(spec, ranges):
                         output.put(start, n, text)
                         computed += n
+                        traces += chunk_counts.pop("traces", 0)
                         for k, v in chunk_counts.items():
                             counts[k] = counts.get(k, 0) + v
                         bar.update(n)
@@ -113,8 +134,9 @@ def run_doe(case, vary, samples: int, out, *, method: str = "sobol", forces=None
     finally:
         output.close()
     seconds = time.perf_counter() - t0
-    summary = {"out": str(output.path), "designs": samples, "written": output.written,
-               "computed": computed, "resumed_at": first,
+    summary = {"out": str(output.result_path), "designs": samples,
+               "written": output.written, "computed": computed, "resumed_at": first,
+               "traces": traces,
                "recovered": sum(n for _, n in output.held),
                "status": io.split_counts(counts)[0], "seconds": seconds,
                "designs_per_second": computed / seconds if seconds > 0 and computed else None,
@@ -122,6 +144,7 @@ def run_doe(case, vary, samples: int, out, *, method: str = "sobol", forces=None
                "startup_seconds": executor.startup_seconds, "interrupted": interrupted}
     if interrupted:
         return summary
+    output.record(traces=traces)
     summary["parquet"] = output.finish()
     summary.update(io.pass_shares(counts, samples, labels))
     if plot:

@@ -1,6 +1,7 @@
 """One design of experiments' worker: the context it keeps between designs (shared blade, model
-and damper) and the evaluation of a chunk of designs into CSV text. Plain data in and out, so
-that process pools and Dask workers import it by name."""
+and damper), the evaluation of a chunk of designs (one kernel call for a chunk of asymmetric
+dampers) and its CSV text. Plain data in and out, so that process pools and Dask workers import
+it by name."""
 from __future__ import annotations
 
 import os
@@ -11,11 +12,13 @@ from typing import Sequence
 import numpy as np
 
 from ..case import Case, build_blade, build_damper, build_model
-from ..damper import ASYMMETRIC_FIELDS, AsymmetricBuilder, Damper
+from ..damper import ASYMMETRIC_FIELDS, Damper
 from ..errors import InputError, PhysicsError, UdmapError
-from ..model import BackbonePoints
-from .io import format_rows
-from .parameters import with_values
+from ..model import (DESIGN_ADMISSIBLE, DESIGN_FAILED_ADMISSIBLE, DESIGN_FAILED_DAMPER,
+                     DESIGN_FAILED_LIMIT, DESIGN_FAILED_PEAKS, DESIGN_JUMPS, DESIGN_LIMIT,
+                     DESIGN_LIMIT_BACKBONE, DESIGN_PEAKS, DesignBatch)
+from .io import format_chunk, output_names
+from .parameters import STIFFNESS_SCALE_PATH, with_values
 
 #: Per-design status values of the ``status`` column.
 STATUS_OK, STATUS_INPUT, STATUS_PHYSICS, STATUS_NUMERIC, STATUS_ERROR = (
@@ -48,22 +51,56 @@ def _status_of(exc: BaseException) -> str:
     return STATUS_ERROR
 
 
+#: Output names of ``--outputs`` whose kernel stages (udmap_model_designs) they need; the
+#: damper's summary (gamma_b, M_max, M_min, lift_off) comes with every design.
+STAGES = {"F_lim": DESIGN_LIMIT, "F_lim_backbone": DESIGN_LIMIT_BACKBONE,
+          "gamma_P": DESIGN_PEAKS, "f_res": DESIGN_PEAKS, "sigma_a": DESIGN_PEAKS,
+          "hcf_ok": DESIGN_PEAKS, "jump": DESIGN_JUMPS, "F_adm": DESIGN_ADMISSIBLE}
+#: Parameters that a shared trace absorbs exactly (PHYSICS.md 2.3).
+SCALE_PATHS = (("damper", "CF"), (STIFFNESS_SCALE_PATH))
+_FLOATS = ("F_lim", "F_lim_backbone", "gamma_b", "M_max", "M_min", "F_adm")
+_KERNEL_STATUS = {2: STATUS_INPUT, 3: STATUS_PHYSICS}
+
+
+def stages_of(outputs) -> int:
+    """The kernel stages the chosen outputs need (all of them for the default outputs)."""
+    stages = 0
+    for name in outputs:
+        stages |= STAGES.get(name, 0)
+    return stages
+
+
+class ChunkRows:
+    """The results of a chunk of designs as columns (what :func:`udmap.doe.io.format_chunk`
+    writes): floats NaN where missing, flags -1 where missing, per-force columns (n, forces)."""
+
+    def __init__(self, n: int, nf: int):
+        self.n = n
+        self.num = {k: np.full(n, np.nan) for k in _FLOATS}
+        self.lift_off = np.full(n, -1, dtype=np.int8)
+        self.force = {k: np.full((n, nf), np.nan) for k in ("gamma_P", "f_res", "sigma_a")}
+        self.flags = {k: np.full((n, nf), -1, dtype=np.int8) for k in ("hcf_ok", "jump")}
+        self.status = [STATUS_OK] * n
+        self.message = [""] * n
+
+
 class DesignContext:
     """What one worker keeps between the designs of a run, so that a design costs the kernel's
     work and little else:
 
     - the blade, built once when no blade parameter varies (a model only reads it);
     - the model, when neither blade nor analysis parameters vary: one model for the run, which
-      keeps the bare-blade data and gets each design's damper by ``set_damper`` (its backbone
-      table is rebuilt from scratch for every damper);
-    - the damper, when ``CF`` is the only damper parameter that varies: traced once, rescaled
-      per design by ``set_CF`` (PHYSICS.md 2.3, exact);
-    - ctypes buffers for the backbone points, read through numpy (no dict per point).
+      keeps the bare-blade data; a chunk of asymmetric dampers then goes to the kernel in one
+      call (udmap_model_designs) as parameter blocks, with no Python per design;
+    - traced dampers: a design whose damper differs from its reference only in CF and a
+      common factor of the contact stiffnesses (``stiffness_scale``) takes the reference's
+      tracing rescaled exactly (PHYSICS.md 2.3); the run decides the references
+      (:func:`design_references`), so a row does not depend on the chunk or the worker.
 
-    A row depends only on the design's values: a shared model is first used once with a
-    fixed Jenkins damper, so that the one-off direct eigen-solve of its first backbone table
-    is behind it, and every design then goes through the same sequence of kernel calls on a
-    freshly rebuilt table, whichever worker and whichever design came before.
+    A shared model is first used once with a fixed Jenkins damper, so that the one-off direct
+    eigen-solve of its first backbone table is behind it, and every design then goes through
+    the same sequence of kernel calls on a freshly rebuilt table, whichever worker and
+    whichever design came before.
     """
 
     def __init__(self, spec: dict):
@@ -73,25 +110,30 @@ class DesignContext:
                          base_dir=Path(spec["base_dir"]))
         self.paths = [tuple(p) for p in spec["paths"]]
         self.forces = np.array(spec["forces"], dtype=float)
+        self.outputs = output_names(spec)
+        self.stages = stages_of(self.outputs)
         sections = {p[0] for p in self.paths}
         self.blade_varies = "blade" in sections
         self.analysis_varies = "analysis" in sections
         self.band_varies = any(p in (("analysis", "f_min"), ("analysis", "f_max"))
                                for p in self.paths)
         damper_paths = [p for p in self.paths if p[0] == "damper"]
+        self.damper_varies = bool(damper_paths)
+        # designs built one by one whose damper differs in CF alone: one tracing, set_CF
         self.cf_index = None
         if self.case.damper["kind"] == "asymmetric" and damper_paths == [("damper", "CF")]:
             self.cf_index = self.paths.index(("damper", "CF"))
-        self.damper_varies = bool(damper_paths)
-        # Only damper parameters vary: the nominal case serves every design, and an asymmetric
-        # damper is built straight from its C parameter block.
         self.damper_only = not (self.blade_varies or self.analysis_varies)
+        # an asymmetric damper on the shared model: whole chunks in one kernel call
         self._asym = None
-        if self.damper_only and self.damper_varies and self.cf_index is None and \
+        if self.damper_only and self.damper_varies and \
                 self.case.damper["kind"] == "asymmetric":
             self._asym = _AsymmetricBlocks(self.case.damper, self.paths)
+            # only CF and the stiffness factor vary: one tracing (the nominal) serves all
+            self.nominal_reference = all(p in SCALE_PATHS for p in damper_paths)
         self._cache: dict = {}
-        self._points = BackbonePoints(max(len(self.forces), 1))
+        self._batch = DesignBatch(self.forces)
+        self.traces = 0
 
     # -- shared objects, built on first use; a failure is remembered and raised per design
     def _shared(self, key, build):
@@ -111,21 +153,29 @@ class DesignContext:
             return build_blade(case)
         return self._shared("blade", lambda: build_blade(self.case))
 
+    def _built_damper(self, case: Case):
+        if case.damper["kind"] == "asymmetric":
+            self.traces += 1
+        return build_damper(case)
+
     def _damper(self, case: Case, values):
         if self.cf_index is not None:
-            damper = self._shared("damper", lambda: build_damper(self.case))
+            damper = self._shared("damper", lambda: self._built_damper(self.case))
             damper.set_CF(values[self.cf_index])
             return damper
         if not self.damper_varies:
-            return self._shared("damper", lambda: build_damper(self.case))
-        if self._asym is not None:
-            return self._asym.build(values)
-        return build_damper(case)
+            return self._shared("damper", lambda: self._built_damper(self.case))
+        return self._built_damper(case)
 
     def _model_for(self, case: Case, blade, damper):
         if self.blade_varies or self.analysis_varies:
             return build_model(case, blade, damper)
+        model = self._shared_model(blade)
+        model.set_damper(damper)
+        return model
 
+    def _shared_model(self, blade):
+        """The run's model (no blade or analysis parameter varies), primed."""
         def primed():
             model = build_model(self.case, blade, Damper.jenkins(1.0, 1e-3))
             try:  # the first backbone table of a model starts from a direct eigen-solve
@@ -134,89 +184,187 @@ class DesignContext:
                 pass
             return model
 
-        model = self._shared("model", primed)
-        model.set_damper(damper)
-        return model
+        return self._shared("model", primed)
 
-    def evaluate(self, values: Sequence) -> dict:
-        """One design: a dict with the fields of a row (see :func:`udmap.doe.io.row_cells`)."""
-        row: dict = {"status": STATUS_OK, "message": ""}
-        stage = ""
+    # -- a chunk
+    def evaluate_chunk(self, values: Sequence, refs=None) -> ChunkRows:
+        """The rows of a chunk of designs; ``refs`` per design the parameter values of its
+        reference (None: its own), see :func:`design_references`."""
+        rows = ChunkRows(len(values), len(self.forces))
+        if not len(values):
+            return rows
+        if self._asym is not None:
+            try:
+                model = self._shared_model(self._blade(self.case))
+            except UdmapError as exc:
+                for i in range(rows.n):
+                    self._fail(rows, i, exc, "")
+                return rows
+            blocks = self._asym.blocks(values)
+            if self.nominal_reference:
+                reference = np.repeat(self._asym.base[None, :], rows.n, axis=0)
+            elif refs is not None:
+                reference = blocks.copy()
+                for i, r in enumerate(refs):
+                    if r is not None:
+                        reference[i] = self._asym.blocks([r])[0]
+            else:
+                reference = None
+            r = self._batch.run(model, self.stages, blocks, reference)
+            self.traces += r["traces"]
+            self._take(rows, slice(0, rows.n), r, model.has_stress)
+        else:
+            for i, v in enumerate(values):
+                self._evaluate_one(rows, i, v)
+        return rows
+
+    def _evaluate_one(self, rows: ChunkRows, i: int, values) -> None:
+        """Design i of the chunk through Python objects (a blade or analysis parameter varies,
+        or a damper of another kind), its kernel stages in one udmap_model_designs call."""
         try:
-            case = self.case if self.damper_only and self._asym is not None else \
-                with_values(self.case, self.paths, values)
+            case = with_values(self.case, self.paths, values)
             a = case.analysis
             if self.band_varies and not a["f_max"] > a["f_min"]:
                 raise InputError(f"analysis.f_max ({a['f_max']}) must exceed analysis.f_min "
                                  f"({a['f_min']})")
             damper = self._damper(case, values)
             info = damper.info()
-            row["gamma_b"], row["M_max"], row["M_min"] = info.gamma_b, info.M_max, info.M_min
-            row["lift_off"] = bool(info.lift_off)
+            rows.num["gamma_b"][i], rows.num["M_max"][i], rows.num["M_min"][i] = \
+                info.gamma_b, info.M_max, info.M_min
+            rows.lift_off[i] = bool(info.lift_off)
             model = self._model_for(case, self._blade(case), damper)
-            row["F_lim"] = model.limit_force()
-            # PHYSICS.md 5: with lift-off the backbone may level off below F_lim; F_adm and the
-            # HCF check use the smaller limit
-            row["F_lim_backbone"] = model.limit_force_backbone()
-            F_lim = min(row["F_lim"], row["F_lim_backbone"])
-            notes = []
-            if len(self.forces):
-                p = self._points.backbone(model, self.forces)
-                unbounded = p["unbounded"] != 0
-                gamma_P, f_res = p["gamma_P"].tolist(), p["f_res"].tolist()
-                sigma_a = p["sigma_a"].tolist() if model.has_stress else [None] * len(p)
-                for i in np.flatnonzero(unbounded):
-                    gamma_P[i] = f_res[i] = sigma_a[i] = None
-                    notes.append(f"F_E = {self.spec['labels'][i]} N: unbounded (zeta = 0 and "
-                                 "F_E at or above F_lim or the backbone's asymptote)")
-                row["gamma_P"], row["f_res"], row["sigma_a"] = gamma_P, f_res, sigma_a
-                row["hcf_ok"] = (p["hcf_ok"] != 0).tolist()
-                row["jump"] = self._points.jumps(model, len(p))
-            stage = "F_adm: "
-            if model.has_stress:
-                row["F_adm"] = model.admissible_force(F_lim, a["sigma_all"], rtol=a["rtol"])
-                if row["F_adm"] == 0:
-                    notes.append(f"F_adm = 0: sigma_a exceeds sigma_all down to F_E = "
-                                 f"{ADM_TINY * admissible_grid(0.5 * F_lim)[0]:.3g} N")
-            else:  # an imported blade without stress rows: only F_E <= F_lim/2 can be checked
-                row["F_adm"] = 0.5 * F_lim
-                notes.append("no stress rows: F_adm = F_lim/2, sigma_a not checked")
-            row["message"] = "; ".join(notes)
         except Exception as exc:  # recorded per design; the run goes on
-            row["status"] = _status_of(exc)
-            text = str(exc) or type(exc).__name__
-            row["message"] = stage + (text if isinstance(exc, UdmapError) else
-                                      f"{type(exc).__name__}: {text}")
-        return row
+            self._fail(rows, i, exc, "")
+            return
+        r = self._batch.run(model, self.stages)
+        self._take(rows, slice(i, i + 1), r, model.has_stress)
+
+    def _take(self, rows: ChunkRows, at: slice, r: dict, has_stress: bool) -> None:
+        """Rows ``at`` from the kernel's arrays ``r``: what each design got before a failure,
+        its status and message."""
+        status, stage = r["status"], r["stage"]
+        ok = status == 0
+        reached = lambda s: ok | (stage > s)  # noqa: E731  (the stage after s was started)
+        has_damper = reached(DESIGN_FAILED_DAMPER)
+        for k in ("gamma_b", "M_max", "M_min"):
+            rows.num[k][at] = np.where(has_damper, r[k], rows.num[k][at])
+        rows.lift_off[at] = np.where(has_damper, r["lift_off"] != 0, rows.lift_off[at])
+        if self.stages & (DESIGN_LIMIT | DESIGN_LIMIT_BACKBONE | DESIGN_ADMISSIBLE):
+            has_limit = reached(DESIGN_FAILED_LIMIT)
+            for k in ("F_lim", "F_lim_backbone"):
+                rows.num[k][at] = np.where(has_limit, r[k], np.nan)
+        nf = len(self.forces)
+        peaks = bool(self.stages & (DESIGN_PEAKS | DESIGN_JUMPS)) and nf > 0
+        if peaks:
+            has_peaks = reached(DESIGN_FAILED_PEAKS)[:, None]
+            unbounded = r["unbounded"] != 0
+            for k in ("gamma_P", "f_res", "sigma_a"):
+                v = np.where(unbounded, np.nan, r[k])
+                if k == "sigma_a" and not has_stress:
+                    v = np.full_like(v, np.nan)
+                rows.force[k][at] = np.where(has_peaks, v, np.nan)
+            for k in ("hcf_ok", "jump"):
+                rows.flags[k][at] = np.where(has_peaks, r[k] != 0, -1)
+        adm = bool(self.stages & DESIGN_ADMISSIBLE)
+        if adm:
+            rows.num["F_adm"][at] = np.where(ok, r["F_adm"], np.nan)
+        offset = at.start
+        labels = self.spec["labels"]
+        # messages: the failures, and the notes of designs with an unbounded point, F_adm = 0
+        # or no stress rows (few designs: Python per such design only)
+        need = ~ok
+        if peaks:
+            need |= ok & unbounded.any(axis=1)
+        if adm:
+            need |= ok & ((r["F_adm"] == 0) | (not has_stress))
+        for j in np.flatnonzero(need):
+            i = offset + j
+            if not ok[j]:
+                rows.status[i] = _KERNEL_STATUS.get(int(status[j]), STATUS_NUMERIC)
+                prefix = "F_adm: " if stage[j] == DESIGN_FAILED_ADMISSIBLE else ""
+                rows.message[i] = prefix + (self._batch.message(j) or
+                                            f"udmap error {int(status[j])}")
+                continue
+            notes = []
+            if peaks:
+                for f in np.flatnonzero(unbounded[j]):
+                    notes.append(f"F_E = {labels[f]} N: unbounded (zeta = 0 and F_E at or above "
+                                 "F_lim or the backbone's asymptote)")
+            if adm and has_stress and r["F_adm"][j] == 0:
+                F_lim = min(float(r["F_lim"][j]), float(r["F_lim_backbone"][j]))
+                notes.append(f"F_adm = 0: sigma_a exceeds sigma_all down to F_E = "
+                             f"{ADM_TINY * admissible_grid(0.5 * F_lim)[0]:.3g} N")
+            elif adm and not has_stress:
+                notes.append("no stress rows: F_adm = F_lim/2, sigma_a not checked")
+            rows.message[i] = "; ".join(notes)
+
+    @staticmethod
+    def _fail(rows: ChunkRows, i: int, exc: BaseException, stage: str) -> None:
+        rows.status[i] = _status_of(exc)
+        text = str(exc) or type(exc).__name__
+        rows.message[i] = stage + (text if isinstance(exc, UdmapError) else
+                                   f"{type(exc).__name__}: {text}")
+
+
+def design_references(spec: dict, values) -> np.ndarray | None:
+    """Per design the index of its reference design, or -1 (its own damper is traced): designs
+    whose varied parameters agree but for CF and ``stiffness_scale`` form a group, and every
+    design of a group of several takes the tracing of its first design (in design order),
+    rescaled exactly (PHYSICS.md 2.3). Decided for the whole run, so that a row does not
+    depend on how the designs are cut into chunks. None when no design shares a tracing (or
+    the run has no asymmetric damper on a shared model, or only CF and the factor vary: then
+    the nominal damper's tracing serves every design)."""
+    paths = [tuple(p) for p in spec["paths"]]
+    sections = {p[0] for p in paths}
+    damper_paths = [p for p in paths if p[0] == "damper"]
+    if spec["damper"].get("kind") != "asymmetric" or sections != {"damper"} or \
+            not any(p in SCALE_PATHS for p in paths) or all(p in SCALE_PATHS for p in damper_paths):
+        return None
+    key_cols = [j for j, p in enumerate(paths) if p not in SCALE_PATHS]
+    x = values.x[:, key_cols]
+    _, first, inverse, counts = np.unique(x, axis=0, return_index=True, return_inverse=True,
+                                          return_counts=True)
+    inverse = inverse.ravel()
+    refs = np.where(counts[inverse] > 1, first[inverse], -1)
+    return refs if (refs >= 0).any() else None
 
 
 class _AsymmetricBlocks:
-    """Builds the asymmetric damper of a design from the nominal C parameter block with the
-    varied entries replaced (what :func:`udmap.case.build_damper` passes to the kernel, without
-    the case dictionaries in between); one error handle serves all its dampers."""
+    """The asymmetric damper parameter blocks of designs (what :func:`udmap.case.build_damper`
+    passes to the kernel, without the case dictionaries in between): the nominal block with the
+    varied entries replaced, ``stiffness_scale`` multiplying the four contact stiffnesses."""
 
     def __init__(self, damper: dict, paths):
         (f1x, f1y), (f2x, f2y) = damper["flat_points"]
         fields = {"flat1_x": f1x, "flat1_y": f1y, "flat2_x": f2x, "flat2_y": f2y,
                   "curved_x": damper["curved_point"][0], "curved_y": damper["curved_point"][1]}
         names = list(ASYMMETRIC_FIELDS)
-        self.base = [float(fields[n] if n in fields else damper[n]) for n in names]
+        self.base = np.array([float(fields[n] if n in fields else damper[n]) for n in names])
         self.slots = []
-        for path in paths:
+        self.scale = None
+        self.stiffness = [names.index(n) for n in ("kn_flat", "kt_flat", "kn_curved",
+                                                   "kt_curved")]
+        for j, path in enumerate(paths):
+            if path == STIFFNESS_SCALE_PATH:
+                self.scale = j
+                continue
             if path[1] == "flat_points":
                 name = f"flat{path[2] + 1}_{'xy'[path[3]]}"
             elif path[1] == "curved_point":
                 name = f"curved_{'xy'[path[2]]}"
             else:
                 name = path[1]
-            self.slots.append(names.index(name))
-        self.builder = AsymmetricBuilder()
+            self.slots.append((j, names.index(name)))
 
-    def build(self, values) -> Damper:
-        block = list(self.base)
-        for slot, value in zip(self.slots, values):
-            block[slot] = float(value)
-        return self.builder.build(block)
+    def blocks(self, values) -> np.ndarray:
+        """The (n, 16) blocks of the designs with these values."""
+        x = np.asarray(values, dtype=float).reshape(len(values), -1)
+        out = np.repeat(self.base[None, :], len(values), axis=0)
+        for j, slot in self.slots:
+            out[:, slot] = x[:, j]
+        if self.scale is not None:
+            out[:, self.stiffness] = out[:, self.stiffness] * x[:, self.scale][:, None]
+        return out
 
 
 _CONTEXTS: dict = {}
@@ -234,12 +382,15 @@ def context_for(spec: dict) -> DesignContext:
     return ctx
 
 
-def run_chunk(spec: dict, start: int, values: Sequence[tuple]) -> tuple:
-    """Evaluates designs ``start, start + 1, ...`` with the given parameter values and returns
-    ``(start, count, csv_text, counts)`` (counts: see :func:`udmap.doe.io.tally`): the chunk's
-    rows already formatted, so that the writer only appends text and the result is independent
-    of where it was computed."""
+def run_chunk(spec: dict, start: int, values: Sequence[tuple], refs=None) -> tuple:
+    """Evaluates designs ``start, start + 1, ...`` with the given parameter values (``refs``:
+    per design the values of its reference design or None, see :func:`design_references`) and
+    returns ``(start, count, csv_text, counts)`` (counts: see :func:`udmap.doe.io.tally`, plus
+    ``traces``, the dampers traced): the chunk's rows already formatted, so that the writer
+    only appends text and the result is independent of where it was computed."""
     ctx = context_for(spec)
-    rows = [ctx.evaluate(v) for v in values]
-    text, counts = format_rows(spec, start, values, rows)
-    return start, len(rows), text, counts
+    traces = ctx.traces
+    rows = ctx.evaluate_chunk(values, refs)
+    text, counts = format_chunk(spec, start, values, rows)
+    counts["traces"] = ctx.traces - traces
+    return start, rows.n, text, counts
