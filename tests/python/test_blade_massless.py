@@ -89,3 +89,31 @@ def test_indefinite_mass_refused_rounding_accepted(tmp_path):
     blade_from(tmp_path, K, M - 1e-14 * big * np.eye(N), sK, sM)
     with pytest.raises(UdmapError, match=r"M is not positive definite \(nor semi-definite"):
         blade_from(tmp_path, K, M - 1e-9 * big * np.eye(N), sK, sM)
+
+
+def test_massless_banded_blade_lowest_modes(tmp_path):
+    # 200 DOFs in band storage: the lowest modes by subspace iteration with K^-1 M and the
+    # series from solves with K (R_n = a^T K^-1 (M K^-1)^n b - kept modes), exact for a
+    # semi-definite M too; every fifth DOF massless (a diagonal M)
+    n = 200
+    rng = np.random.default_rng(1)
+    k = 1e6 * (1 + rng.random(n))
+    K = np.diag(k + np.r_[k[1:], 0]) - np.diag(k[1:], 1) - np.diag(k[1:], -1)
+    d = 0.1 * (1 + rng.random(n))
+    d[::5] = 0
+    M = np.diag(d)
+    _write_mtx_dense(tmp_path / "K.mtx", K)
+    _write_mtx_dense(tmp_path / "M.mtx", M)
+    b = Blade.matrices(str(tmp_path / "M.mtx"), str(tmp_path / "K.mtx"), 100, n, zeta=ZETA)
+    mu = la.eigh(M, K, eigvals_only=True)
+    finite = np.sort(1 / np.sqrt(mu[mu > 1e-12 * mu.max()])) / (2 * np.pi)
+    np.testing.assert_allclose(b.natural_frequencies(5), finite[:5], rtol=1e-12)
+    beta = 2 * ZETA / (2 * np.pi * finite[0])
+    for f in (0.5 * finite[0], finite[0], 1.5 * finite[1]):
+        w = 2 * np.pi * f
+        q = np.linalg.solve(K * (1 + 1j * w * beta) - w * w * M,
+                            np.eye(n)[:, [99, n - 1]].astype(complex))
+        r = b.receptances([f])
+        for got, want in ((r["gE"][0], q[99, 1]), (r["gg"][0], q[99, 0]),
+                          (r["EE"][0], q[n - 1, 1])):
+            assert abs(got - want) <= 1e-9 * abs(want), (f, want, got)
