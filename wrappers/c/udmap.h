@@ -537,11 +537,13 @@ int udmap_dti_wheel_peak(udmap_error error, udmap_blade blade, udmap_contact con
  * (n_modes >= 0, or n_modes < 0: all below 3 f_max) and n_residual blocks of residual vectors
  * (0-20; the Python default 3 brings the band to about 1e-8 and below). stress_rows: n_stress rows of n (row k at
  * stress_rows[k * n]), reduced as s_r = V^T T^T s. check_full != 0 adds the checks that cost
- * a sparse factorisation each: M positive definite (MUMPS finds no negative pivot) and the full
+ * a sparse factorisation each: M positive semi-definite (MUMPS finds no negative pivot of
+ * M + 1e-12 max|M| I: massless DOFs are fine) and the full
  * model with the rigid platform solved in [0, 3 f_max] (or up to the highest kept mode when
  * f_max <= 0) with its inertia count. The fixed-interface modes' inertia check is always made.
  * Errors name the argument (UDMAP_EINPUT), e.g. an empty platform set, a zero axis, a node not
- * in the model, entries above the diagonal, an M that is not positive definite; on error
+ * in the model, entries above the diagonal, an M that is not positive definite (nor
+ * semi-definite); on error
  * *reduction is NULL. Uses ARPACK, whose dsaupd keeps internal save state: do not run two
  * reductions at once in two threads of one process. */
 typedef struct _udmap_reduction *udmap_reduction;

@@ -22,21 +22,29 @@ module udmap_blade_modes
 
   character(len=*), parameter :: fmt_i = '(i0)'
   integer, parameter :: i8 = selected_int_kind(18)
+  !> Eigenvalues mu = 1/lambda of the inverted pencil at or below this fraction of the largest
+  !> are M's null space (massless directions, infinite lambda) when M is semi-definite.
+  real(wp), parameter :: massless_tol = 1.0e-12_wp
 
 contains
 
   !> All modes of the dense pencil (K, M): lambda = omega^2 ascending, phi mass-normalised.
   !> The lowest `npolish` are polished (see polish); the others keep the accuracy of the
   !> inverted pencil, absolute eps mu_1 in mu = 1/lambda.
-  subroutine all_modes(k, m, npolish, lambda, phi, error)
+  !> With `zinf` (M only positive semi-definite, checked by the caller): the eigenvalues
+  !> mu <= massless_tol mu_max of the inverted pencil are M's null space, infinite lambda; only
+  !> the finite modes are returned, and the null space's vectors, K-normalised, in zinf(n, :)
+  !> (their part of the receptances is static: z z^T, with no 1/mu).
+  subroutine all_modes(k, m, npolish, lambda, phi, error, zinf)
     real(wp), intent(in) :: k(:, :), m(:, :)
     integer, intent(in) :: npolish
     real(wp), allocatable, intent(out) :: lambda(:), phi(:, :)
     type(error_type), allocatable, intent(out) :: error
+    real(wp), allocatable, intent(inout), optional :: zinf(:, :)
     real(wp), allocatable :: a(:, :), b(:, :), mu(:), work(:), x(:, :)
     integer, allocatable :: iwork(:)
     real(wp) :: wq(1)
-    integer :: iq(1), n, info, lwork, liwork, r
+    integer :: iq(1), n, info, lwork, liwork, r, ninf
     character(len=24) :: buf
     n = size(k, 1)
     allocate(a, source=m)
@@ -53,16 +61,26 @@ contains
         & UDMAP_ENUMERIC)
       return
     end if
-    if (mu(1) <= 0.0_wp) then
+    ninf = 0
+    if (present(zinf)) then
+      ninf = count(mu <= massless_tol*mu(n))
+      if (allocated(zinf)) deallocate(zinf)
+      zinf = a(:, 1:ninf)
+      if (ninf == n) then
+        call fatal_error(error, "eigenvalues of the blade failed: M is zero", UDMAP_ENUMERIC)
+        return
+      end if
+    else if (mu(1) <= 0.0_wp) then
       call fatal_error(error, "eigenvalues of the blade failed: M is not positive definite", &
         & UDMAP_ENUMERIC)
       return
     end if
     ! z^T K z = 1 and z^T M z = mu: phi = z/sqrt(mu), lambda = 1/mu; largest mu first.
-    allocate(x(n, n), lambda(n))
+    n = n - ninf
+    allocate(x(size(k, 1), n), lambda(n))
     do r = 1, n
-      x(:, r) = a(:, n+1-r)/sqrt(mu(n+1-r))
-      lambda(r) = 1.0_wp/mu(n+1-r)
+      x(:, r) = a(:, ninf+n+1-r)/sqrt(mu(ninf+n+1-r))
+      lambda(r) = 1.0_wp/mu(ninf+n+1-r)
     end do
     deallocate(a)
     block

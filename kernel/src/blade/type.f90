@@ -65,6 +65,11 @@ module udmap_blade_type
   integer, parameter :: blade_kept_modes = 20
   !> Modes summed term by term in models with every mode computed (the rest enter the series).
   integer, parameter :: blade_fast_modes = 8
+  !> M may be positive semi-definite: no eigenvalue below -mass_tol max|M| (PHYSICS.md 1.3).
+  real(wp), parameter :: mass_tol = 1.0e-12_wp
+  !> omega_d [rad/s] when every finite mode is summed term by term and only massless directions
+  !> (infinite frequencies) are left: the series is then R_0 alone.
+  real(wp), parameter :: omega_massless = 1.0e140_wp
   !> Most terms of the series of the dropped modes: (1/4)^28/(3/4) < 1e-16.
   integer, parameter :: blade_residual_terms = 28
   !> Relative truncation tolerance of the series.
@@ -276,9 +281,10 @@ contains
     type(error_type), allocatable, intent(out) :: error
     integer, intent(in), optional :: kept_modes
     type(spd_factor_type) :: kf, mf
-    real(wp), allocatable :: lambda(:), phi(:, :), mrk(:), rk(:, :)
+    real(wp), allocatable :: lambda(:), phi(:, :), mrk(:), rk(:, :), zinf(:, :)
     real(wp) :: sk, sm, pg, pe
     integer :: n, nkeep, m
+    logical :: massless
 
     n = blade%ndof
     nkeep = blade_kept_modes
@@ -297,11 +303,26 @@ contains
     end if
 
     call spd_factor(blade%M, blade%Mb, blade%kd, "M", mf, error)
-    if (allocated(error)) return
+    massless = .false.
+    if (allocated(error)) then
+      ! M positive semi-definite (massless DOFs) is valid: no eigenvalue below -1e-12 max|M|
+      if (error%stat /= UDMAP_EINPUT) return
+      deallocate(error)
+      call check_semi_definite(blade, error)
+      if (allocated(error)) return
+      massless = .true.
+    end if
     call spd_factor(blade%K, blade%Kb, blade%kd, "K", kf, error)
     if (allocated(error)) return
 
-    if (nkeep == n) then
+    if (nkeep == n .and. massless) then
+      ! the finite modes, and M's null space (infinite frequencies) in zinf
+      call all_modes(blade%K, blade%M, blade_polish_modes, lambda, phi, error, zinf)
+      if (allocated(error)) return
+      nkeep = size(lambda)
+      blade%nfast = min(nkeep, blade_fast_modes)
+      if (present(kept_modes)) blade%nfast = nkeep
+    else if (nkeep == n) then
       call all_modes(blade%K, blade%M, blade_polish_modes, lambda, phi, error)
       if (allocated(error)) return
       blade%nfast = min(n, blade_fast_modes)
@@ -355,6 +376,11 @@ contains
       if (blade%nmodes == n) then
         blade%omega_d = blade%omega(blade%nfast+1)
         call modal_moments(blade)
+      else if (allocated(zinf)) then
+        ! all finite modes computed; the massless directions enter R_0 only
+        blade%omega_d = omega_massless
+        if (blade%nfast < blade%nmodes) blade%omega_d = blade%omega(blade%nfast+1)
+        call modal_moments(blade, zinf)
       else
         blade%omega_d = sqrt(lambda(nkeep+1))
         call residual_moments(blade, kf)
@@ -365,9 +391,12 @@ contains
 
   !> Scaled moments Rt_n = omega_d^(2n) R_n = sum_(r > nfast) c_r (w_d^2/w_r^2)^n / w_r^2 over the
   !> computed modes (models with every mode computed; all terms positive-weighted, no cancellation).
-  subroutine modal_moments(blade)
+  !> With `zinf` (M's null space, K-normalised: modes of infinite frequency), their limit
+  !> c_r/w_r^2 -> (a.z)(b.z) is added to Rt_0 (they add nothing to the higher moments).
+  subroutine modal_moments(blade, zinf)
     type(blade_type), intent(inout) :: blade
-    real(wp) :: q, wd2
+    real(wp), intent(in), optional :: zinf(:, :)
+    real(wp) :: q, wd2, zg, ze, sk, sm
     integer :: m, nn
     wd2 = blade%omega_d**2
     allocate(blade%res(8, blade%nres), source=0.0_wp)
@@ -377,7 +406,45 @@ contains
         blade%res(:, nn) = blade%res(:, nn) + blade%coef(:, m)*(q**(nn-1)/blade%w2(m))
       end do
     end do
+    if (.not.present(zinf)) return
+    do m = 1, size(zinf, 2)
+      zg = zinf(blade%gamma_dof, m)
+      ze = zinf(blade%exc_dof, m)
+      sk = 0.0_wp
+      sm = 0.0_wp
+      if (blade%has_stress) then
+        sk = dot_dd(blade%s_K, zinf(:, m))
+        sm = dot_dd(blade%s_M, zinf(:, m))
+      end if
+      blade%res(:, 1) = blade%res(:, 1) + [zg*ze, zg*zg, ze*ze, sk*ze, sm*ze, sk*zg, sm*zg, &
+        & 0.0_wp]
+    end do
   end subroutine modal_moments
+
+  !> M positive semi-definite: the Cholesky factorisation of M + tau I, tau = 1e-12 max|M|,
+  !> succeeds when no eigenvalue of M lies below -tau (rounding n eps max|M| far below tau).
+  subroutine check_semi_definite(blade, error)
+    type(blade_type), intent(in) :: blade
+    type(error_type), allocatable, intent(out) :: error
+    type(spd_factor_type) :: f
+    real(wp), allocatable :: a(:, :), ab(:, :)
+    real(wp) :: tau
+    integer :: i
+    if (allocated(blade%Mb)) then
+      ab = blade%Mb
+      tau = mass_tol*maxval(abs(ab))
+      ab(blade%kd+1, :) = ab(blade%kd+1, :) + tau
+    else
+      a = blade%M
+      tau = mass_tol*maxval(abs(a))
+      do i = 1, size(a, 1)
+        a(i, i) = a(i, i) + tau
+      end do
+    end if
+    call spd_factor(a, ab, blade%kd, "M + 1e-12 max|M| I", f, error)
+    if (allocated(error)) error%message = "M is not positive definite (nor semi-definite: "// &
+      & error%message//")"
+  end subroutine check_semi_definite
 
   !> Scaled moments Rt_n = omega_d^(2n) R_n of the dropped modes,
   !> R_n,ab = a^T K^-1 (M K^-1)^n b - sum_kept (a.phi)(b.phi)/w^(2(n+1)), computed without the

@@ -55,8 +55,10 @@ contains
     type(damper_type), target, intent(in) :: damper
     type(analysis_type), intent(in) :: analysis
     type(error_type), allocatable, intent(out) :: error
+    !> Relative distance of a frequency that repeats mode 1's (its eigenspace).
+    real(wp), parameter :: repeat_tol = 1e-6_wp
     real(wp) :: phi_g, phi_E
-    integer :: r
+    integer :: r, nrep
     character(len=32) :: buf
     associate(a => analysis)
       call require(a%f_min > 0 .and. a%f_min < huge(1.0_wp), &
@@ -90,8 +92,22 @@ contains
     model%bare%blade => blade
     model%omega_lo = 2*pi*analysis%f_min
     model%omega_hi = 2*pi*analysis%f_max
+    ! Mode 1 and the modes that repeat its frequency (a symmetric section's pair: its eigenspace,
+    ! in whichever basis the eigen-solver gave): the one vector of that eigenspace that moves
+    ! gamma_P, P P^T e_g normalised, with phi_g = sqrt(sum phi_g,r^2) and
+    ! phi_E = sum phi_E,r phi_g,r / phi_g; the rest of the eigenspace leaves gamma_P at rest.
+    nrep = 1
+    do r = 2, size(blade%omega)
+      if (blade%omega(r) > (1 + repeat_tol)*blade%omega(1)) exit
+      nrep = r
+    end do
     phi_g = blade%phi(blade%gamma_dof, 1)
     phi_E = blade%phi(blade%exc_dof, 1)
+    if (nrep > 1) then
+      phi_g = norm2(blade%phi(blade%gamma_dof, 1:nrep))
+      if (phi_g > 0) phi_E = dot_product(blade%phi(blade%exc_dof, 1:nrep), &
+        & blade%phi(blade%gamma_dof, 1:nrep))/phi_g
+    end if
     if (phi_g == 0) then
       call fatal_error(error, "model: the bare first mode does not rotate the platform "// &
         & "(phi_g = 0), the damper cannot act on it", UDMAP_EINPUT)
@@ -99,8 +115,9 @@ contains
     end if
     model%phi_ratio = abs(phi_E/phi_g)
     ! the backbone follows the resonance of mode 1: a second bare mode inside the band would
-    ! make "the maximum over the band" jump between resonances
-    do r = 2, size(blade%omega)
+    ! make "the maximum over the band" jump between resonances (a repeat of mode 1 is no second
+    ! resonance)
+    do r = nrep + 1, size(blade%omega)
       if (blade%omega(r) >= model%omega_lo .and. blade%omega(r) <= model%omega_hi) then
         write(buf, '(g0.6)') blade%omega(r)/(2*pi)
         call fatal_error(error, "analysis: the band [f_min, f_max] contains the bare mode "// &

@@ -112,7 +112,8 @@ def platform_centred_reduction(fe, *, platform_nodes, ref_point, axis, exc_node,
     point and the unit axis of gamma_P = theta . a, right-hand sense) and the excitation at
     node ``exc_node`` along ``exc_direction``. Fixed-interface modes: ``n_modes``, or all below
     3 ``f_max``. ``stress_rows``: rows over the full DOFs (sigma = s^T u). ``check_full`` (default)
-    adds the checks that cost a sparse factorisation each: M positive definite, and the full
+    adds the checks that cost a sparse factorisation each: M positive semi-definite (massless
+    DOFs are fine; no eigenvalue below -1e-12 max|M|), and the full
     model (with the rigid platform) solved in [0, 3 f_max] with its inertia count. Bad input
     raises InputError naming the argument; nothing is returned half-made."""
     t_start = time.perf_counter()
@@ -139,9 +140,9 @@ def platform_centred_reduction(fe, *, platform_nodes, ref_point, axis, exc_node,
         node_xyz = np.where(internal[:, None], 0.0, node_xyz)   # only platform nodes' are used
     kr, kc, kv = _lower(fe.K, "K", n)
     mr, mc, mv = _lower(fe.M, "M", n)
-    if np.any(mv[mr == mc] <= 0):
-        raise InputError("M: a diagonal entry is not positive (the mass matrix is not positive "
-                         "definite)")
+    if np.any(mv[mr == mc] < 0):
+        raise InputError("M: a diagonal entry is negative (the mass matrix is not positive "
+                         "definite, nor semi-definite)")
     platform = _ints(platform_nodes if platform_nodes is not None else [], "platform_nodes")
     if platform.size == 0:
         raise InputError("platform_nodes: the platform set is empty")

@@ -9,6 +9,7 @@
 !> MUMPS's inertia counts check that no fixed-interface mode below the cut-off, and no full-model
 !> mode in the check band, was missed.
 module udmap_blade_reduce_craig_bampton
+  use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_positive_inf
   use udmap_core_kinds, only: wp, pi
   use udmap_core_error, only: error_type, fatal_error, UDMAP_EINPUT, UDMAP_ENUMERIC, UDMAP_EPHYSICS
   use udmap_core_strings, only: itoa
@@ -21,7 +22,10 @@ module udmap_blade_reduce_craig_bampton
   use udmap_core_lapack, only: dsygv
   implicit none
   private
-  public :: reduction_type, platform_centred_reduction
+  public :: reduction_type, platform_centred_reduction, mass_tol
+
+  !> M is accepted positive semi-definite: no eigenvalue below -mass_tol max|M| (PHYSICS.md 1.3).
+  real(wp), parameter :: mass_tol = 1e-12_wp
 
   interface
     !> BLAS matrix product.
@@ -72,8 +76,8 @@ contains
   !> the rigid platform, clamp and excitation of new_platform_map. `stress` (n x n_stress)
   !> holds stress rows over the full DOFs. Fixed-interface modes: `n_modes` (>= 0) or, when
   !> n_modes < 0, all below 3 f_max. `n_residual` blocks of residual vectors. check_full adds
-  !> the checks that cost a factorisation each: M positive definite (no negative pivot of
-  !> T^T M T) and the full model's eigenfrequencies in [0, f_check] (with their inertia count).
+  !> the checks that cost a factorisation each: M positive semi-definite (no eigenvalue of
+  !> T^T M T below -mass_tol max|M|) and the full model's eigenfrequencies in [0, f_check] (with their inertia count).
   !> The inertia check of the fixed-interface modes is always made.
   subroutine platform_centred_reduction(n, k_row, k_col, k_val, m_row, m_col, m_val, dof_node, &
       & dof_comp, node_ids, node_xyz, platform_nodes, ref_point, axis, exc_node, exc_direction, &
@@ -132,18 +136,9 @@ contains
     call factor_analyse(fac, ni, [kii%row, mii%row], [kii%col, mii%col], error)
     if (allocated(error)) goto 90
     if (check_full .and. .not.m_checked) then
-      ! M must be positive definite: no negative (or zero) pivot of M_II.
-      call factor_numeric(fac, [0*kii%val, mii%val], "M (mass of the interior DOFs)", error)
-      if (allocated(error)) then
-        error%message = "M: the mass matrix is not positive definite ("//error%message//")"
-        error%stat = UDMAP_EINPUT
-        goto 90
-      end if
-      if (fac%negative_pivots /= 0) then
-        call fatal_error(error, "M: the mass matrix is not positive definite ("// &
-          & itoa(fac%negative_pivots)//" negative pivots)")
-        goto 90
-      end if
+      ! M must be positive semi-definite: no eigenvalue of M_II below -tol max|M|.
+      call check_mass(kii, mii, "M_II", error)
+      if (allocated(error)) goto 90
     end if
     if (n_modes < 0) then
       red%f_cut = 3*f_max
@@ -390,11 +385,29 @@ contains
     subroutine reduced_frequencies(error)
       type(error_type), allocatable, intent(out) :: error
       real(wp), allocatable :: a(:, :), b(:, :), ev(:), work(:)
-      integer :: info
+      integer :: info, j
       allocate(a, source=red%K)
       allocate(b, source=red%M)
       allocate(ev(r), work(max(1, 3*r)))
       call dsygv(1, 'N', 'U', r, a, r, b, r, ev, work, size(work), info)
+      if (info > r) then
+        ! M_r is singular (a massless direction of M): the inverted pencil M z = mu K z with
+        ! K_r positive definite; mu = 0 is an infinite eigenfrequency
+        a = red%M
+        b = red%K
+        call dsygv(1, 'N', 'U', r, a, r, b, r, ev, work, size(work), info)
+        if (info == 0) then
+          allocate(red%freqs_reduced(r))
+          do j = 1, r
+            if (ev(r+1-j) > mass_tol*ev(r)) then
+              red%freqs_reduced(j) = sqrt(1/ev(r+1-j))/(2*pi)
+            else
+              red%freqs_reduced(j) = ieee_value(1.0_wp, ieee_positive_inf)
+            end if
+          end do
+          return
+        end if
+      end if
       if (info /= 0) then
         call fatal_error(error, "reduced model: LAPACK dsygv failed (info = "//itoa(info)// &
           & "; reduced M not positive definite?)", UDMAP_ENUMERIC)
@@ -402,6 +415,41 @@ contains
       end if
       red%freqs_reduced = sqrt(max(ev, 0.0_wp))/(2*pi)
     end subroutine reduced_frequencies
+
+    !> M (on the pattern of `ka` + `ma`, analysed in fac) must be positive semi-definite:
+    !> Sylvester's inertia of M + tau I, tau = mass_tol max|M|, counts the eigenvalues of M below
+    !> -tau (a massless DOF, a zero eigenvalue, is fine: shift-invert never inverts M). The
+    !> diagonal of K's pattern carries tau (K_II positive definite has every diagonal entry).
+    subroutine check_mass(ka, ma, what, error)
+      type(coo_type), intent(in) :: ka, ma
+      character(len=*), intent(in) :: what
+      type(error_type), allocatable, intent(out) :: error
+      real(wp) :: tau
+      real(wp), allocatable :: diag(:)
+      integer(8) :: e
+      integer, allocatable :: cnt(:)
+      tau = mass_tol*maxval(abs(m_val))
+      ! tau once on each diagonal, over its duplicate entries (they add up)
+      allocate(cnt(ka%n), source=0)
+      allocate(diag(ka%nnz), source=0.0_wp)
+      do e = 1, ka%nnz
+        if (ka%row(e) == ka%col(e)) cnt(ka%row(e)) = cnt(ka%row(e)) + 1
+      end do
+      do e = 1, ka%nnz
+        if (ka%row(e) == ka%col(e)) diag(e) = tau/cnt(ka%row(e))
+      end do
+      call factor_numeric(fac, [diag, ma%val], what//" + tau I", error)
+      if (.not.allocated(error)) then
+        if (fac%negative_pivots == 0) return
+        call fatal_error(error, "M: the mass matrix is not positive definite (nor "// &
+          & "semi-definite: "//itoa(fac%negative_pivots)//" eigenvalues of "//what// &
+          & " below -1e-12 max|M|)")
+      else
+        error%message = "M: the mass matrix is not positive definite (nor "// &
+          & "semi-definite: "//error%message//")"
+        error%stat = UDMAP_EINPUT
+      end if
+    end subroutine check_mass
 
     subroutine full_check(error)
       type(error_type), allocatable, intent(out) :: error
@@ -413,17 +461,8 @@ contains
       call factor_analyse(fac, nt, [kt%row, mt%row], [kt%col, mt%col], error)
       if (allocated(error)) return
       ! M on every kept DOF (the interior check above misses the platform's and u_E's)
-      call factor_numeric(fac, [0*kt%val, mt%val], "M_t", error)
-      if (allocated(error)) then
-        error%message = "M: the mass matrix is not positive definite ("//error%message//")"
-        error%stat = UDMAP_EINPUT
-        return
-      end if
-      if (fac%negative_pivots /= 0) then
-        call fatal_error(error, "M: the mass matrix is not positive definite ("// &
-          & itoa(fac%negative_pivots)//" negative pivots of T^T M T)")
-        return
-      end if
+      call check_mass(kt, mt, "T^T M T", error)
+      if (allocated(error)) return
       call factor_numeric(fac, [kt%val, -sig_top*mt%val], "K_t - sigma M_t", error)
       if (allocated(error)) return
       cnt = fac%negative_pivots

@@ -1,6 +1,9 @@
-!> The lowest eigenpairs of K phi = lambda M phi (K, M symmetric, M positive definite) by
-!> ARPACK's symmetric Lanczos in shift-invert mode (dsaupd mode 3, OP = (K - sigma M)^-1 M),
-!> with the sparse factorisation of K - sigma M that the caller made and owns.
+!> The lowest eigenpairs of K phi = lambda M phi (K, M symmetric, M positive semi-definite,
+!> K - sigma M positive definite) by ARPACK's symmetric Lanczos in shift-invert mode (dsaupd
+!> mode 3, OP = (K - sigma M)^-1 M), with the sparse factorisation of K - sigma M that the
+!> caller made and owns. M is never inverted: a massless direction (M z = 0) is an infinite
+!> eigenvalue, outside the range of OP in which ARPACK starts (its dgetv0 applies OP to the
+!> start vector) and works, where the M inner product is a norm; dseupd purifies the vectors.
 !>
 !> ARPACK keeps internal `save` state between the reverse-communication calls of one solve
 !> (and a saved random seed, which is why the start vector is given here, info = 1). A solve

@@ -278,7 +278,8 @@ def reduction_inputs(fe, blade: dict) -> dict:
 
 
 def check_matrices(fe, blade: dict) -> None:
-    """K and M symmetric, M positive definite (smallest eigenvalue by Lanczos)."""
+    """K and M symmetric, M positive semi-definite: no eigenvalue below -MASS_TOL max|M|
+    (massless DOFs are valid input, PHYSICS.md 1.3)."""
     files = blade["files"]
     fmt = blade["format"]
     for name, A, fkey in (("stiffness", fe.K, _FILES_K[fmt]), ("mass", fe.M, _MASS_FILE[fmt])):
@@ -290,39 +291,45 @@ def check_matrices(fe, blade: dict) -> None:
                              f"({files[fkey]})")
     fkey = _MASS_FILE[fmt]
     d = fe.M.diagonal()
-    bad = not np.all(d > 0)
+    bad = not np.all(d >= 0)
     if not bad and fe.n <= INERTIA_MAX:
-        bad = not _positive_definite(fe.M)
+        bad = not semi_definite(fe.M)
     if bad:
         raise InputError(f"blade.files.{fkey}: the mass matrix is not positive definite "
-                         f"({files[fkey]})")
+                         f"(nor semi-definite: an eigenvalue below -{MASS_TOL:g} max|M|; "
+                         f"{files[fkey]})")
 
 
 #: Largest model whose mass matrix gets the exact inertia test (a sparse factorisation as costly
-#: as the reduction's own); above it, a positive diagonal and a positive definite reduced mass.
+#: as the reduction's own); above it, a non-negative diagonal, the kernel's inertia test of
+#: M + tau I and a positive semi-definite reduced mass.
 INERTIA_MAX = 200_000
+#: M may have eigenvalues down to -MASS_TOL max|M| (rounding of a semi-definite M).
+MASS_TOL = 1e-12
 
 
-def _positive_definite(M) -> bool:
-    """Sylvester's inertia from a symmetric-mode sparse LU (pivots on the diagonal, the same
-    permutation of rows and columns, so U's diagonal is D of P M P^T = L D L^T)."""
+def semi_definite(M) -> bool:
+    """No eigenvalue of M below -MASS_TOL max|M|: Sylvester's inertia of M + tau I,
+    tau = MASS_TOL max|M|, from a symmetric-mode sparse LU (pivots on the diagonal, the same
+    permutation of rows and columns, so U's diagonal is D of P A P^T = L D L^T)."""
     import scipy.sparse.linalg as sla
+    tau = MASS_TOL * abs(M).max()
+    A = sp.csc_matrix(M + tau * sp.identity(M.shape[0], format="csc"))
     try:
-        lu = sla.splu(sp.csc_matrix(M), permc_spec="MMD_AT_PLUS_A", diag_pivot_thresh=0.0,
+        lu = sla.splu(A, permc_spec="MMD_AT_PLUS_A", diag_pivot_thresh=0.0,
                       options={"SymmetricMode": True})
-    except RuntimeError:        # exactly singular
+    except RuntimeError:        # exactly singular: an eigenvalue at -tau
         return False
     piv = lu.U.diagonal()
     if not np.array_equal(lu.perm_r, lu.perm_c):
         # SuperLU left the diagonal: fall back to Lanczos on the unit-diagonal scaling.
-        d = M.diagonal()
-        Dm = sp.diags(1 / np.sqrt(d))
+        Dm = sp.diags(1 / np.sqrt(A.diagonal()))
         try:
-            lo = sla.eigsh(sp.csr_matrix(Dm @ M @ Dm), k=1, which="SA", tol=1e-3, ncv=40,
+            lo = sla.eigsh(sp.csr_matrix(Dm @ A @ Dm), k=1, which="SA", tol=1e-3, ncv=40,
                            maxiter=5000, return_eigenvectors=False)[0]
         except sla.ArpackNoConvergence as exc:
             lo = min(exc.eigenvalues) if len(exc.eigenvalues) else 1.0
-        return bool(lo > 1e-12)
+        return bool(lo > 0)
     return bool(np.all(piv > 0))
 
 
@@ -413,12 +420,11 @@ def reduce_fe(blade: dict, f_max: float, *, use_cache: bool = True):
     Mr = np.asarray(red.M)
     if not (np.all(np.isfinite(Mr)) and np.all(np.isfinite(np.asarray(red.K)))):
         raise UdmapError("the reduced matrices are not finite")
-    try:    # V^T M V is positive definite when M is (V of full rank): checked at any size
-        np.linalg.cholesky((Mr + Mr.T) / 2)
-    except np.linalg.LinAlgError:
+    # V^T M V is positive semi-definite when M is: checked at any size
+    if np.linalg.eigvalsh((Mr + Mr.T) / 2)[0] < -MASS_TOL * abs(Mr).max():
         fkey = _MASS_FILE[blade["format"]]
         raise InputError(f"blade.files.{fkey}: the mass matrix is not positive definite "
-                         f"(its reduction is not; {blade['files'][fkey]})") from None
+                         f"(nor semi-definite: its reduction is not; {blade['files'][fkey]})")
     meta = {"gamma_dof": int(red.gamma_dof), "exc_dof": int(red.exc_dof),
             "freqs_full": [float(x) for x in red.freqs_full],
             "freqs_reduced": [float(x) for x in red.freqs_reduced],
@@ -481,33 +487,43 @@ def _in_platform_frame(blade: dict, f_max: float, use_cache: bool):
     return _store(final.parent, final, framed, meta)
 
 
+#: Below this share of gamma_P's static flexibility the band's modes do not move the platform.
+GAMMA_SHARE_MIN = 1e-8
+
+
 def check_gamma_moves(directory: Path, meta: dict, f_min: float, f_max: float,
                       axis_file: str) -> None:
-    """The platform must make gamma_P move in the band's mode: fixing gamma_P must shift the
-    bare frequency of a mode in [f_min, f_max] (a rigid-body rotation about the axis that
-    the mode does not excite would leave the damper without work); at least one mode of the
-    band must feel it."""
+    """The platform must make gamma_P move in the band's modes (a rigid-body rotation about an
+    axis that they do not excite would leave the damper without work). Judged on the mode
+    shapes: the share of gamma_P's static flexibility (K^-1)_gg = sum_r phi_gr^2 / w_r^2 that
+    the modes in [f_min, f_max] carry, each with the whole eigenspace of its eigenvalue (a
+    repeated pair of a symmetric section, whichever basis of it the solver returns). The
+    inverted pencil M z = mu K z (z^T K z = 1, mu = 1/w^2, phi_gr^2 / w_r^2 = z_gr^2) also
+    takes a singular reduced M (massless directions: mu = 0)."""
     import scipy.linalg as la
     K = read_mm(directory / meta["files"]["K"], "reduced K").toarray()
     M = read_mm(directory / meta["files"]["M"], "reduced M").toarray()
     try:
-        w = la.eigh(K, M, eigvals_only=True)
+        mu, Z = la.eigh(M, K)
     except la.LinAlgError:
-        raise UdmapError("the reduced mass matrix is not positive definite") from None
-    f = np.sqrt(np.clip(w, 0, None)) / (2 * np.pi)
-    band = f[(f >= f_min) & (f <= f_max)]
+        raise UdmapError("the reduced stiffness matrix is not positive definite") from None
+    finite = mu > MASS_TOL * mu.max()
+    f = np.full(len(mu), np.inf)
+    f[finite] = 1 / (2 * np.pi * np.sqrt(mu[finite]))
+    band = np.nonzero(finite & (f >= f_min) & (f <= f_max))[0]
     if not len(band):
         return
-    g = meta["gamma_dof"] - 1
-    keep = np.delete(np.arange(len(K)), g)
-    w2 = la.eigh(K[np.ix_(keep, keep)], M[np.ix_(keep, keep)], eigvals_only=True)
-    f2 = np.sqrt(np.clip(w2, 0, None)) / (2 * np.pi)
-    shifts = [float(np.min(np.abs(f2 - fb)) / fb) for fb in band]
-    if max(shifts) < 1e-8:
+    space = np.zeros(len(mu), bool)
+    for r in band:          # the eigenspace of each band eigenvalue (repeated ones to 1e-6)
+        space |= finite & (abs(mu - mu[r]) <= 1e-6 * mu[r])
+    z2 = Z[meta["gamma_dof"] - 1] ** 2
+    share = float(z2[space].sum() / z2.sum())
+    if not share >= GAMMA_SHARE_MIN:
+        freqs = ", ".join(f"{x:.6g}" for x in np.sort(f[band]))
         raise InputError(f"blade.platform.axis: the platform rotation gamma_P about this axis "
-                         f"does not move in the band's mode(s) at "
-                         f"{', '.join(f'{x:.6g}' for x in band)} Hz (fixing it shifts them by "
-                         f"{max(shifts):.1e} at most): choose the platform and axis of the "
+                         f"does not move in the band's mode(s) at {freqs} Hz (their share of "
+                         f"gamma_P's static flexibility is {share:.1e}, "
+                         f"below {GAMMA_SHARE_MIN:g}): choose the platform and axis of the "
                          f"rocking that the damper resists ({axis_file})")
 
 

@@ -24,7 +24,8 @@ import scipy.sparse as sp
 
 from . import FEModel
 
-__all__ = ["GeneratedBlade", "generate_blade", "write_blade", "brick_matrices"]
+__all__ = ["GeneratedBlade", "generate_blade", "write_blade", "brick_matrices", "Hex20Mesh",
+           "hex20_mesh", "write_hex20_deck"]
 
 MM = 1e-3
 #: Part boxes [x0, x1], [y0, y1], [z0, z1] in mm.
@@ -310,3 +311,69 @@ def write_blade(blade: GeneratedBlade, directory, *, name: str = "generated_blad
         case["damper"] = damper
     (d / "case.json").write_text(json.dumps(case, indent=1) + "\n")
     return case
+
+
+#: CalculiX's edges of a 20-node brick: nodes 9-20 are the midpoints of these corner pairs.
+HEX20_EDGES = ((0, 1), (1, 2), (2, 3), (3, 0), (4, 5), (5, 6), (6, 7), (7, 4),
+               (0, 4), (1, 5), (2, 6), (3, 7))
+
+
+@dataclass
+class Hex20Mesh:
+    """The generated blade's mesh with quadratic bricks (CalculiX C3D20 / C3D20R): the corner
+    nodes keep their ids 1..m (so the excitation and gauge nodes are the blade's), the midside
+    nodes follow; the platform and root sets include their midside nodes."""
+
+    xyz: np.ndarray            # (m20, 3) every node, ids 1..m20
+    elements: np.ndarray       # (n_el, 20) node ids, CalculiX order
+    platform_nodes: np.ndarray
+    root_nodes: np.ndarray
+
+
+def hex20_mesh(blade: GeneratedBlade) -> Hex20Mesh:
+    """The 20-node bricks of the blade's mesh (one midside node per distinct edge)."""
+    el = blade.elements - 1
+    m = blade.all_xyz.shape[0]
+    pairs = np.stack([np.sort(el[:, list(e)], axis=1) for e in HEX20_EDGES], axis=1)
+    keys = pairs[..., 0].astype(np.int64) * m + pairs[..., 1]
+    uniq, inverse = np.unique(keys.ravel(), return_inverse=True)
+    a, b = np.divmod(uniq, m)
+    xyz = np.vstack([blade.all_xyz, 0.5 * (blade.all_xyz[a] + blade.all_xyz[b])])
+    elements = np.hstack([el, m + inverse.reshape(keys.shape)]) + 1
+    ids = np.arange(1, xyz.shape[0] + 1)
+    p = xyz / MM
+    tol = 1e-9
+    (px0, px1), (py0, py1), (pz0, pz1) = PARTS["platform"]
+    on_platform = ((p[:, 0] >= px0 - tol) & (p[:, 0] <= px1 + tol) & (p[:, 1] >= py0 - tol)
+                   & (p[:, 1] <= py1 + tol) & (p[:, 2] >= pz0 - tol) & (p[:, 2] <= pz1 + tol))
+    root = np.abs(p[:, 1] - PARTS["root"][1][0]) < tol
+    return Hex20Mesh(xyz=xyz, elements=elements, platform_nodes=ids[on_platform],
+                     root_nodes=ids[root])
+
+
+def write_hex20_deck(blade: GeneratedBlade, mesh: Hex20Mesh, path, *, element: str = "C3D20R",
+                     step: str = "*STEP\n*FREQUENCY, SOLVER=MATRIXSTORAGE\n*END STEP",
+                     extra_nodes=(), extra: str = "") -> None:
+    """A CalculiX deck of the quadratic mesh: *NODE (plus ``extra_nodes``, (id, xyz) pairs),
+    *ELEMENT of type ``element`` (C3D20 or C3D20R), node sets PLATFORM and ROOT, the
+    material, the root clamp, then ``extra`` and the ``step`` text."""
+    if element not in ("C3D20", "C3D20R"):
+        raise ValueError("element: C3D20 or C3D20R")
+    with open(path, "w") as f:
+        f.write(f"** udmap generated blade, {element}, SI units\n*NODE, NSET=NALL\n")
+        np.savetxt(f, np.column_stack([np.arange(1, mesh.xyz.shape[0] + 1), mesh.xyz]),
+                   fmt=["%d", "%.17g", "%.17g", "%.17g"], delimiter=", ")
+        for node, x in extra_nodes:
+            f.write(f"{int(node)}, {x[0]:.17g}, {x[1]:.17g}, {x[2]:.17g}\n")
+        f.write(f"*ELEMENT, TYPE={element}, ELSET=EALL\n")
+        for k, e in enumerate(mesh.elements, start=1):   # 21 numbers: two lines of a card
+            f.write(f"{k}, " + ", ".join(map(str, e[:15])) + ",\n"
+                    + ", ".join(map(str, e[15:])) + "\n")
+        f.write("*NSET, NSET=PLATFORM\n" + _idlines(mesh.platform_nodes))
+        f.write("*NSET, NSET=ROOT\n" + _idlines(mesh.root_nodes))
+        f.write("*MATERIAL, NAME=BLADE\n*ELASTIC\n"
+                f"{blade.E:.17g}, {blade.nu:.17g}\n*DENSITY\n{blade.rho:.17g}\n")
+        f.write("*SOLID SECTION, ELSET=EALL, MATERIAL=BLADE\n*BOUNDARY\nROOT, 1, 3\n")
+        if extra.strip():
+            f.write(extra.strip() + "\n")
+        f.write(step.strip() + "\n")
