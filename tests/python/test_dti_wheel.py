@@ -58,8 +58,7 @@ def test_cli_blade_spread(capsys):
 
 @pytest.mark.parametrize("extra, needle", [
     (["--blades", "1", "--engine-order", "0"], "--blades"),
-    (["--blades", "4"], "--engine-order"),
-    (["--engine-order", "1"], "--blades"),
+    (["--engine-order", "1"], "--engine-order needs --blades"),
     (["--blades", "4", "--engine-order", "-1"], "--engine-order"),
     (["--blades", "101", "--engine-order", "1"], "blades must be in 2..100"),
 ])

@@ -84,7 +84,7 @@ SUMMARY_UNITS = {key: unit for unit, keys in (
     ("N", ("F_lim", "F_E")), ("rad", ("gamma_b", "gamma_s", "gamma_P", "gamma_max")),
     ("Hz", ("f1_bare", "f_stuck", "f_res")), ("Pa", ("sigma_all", "sigma_a", "sigma_max")),
     ("m", ("u_E",)), ("N m", ("M_max", "M_min")), ("N m/rad", ("k_re", "k_im")),
-    ("deg", ("ibpa_deg",)))
+    ("deg", ("ibpa_deg",)), ("1", ("blades", "engine_order", "nodal_diameter")))
     for key in keys}
 
 

@@ -347,28 +347,16 @@ def cmd_dti(args) -> None:
 
 
 def _wheel_of(args, case):
-    """(N, EO) of the whole wheel from --blades/--engine-order or analysis.blades/engine_order,
-    or None for the single blade in phase."""
-    a = case.analysis
-    N = getattr(args, "blades", None)
-    EO = getattr(args, "engine_order", None)
-    N = a.get("blades") if N is None else N
-    EO = a.get("engine_order") if EO is None else EO
-    ibpa = getattr(args, "ibpa", None)
-    ibpa = a.get("ibpa_deg", 0.0) if ibpa is None else ibpa
-    if N is None and EO is None:
-        if ibpa and ibpa % 360.0:
+    """(N, EO) of the whole wheel from the case's wave (--blades/--engine-order applied to it by
+    udmap.case.traveling), or None for the single blade in phase; a phase given as ibpa_deg
+    alone has no wheel to integrate."""
+    wave = wave_of(case.analysis)
+    if wave.blades is None:
+        if not wave.in_phase:
             raise InputError("analysis.ibpa_deg: dti integrates the whole wheel; give its "
                              "blades and engine order (--blades N --engine-order EO)")
         return None
-    if N is None or EO is None:
-        raise InputError("--blades: the whole wheel needs both --blades N and --engine-order EO"
-                         " (analysis.blades, analysis.engine_order)")
-    if not (isinstance(N, int) and 2 <= N <= 10000):
-        raise InputError(f"--blades: must be an integer 2..10000, got {N}")
-    if not (isinstance(EO, int) and EO >= 0):
-        raise InputError(f"--engine-order: must be an integer >= 0, got {EO}")
-    return N, EO
+    return int(wave.blades), int(wave.engine_order)
 
 
 def cmd_reduce(args) -> None:

@@ -25,7 +25,7 @@ UNITS = {
     "seconds": "s", "phase_spread": "rad",
     # the traveling wave (PHYSICS.md 2.6): the phase in degrees, as its name says; the wheel's
     # counts as the dimensionless 1
-    "ibpa_deg": "deg", "engine_order": "1", "blades": "1",
+    "ibpa_deg": "deg", "engine_order": "1", "blades": "1", "nodal_diameter": "1",
 }
 
 #: Readable tables show stresses in MPa (JSON and CSV keep Pa).
