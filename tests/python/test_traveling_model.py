@@ -77,3 +77,14 @@ def test_hbm_at_a_phase_equals_the_backbone(tmp_path):
     layered, standard = run("backbone"), run("hbm")
     for key in ("gamma_P", "f_res", "sigma_a"):
         assert standard[key] == pytest.approx(layered[key], rel=1e-6), key
+
+
+def test_backbone_curve_at_a_phase_passes_through_the_peaks(wave):
+    """F_bb(gamma) at a phase is the traveling wave's: at a peak's gamma_P it gives that peak's
+    force and frequency (not the in-phase curve's)."""
+    _, _, model = wave
+    peaks = model.backbone([2.0, 8.0])
+    F_bb, f_res = model.backbone_curve([p["gamma_P"] for p in peaks])
+    for p, F, f in zip(peaks, F_bb, f_res):
+        assert F == pytest.approx(p["F_E"], rel=1e-8)
+        assert f == pytest.approx(p["f_res"], rel=1e-6)  # the peak frequency to ~1e-7

@@ -28,12 +28,12 @@ module udmap_mapping_model
     & check_model_damper, set_damper, limit_force_backbone, EIGEN_AUTO, &
     & EIGEN_DIRECT, EIGEN_MODAL, REGIME_STUCK, REGIME_PARTIAL_SLIP, REGIME_FULL_SLIP, &
     & REGIME_LIMIT, BRANCH_LOWER, BRANCH_UPPER, BRANCH_TURNING
-  use udmap_mapping_backbone, only: backbone_curve
   use udmap_mapping_harmonic_mapping, only: inphase_response => response, &
     & inphase_response_curves => response_curves, &
     & harmonics_near_modes, set_harmonics, check_harmonics
   use udmap_mapping_admissible, only: admissible_force
-  use udmap_mapping_traveling_dispatch, only: is_traveling, limit_force, backbone
+  use udmap_mapping_traveling_dispatch, only: is_traveling, limit_force, backbone, &
+    & backbone_curve
   use udmap_mapping_traveling_backbone, only: wave_response
   use udmap_mapping_traveling_curves, only: wave_curves
   implicit none

@@ -27,7 +27,8 @@ module udmap_mapping_traveling_backbone
     & wave_peak, wave_layer_solve
   implicit none
   private
-  public :: wave_backbone, wave_response, wave_limit_force, interblade_phase, new_model_traveling
+  public :: wave_backbone, wave_response, wave_limit_force, interblade_phase, new_model_traveling, &
+    & wave_backbone_curve
 
   !> Relative tolerance of the backbone roots in gamma (the layers are solved to ~1e-11).
   real(wp), parameter :: root_rtol = 1.0e-10_wp
@@ -380,4 +381,36 @@ contains
       misfit = log(abs(L%F)) - log(F)
     end function misfit
   end subroutine wave_response
+
+  !> F_bb(gamma) [N] and the frequency of each layer's peak [Hz] of the traveling wave, the
+  !> layers in the order given (each started from the previous one's peak).
+  subroutine wave_backbone_curve(model, gamma, F_bb, f_res, error)
+    type(model_type), intent(inout) :: model
+    real(wp), intent(in) :: gamma(:)
+    real(wp), intent(out) :: F_bb(:), f_res(:)
+    type(error_type), allocatable, intent(out) :: error
+    type(traveling_type) :: tw
+    type(wave_layer_type) :: L
+    real(wp) :: w
+    integer :: i
+    F_bb = 0
+    f_res = 0
+    if (size(F_bb) < size(gamma) .or. size(f_res) < size(gamma)) then
+      call fatal_error(error, "backbone_curve: the output arrays are too short", UDMAP_EINPUT)
+      return
+    end if
+    call new_model_traveling(model, tw, error)
+    if (allocated(error)) return
+    w = 0
+    do i = 1, size(gamma)
+      if (.not. (gamma(i) > 0 .and. gamma(i) < huge(1.0_wp))) then
+        call fatal_error(error, "backbone_curve: gamma must be positive numbers", UDMAP_EINPUT)
+        return
+      end if
+      call wave_peak(tw, gamma(i), w, L, F_bb(i), error)
+      if (allocated(error)) return
+      w = L%omega
+      f_res(i) = w/(2*pi)
+    end do
+  end subroutine wave_backbone_curve
 end module udmap_mapping_traveling_backbone

@@ -10,10 +10,12 @@ module udmap_mapping_traveling_dispatch
   use udmap_mapping_model_data, only: model_type, point_type, &
     & inphase_limit_force => limit_force
   use udmap_mapping_harmonic_mapping, only: inphase_backbone => backbone
-  use udmap_mapping_traveling_backbone, only: wave_backbone, wave_limit_force
+  use udmap_mapping_traveling_backbone, only: wave_backbone, wave_limit_force, &
+    & wave_backbone_curve
+  use udmap_mapping_backbone, only: inphase_backbone_curve => backbone_curve
   implicit none
   private
-  public :: is_traveling, limit_force, backbone
+  public :: is_traveling, limit_force, backbone, backbone_curve
 
 contains
 
@@ -51,4 +53,17 @@ contains
       call inphase_backbone(model, F_E, points, error)
     end if
   end subroutine backbone
+
+  !> F_bb(gamma) [N] and the peak frequencies [Hz] (PHYSICS.md 4; at phi /= 0, 2.6).
+  subroutine backbone_curve(model, gamma, F_bb, f_res, error)
+    type(model_type), intent(inout) :: model
+    real(wp), intent(in) :: gamma(:)
+    real(wp), intent(out) :: F_bb(:), f_res(:)
+    type(error_type), allocatable, intent(out) :: error
+    if (is_traveling(model)) then
+      call wave_backbone_curve(model, gamma, F_bb, f_res, error)
+    else
+      call inphase_backbone_curve(model, gamma, F_bb, f_res, error)
+    end if
+  end subroutine backbone_curve
 end module udmap_mapping_traveling_dispatch
