@@ -23,7 +23,7 @@ module udmap_api_c_designs
   use udmap_damper_type, only: damper_type, new_asymmetric_damper
   use udmap_mapping_model_data, only: check_forces
   use udmap_mapping_model, only: point_type, set_damper, limit_force, limit_force_backbone, &
-    & backbone, admissible_force
+    & backbone, admissible_force, is_traveling
   implicit none
   private
   public :: udmap_design_outputs
@@ -181,7 +181,8 @@ contains
           return
         end if
         if (associated(o_lim)) o_lim(i) = F_lim
-        F_lbb = limit_force_backbone(m%model)
+        ! at phi /= 0, F_lim(phi) is the supremum of the backbone itself (PHYSICS.md 2.6)
+        F_lbb = merge(F_lim, limit_force_backbone(m%model), is_traveling(m%model))
         if (associated(o_lbb)) o_lbb(i) = F_lbb
       end if
       if (iand(int(stages), S_PEAKS + S_JUMPS) /= 0 .and. nf > 0) then
