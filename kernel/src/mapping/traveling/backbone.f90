@@ -24,7 +24,7 @@ module udmap_mapping_traveling_backbone
   use udmap_mapping_harmonic_mapping, only: inphase_backbone => backbone
   use udmap_mapping_harmonic_layer, only: largest_excursion
   use udmap_mapping_traveling_layer, only: traveling_type, wave_layer_type, new_traveling, &
-    & wave_peak, wave_layer_solve
+    & wave_peak, wave_layer_solve, wave_layer_slope
   implicit none
   private
   public :: wave_backbone, wave_response, wave_limit_force, interblade_phase, new_model_traveling, &
@@ -184,10 +184,39 @@ contains
       lo = log(gamma0)
       glo = excess(lo, err)
       if (allocated(err)) return
+      ! Newton in (ln gamma, ln F_bb) with the layer's own slope (one trace more per step);
+      ! a step that does not reduce the misfit hands over to the bracketing below
+      x = lo
+      g = glo
+      do k = 1, 12
+        call wave_layer_slope(tw, L, slope, err)
+        if (allocated(err)) return
+        if (.not. (slope > 0.02_wp)) exit
+        step = -g/slope
+        step = sign(min(abs(step), log(4.0_wp)), step)
+        if (abs(step) <= root_rtol) then
+          call fill_point(tw, L, exp(x), F, F_lim, model%analysis%sigma_all, pt)
+          return
+        end if
+        lo = x
+        glo = g
+        x = x + step
+        g = excess(x, err)
+        if (allocated(err)) return
+        if (abs(g) >= abs(glo)) exit
+      end do
+      ! the bracket starts from the last two points of Newton (or the first alone)
+      if (g*glo <= 0 .and. x /= lo) then
+        hi = x
+        ghi = g
+      else
+        lo = x
+        glo = g
+        hi = lo
+        ghi = glo
+      end if
       ! secant steps in (ln gamma, ln F_bb) (slope 1 to start: F_bb grows like gamma in stick
       ! and towards the limit), capped at a factor 4, until the root is bracketed
-      hi = lo
-      ghi = glo
       slope = 1
       do k = 1, 80
         if (glo*ghi <= 0 .and. lo /= hi) exit

@@ -26,7 +26,8 @@ module udmap_mapping_traveling_layer
     & wave_static_action
   implicit none
   private
-  public :: traveling_type, wave_layer_type, new_traveling, wave_layer_solve, wave_peak
+  public :: traveling_type, wave_layer_type, new_traveling, wave_layer_solve, wave_peak, &
+    & wave_layer_slope
 
   !> Relative finite-difference step, Newton tolerance (to the layer's scale) and cap.
   real(wp), parameter :: fd_step = 1.0e-7_wp, newton_tol = 1.0e-13_wp
@@ -402,4 +403,48 @@ contains
       psi = L%psi
     end function psi
   end subroutine wave_peak
+
+  !> d ln|F| / d ln gamma of the layer L solved at (gamma, omega), the platform's harmonics
+  !> following gamma (dx/dgamma = -J^-1 dR/dgamma, the Jacobian of the solve): one more trace,
+  !> with Gamma_1 moved by a relative 1e-7. At a layer's peak this is d ln F_bb / d ln gamma
+  !> (psi = 0 there, so the peak's move in omega does not enter).
+  subroutine wave_layer_slope(tw, L, slope, error)
+    type(traveling_type), intent(inout) :: tw
+    type(wave_layer_type), intent(inout) :: L
+    real(wp), intent(out) :: slope
+    type(error_type), allocatable, intent(out) :: error
+    type(platform_receptances_type), allocatable :: r(:)
+    real(wp), allocatable :: x(:), R0(:), Rp(:), dx(:)
+    complex(wp), allocatable :: Pp(:, :), Ap(:, :)
+    real(wp) :: A0p(3), dg, g
+    complex(wp) :: F0, Fp, dF
+    integer :: n, h, info
+    slope = 1
+    if (.not. (L%solved .and. L%J_valid)) then
+      call fatal_error(error, "wave_layer_slope: the layer is not solved", UDMAP_ENUMERIC)
+      return
+    end if
+    g = L%gamma
+    n = platform_count(tw%u)
+    allocate(r(tw%H), x(n), R0(n), Rp(n), dx(n), Ap(3, tw%H))
+    do h = 1, tw%H
+      call platform_receptances(tw%blade, h*L%omega, r(h), error)
+      if (allocated(error)) return
+    end do
+    call platform_pack(tw%u, L%P0(3), L%P, x)
+    F0 = (g + sum(r(1)%pp(3, :)*L%A(:, 1)))/r(1)%pE(3)
+    call platform_balance(tw%u, r, tw%r0, L%P0(3), L%P, L%A0, L%A, tw%A_ref, F0, R0)
+    dg = 1e-7_wp*g
+    Pp = L%P
+    Pp(3, 1) = cmplx(g + dg, 0.0_wp, wp)
+    call wave_aft(tw%geo, tw%CF, tw%phi, L%P0, Pp, tw%settings, A0p, Ap, error)
+    tw%traces = tw%traces + 1
+    if (allocated(error)) return
+    Fp = (g + dg + sum(r(1)%pp(3, :)*Ap(:, 1)))/r(1)%pE(3)
+    call platform_balance(tw%u, r, tw%r0, L%P0(3), Pp, A0p, Ap, tw%A_ref, Fp, Rp)
+    dx = -(Rp - R0)/dg
+    call dgetrs('N', n, 1, L%LU, n, L%ipiv, dx, n, info)
+    dF = (Fp - F0)/dg + sum(L%Fx*dx)
+    slope = g*real(conjg(F0)*dF, wp)/abs(F0)**2
+  end subroutine wave_layer_slope
 end module udmap_mapping_traveling_layer
