@@ -15,7 +15,7 @@ module fixtures
   private
   public :: blade_a_beam_params, spring_chain, dense_gamma, layer_force, band_min_force, sign_of
   public :: one_dof_blade, blade_a_with_damper, blade_a_band, blade_a_model, refined_backbone_change
-  public :: ieee_nan, ieee_inf, temp_dir, qp, receptances_from_solution
+  public :: ieee_nan, ieee_inf, temp_dir, qp, receptances_from_solution, zgesv
 
   !> The real kind of the quadruple-precision references.
   integer, parameter :: qp = selected_real_kind(30)

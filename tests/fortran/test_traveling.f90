@@ -13,21 +13,12 @@ module test_traveling
   use udmap_mapping_model, only: model_type, analysis_type, point_type, new_model, &
     & limit_force, backbone, REGIME_STUCK
   use udmap_baseline_wave, only: wave_hbm_type, wave_hbm_point_type, new_wave_hbm, wave_hbm_peak
-  use fixtures, only: blade_a_beam_params, blade_a_band
+  use fixtures, only: blade_a_beam_params, blade_a_band, zgesv
   use testing, only: test_suite, check_close, check_true, check_no_error, check_error, &
     & unittest_type, new_unittest
   implicit none
   private
   public :: collect_traveling
-
-  interface
-    subroutine zgesv(n, nrhs, a, lda, ipiv, b, ldb, info)
-      import :: wp
-      integer, intent(in) :: n, nrhs, lda, ldb
-      complex(wp), intent(inout) :: a(lda, *), b(ldb, *)
-      integer, intent(out) :: ipiv(*), info
-    end subroutine zgesv
-  end interface
 
 contains
 
