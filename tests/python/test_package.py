@@ -84,6 +84,46 @@ def test_installed_package_gives_the_source_trees_results(site):
     assert _run(site, ["-m", "udmap", "--version"]).strip() == udmap.version()
 
 
+def test_repaired_wheel_is_self_contained_and_gives_the_same_results(site, tmp_path):
+    """packaging/wheels.py linux (make wheels) on a wheel of this layout: the libraries are
+    bundled with RPATH $ORIGIN, the tag is the one auditwheel confirms, and the unpacked wheel,
+    with no other library path, gives the source tree's results."""
+    raw = tmp_path / "raw"
+    shutil.copytree(site, raw)
+    info = raw / f"udmap-{udmap.version()}.dist-info"
+    info.mkdir()
+    (info / "METADATA").write_text(f"Metadata-Version: 2.1\nName: udmap\nVersion: {udmap.version()}\n")
+    (info / "WHEEL").write_text("Wheel-Version: 1.0\nGenerator: test\nRoot-Is-Purelib: false\n"
+                                "Tag: py3-none-linux_x86_64\n")
+    whl = tmp_path / f"udmap-{udmap.version()}-py3-none-linux_x86_64.whl"
+    shutil.make_archive(str(whl.with_suffix("")), "zip", raw)
+    whl.with_suffix(".zip").rename(whl)
+    subprocess.run([sys.executable, str(ROOT / "packaging" / "wheels.py"), "linux", str(whl),
+                    "--out", str(tmp_path / "dist")], check=True, capture_output=True, timeout=120)
+    (repaired,) = (tmp_path / "dist").glob("udmap-*-py3-none-manylinux_2_*_x86_64.whl")
+    shown = subprocess.run([sys.executable, "-m", "auditwheel", "show", str(repaired)],
+                           check=True, capture_output=True, text=True, timeout=120).stdout
+    tag = re.search(r"manylinux_2_\d+_x86_64", repaired.name).group(0)
+    assert f'platform tag: "{tag}"' in " ".join(shown.split())
+    out = tmp_path / "site"
+    shutil.unpack_archive(repaired, out, "zip")
+    lib = out / "udmap" / "libudmap.so"
+    ldd = subprocess.run(["ldd", str(lib)], check=True, capture_output=True, text=True).stdout
+    for line in ldd.splitlines():
+        name, _, path = line.strip().partition(" => ")
+        inside = path and Path(path.split()[0]).resolve().parent == out / "udmap.libs"
+        assert inside or re.match(r"(linux-vdso|libc|libm|libpthread|libdl)\.so|/lib64/ld-linux",
+                                  name), line
+    names = {p.name for p in (out / "udmap.libs").iterdir()}
+    assert any(n.startswith("libgfortran-") for n in names)
+    assert any(n.startswith("liblapack-") for n in names)
+    args = ["-m", "udmap", "backbone", str(ROOT / "cases" / "blade_a.json"), "--forces", FORCES,
+            "--json"]
+    tree = subprocess.run([sys.executable, *args], capture_output=True, text=True, timeout=90,
+                          check=True).stdout
+    assert json.loads(_run(out, args, {"LD_LIBRARY_PATH": ""})) == json.loads(tree)
+
+
 def test_source_tree_finds_the_builds_fmus():
     assert fmu_path(2) == BUILD / "udmap.fmu" and fmu_path() == fmu_path(2)
     assert fmu_path(3) == BUILD / "udmap-fmi3.fmu"

@@ -13,7 +13,7 @@ import ctypes
 import numpy as np
 
 from .errors import error_from_status
-from .locate import FMU_NAMES, fmu_path, library_candidates
+from .locate import FMU_NAMES, LIBRARY_NAME, fmu_path, library_candidates
 # The parameter structs are generated from kernel/parameters.toml (cmake/generate_parameters.py).
 from .parameters import Analysis, AsymmetricParams, BeamParams
 
@@ -35,9 +35,9 @@ def _load() -> ctypes.CDLL:
         if path.is_file():
             return ctypes.CDLL(str(path))
     try:
-        return ctypes.CDLL("libudmap.so")
+        return ctypes.CDLL(LIBRARY_NAME)
     except OSError:
-        tried.append("libudmap.so (system loader path)")
+        tried.append(f"{LIBRARY_NAME} (system loader path)")
     raise ImportError("udmap: kernel library not found; build it with 'make build' or set "
                       "UDMAP_LIBRARY. Tried: " + ", ".join(tried))
 

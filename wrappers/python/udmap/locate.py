@@ -1,8 +1,9 @@
 """Where the kernel library and the generic FMUs are found.
 
-The library is found through ``UDMAP_LIBRARY``, then inside this package (``pip install .``
-puts it there), then ``UDMAP_BUILD_DIR/kernel``, then the build tree of this checkout, then
-``UDMAP_PREFIX/lib``, then the system loader path. :func:`fmu_path` finds the generic FMUs the
+The library (``libudmap.so``, or ``udmap.dll`` from the Windows wheel) is found through
+``UDMAP_LIBRARY``, then inside this package (``pip install .`` and the wheels put it there),
+then ``UDMAP_BUILD_DIR/kernel``, then the build tree of this checkout, then ``UDMAP_PREFIX/lib``,
+then the system loader path. :func:`fmu_path` finds the generic FMUs the
 same way.
 """
 from __future__ import annotations
@@ -12,10 +13,14 @@ from pathlib import Path
 
 from .errors import InputError
 
-__all__ = ["PACKAGE_DIR", "FMU_NAMES", "build_dirs", "library_candidates", "fmu_path"]
+__all__ = ["PACKAGE_DIR", "LIBRARY_NAME", "FMU_NAMES", "build_dirs", "library_candidates",
+           "fmu_path"]
 
 #: The directory of this package (wrappers/python/udmap in a checkout).
 PACKAGE_DIR = Path(__file__).resolve().parent
+
+#: The kernel library's file name: the Windows wheel carries the MinGW-built udmap.dll.
+LIBRARY_NAME = "udmap.dll" if os.name == "nt" else "libudmap.so"
 
 FMU_NAMES = {2: "udmap.fmu", 3: "udmap-fmi3.fmu"}
 
@@ -31,17 +36,18 @@ def build_dirs():
 
 
 def library_candidates():
-    """The paths of libudmap.so to try, in order (the system loader path comes after them)."""
+    """The paths of the kernel library to try, in order (the system loader path comes after
+    them)."""
     env = os.environ.get("UDMAP_LIBRARY")
     if env:
         yield Path(env)
-    yield PACKAGE_DIR / "libudmap.so"
+    yield PACKAGE_DIR / LIBRARY_NAME
     for build in build_dirs():
-        yield build / "kernel" / "libudmap.so"
+        yield build / "kernel" / LIBRARY_NAME
     prefix = os.environ.get("UDMAP_PREFIX")
     if prefix:
-        for sub in ("lib", "lib64", "lib/x86_64-linux-gnu"):
-            yield Path(prefix) / sub / "libudmap.so"
+        for sub in ("bin", "lib") if os.name == "nt" else ("lib", "lib64", "lib/x86_64-linux-gnu"):
+            yield Path(prefix) / sub / LIBRARY_NAME
 
 
 def fmu_path(fmi_version: int = 2) -> Path:

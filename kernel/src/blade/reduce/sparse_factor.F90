@@ -76,7 +76,9 @@ contains
 #else
     f%n = n
     if (size(row) /= size(col)) continue
-    call fatal_error(error, "sparse factorisation: udmap was built without MUMPS", UDMAP_ENUMERIC)
+    call fatal_error(error, "the FE reduction is not in this build of udmap (built without MUMPS, "// &
+      & "as the Windows library is): reduce the blade with a Linux build and use its matrices", &
+      & UDMAP_ENUMERIC)
 #endif
   end subroutine factor_analyse
 
