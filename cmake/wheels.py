@@ -1,7 +1,7 @@
 """The portable wheels, made from the wheel that `pip wheel .` builds (make wheels).
 
-    python3 packaging/wheels.py linux   RAW_WHEEL --out DIST
-    python3 packaging/wheels.py windows RAW_WHEEL --dll udmap.dll --out DIST
+    python3 cmake/wheels.py linux   RAW_WHEEL --out DIST
+    python3 cmake/wheels.py windows RAW_WHEEL --dll udmap.dll --out DIST
 
 ``linux`` repairs the wheel as auditwheel does, for a library that ctypes loads by path rather
 than for a Python extension: every shared library that ``udmap/libudmap.so`` needs, other than
