@@ -177,6 +177,11 @@ int main(int argc, char **argv) {
   const int per_cycle = damper ? 2 : 10;
   int n = cycles * per_cycle;
   double *times = malloc(sizeof(double) * (size_t)n), out[NOUT], t = 0, total = 0;
+  /* steps over 1 ms, timed again afterwards: a slowness that comes back is the FMU's, one
+   * that does not is the machine's (preemption on shared cores) */
+  enum { NSLOW = 200 };
+  double slow_value[NSLOW];
+  int nslow = 0, slow_total = 0;
   /* the outputs of the last cycle (at harmonics != 1 the ones from the force table) */
   double table[10][NOUT], forces[10];
   /* warm-up: the first point (ExitInitializationMode built the blade, damper and model and
@@ -199,18 +204,39 @@ int main(int argc, char **argv) {
       fprintf(stderr, "step %d: status %d\n", i, st);
       return 1;
     }
+    if (!damper && times[i] > 1e-3) {
+      slow_total++;
+      if (nslow < NSLOW) slow_value[nslow++] = value;
+    }
     if (i >= n - per_cycle) {
       memcpy(table[k], out, sizeof out);
       forces[k] = damper ? 5.0 : value;
     }
   }
+  /* each slow force again, three times after a step elsewhere: the least of the three */
+  double retimed_max = 0.0;
+  const double elsewhere = random ? 0.5 * (range[0] + range[1]) : 5.5;
+  for (int j = 0; j < nslow; j++) {
+    double best = INFINITY;
+    for (int r = 0; r < 3; r++) {
+      if (step(&f, vr_F_E, elsewhere, t, out)) return 1;
+      t += 1e-3;
+      double t0 = now();
+      if (step(&f, vr_F_E, slow_value[j], t, out)) return 1;
+      double dt = now() - t0;
+      t += 1e-3;
+      if (dt < best) best = dt;
+    }
+    if (best > retimed_max) retimed_max = best;
+  }
   qsort(times, (size_t)n, sizeof(double), cmp);
   printf("{\"version\": %d, \"mode\": \"%s\", \"harmonics\": %d, \"steps\": %d, "
          "\"F_E_min\": %.17g, \"F_E_max\": %.17g, \"init_seconds\": %.9e, "
          "\"seconds_median\": %.9e, \"seconds_min\": %.9e, \"seconds_max\": %.9e, "
-         "\"seconds_p999\": %.9e, \"seconds_mean\": %.9e", version, argv[4], harmonics, n,
-         range[0], range[1], t_init, times[n / 2], times[0], times[n - 1],
-         times[(size_t)(0.999 * (n - 1))], total / n);
+         "\"seconds_p999\": %.9e, \"seconds_mean\": %.9e, \"steps_over_1ms\": %d, "
+         "\"seconds_max_retimed\": %.9e", version, argv[4], harmonics, n, range[0], range[1],
+         t_init, times[n / 2], times[0], times[n - 1], times[(size_t)(0.999 * (n - 1))],
+         total / n, slow_total, retimed_max);
   printf(", \"points\": [");
   for (int k = 0; k < per_cycle; k++)
     printf("%s{\"F_E\": %.17g, \"mu\": %.2f, \"gamma_P\": %.17g, \"sigma_a\": %.17g, "
