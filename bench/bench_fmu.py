@@ -14,6 +14,13 @@ doStep, get every output (the FMU computes on demand, so the work shows up in th
   (PHYSICS.md 4.1), which it builds on the way. Goal: median under 10 us; the mean includes
   the building (exact layer solves), the accuracy columns compare the last cycle with the
   command line's exact points at the same H.
+- fmu_step_F_E at harmonics = 1, 3, 9 and auto, F_E uniform in the force range declared by
+  F_E_min, F_E_max = 1, 10 N (settings random_H1, random_H3, random_H9, random_auto; 10^4
+  steps of a fixed pseudo-random sequence): ExitInitializationMode prepares the range
+  (init_seconds), after which no step builds anything. Goals: median under 10 us, every step
+  under 1 ms (goal_max_seconds); steps over 1 ms are timed again (seconds_max_retimed: the
+  slowest of them at its best of three, i.e. what the FMU needs, without the preemption of a
+  shared machine).
 
 The accuracy columns compare the FMU's outputs with the command line (`udmap backbone`) for the
 same case: both solve the same equations, so they measure what the FMU adds (nothing but
@@ -42,7 +49,8 @@ DRIVER = BUILD / "fmu" / "udmap-fmu-bench"
 CASE = ROOT / "cases" / "blade_a.json"
 
 
-def run_driver(version: int, mode: str, cycles: int, tmp: Path, harmonics: int = 1) -> dict:
+def run_driver(version: int, mode: str, cycles: int, tmp: Path, harmonics: int = 1,
+               force_range: tuple = (1.0, 10.0)) -> dict:
     fmu, platform, attr = FMUS[version]
     target = tmp / f"fmi{version}"
     with zipfile.ZipFile(fmu) as zf:
@@ -51,7 +59,7 @@ def run_driver(version: int, mode: str, cycles: int, tmp: Path, harmonics: int =
     token = re.search(r'\b%s="([^"]+)"' % attr, xml).group(1)
     so = target / "binaries" / platform / "udmap.so"
     r = subprocess.run([str(DRIVER), str(so), token, str(version), mode, str(cycles),
-                        str(harmonics)],
+                        str(harmonics), *(repr(float(F)) for F in force_range)],
                        capture_output=True, text=True, timeout=1800)
     if r.returncode != 0:
         raise SystemExit(f"bench_fmu: {DRIVER.name} FMI {version} {mode} failed: {r.stderr}")
@@ -109,6 +117,9 @@ def main(argv=None) -> int:
             name = "auto" if H == 0 else f"H{H}"
             runs_list += [("fmu_step_F_E", "F_E", args.cycles, 10e-6, H, f"gg10_{name}"),
                           ("fmu_step_F_E", "F_E_dense", args.cycles, 10e-6, H, f"dense_{name}")]
+        for H in (1, 3, 9, 0):
+            name = "auto" if H == 0 else f"H{H}"
+            runs_list += [("fmu_step_F_E", "F_E_random", 1000, 10e-6, H, f"random_{name}")]
         for method, mode, cycles, goal, H, settings in runs_list:
             runs = {v: run_driver(v, mode, cycles, tmp, H) for v in (2, 3)}
             r2, r3 = runs[2], runs[3]
@@ -122,12 +133,21 @@ def main(argv=None) -> int:
                          fmi3_seconds_max=r3["seconds_max"],
                          fmi2_fmi3_identical=r2["points"] == r3["points"],
                          harmonics="auto" if H == 0 else H,
+                         F_E_min=r2["F_E_min"], F_E_max=r2["F_E_max"],
+                         init_seconds=r2["init_seconds"],
+                         fmi3_init_seconds=r3["init_seconds"],
+                         seconds_p999=r2["seconds_p999"],
+                         steps_over_1ms=r2["steps_over_1ms"],
+                         seconds_max_retimed=r2["seconds_max_retimed"],
                          goal_seconds=goal,
+                         goal_max_seconds=1e-3 if mode == "F_E_random" else None,
                          step="set input + doStep + get all 11 outputs")
             records.append(rec)
             print(f"bench_fmu: {method} {settings}: median {r2['seconds_median'] * 1e6:.2f} us "
                   f"(FMI 2), {r3['seconds_median'] * 1e6:.2f} us (FMI 3), mean "
-                  f"{r2['seconds_mean'] * 1e6:.1f} us, goal {goal * 1e6:g} us; "
+                  f"{r2['seconds_mean'] * 1e6:.1f} us, max {r2['seconds_max'] * 1e3:.3f} ms "
+                  f"(retimed {r2['seconds_max_retimed'] * 1e3:.3f} ms), initialization "
+                  f"{r2['init_seconds'] * 1e3:.1f} ms, goal {goal * 1e6:g} us; "
                   f"max rel. error gamma_P {rec['error_gamma_P']:.1e}", flush=True)
     Path(args.json).parent.mkdir(parents=True, exist_ok=True)
     Path(args.json).write_text(json.dumps(records, indent=1, allow_nan=False) + "\n")

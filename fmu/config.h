@@ -34,7 +34,8 @@ typedef enum {
   GROUP_HARMONICS, /* harmonics: the response point only (the model keeps its caches) */
   GROUP_POINT,    /* outputs of the response point */
   GROUP_LIMIT,    /* outputs of the limit force and the damper information */
-  GROUP_RATIO     /* F_ratio: F_E over the limit force */
+  GROUP_RATIO,    /* F_ratio: F_E over the limit force */
+  GROUP_RANGE     /* F_E_min, F_E_max: the force range prepared in advance (the cover) */
 } Group;
 
 #define NOLIMIT __builtin_inf() /* bound marker: no min / max */

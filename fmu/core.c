@@ -74,6 +74,9 @@ Status core_enter_initialization_mode(ModelInstance *m, const char *fn) {
 
 Status core_exit_initialization_mode(ModelInstance *m, const char *fn) {
   if (!core_begin(m, fn, InitializationMode)) return Error;
+  /* the kernel objects and the force range [F_E_min, F_E_max], so that no later step with
+   * F_E in the range builds anything */
+  if (model_prepare(m, fn) != OK) return Error;
   m->state = m->type == ModelExchange ? EventMode : StepMode;
   return OK;
 }

@@ -158,6 +158,7 @@ void model_reset(ModelInstance *m) {
     m->value[i] = udmap_variables[i].causality == OUTPUT ? 0.0 : model_start_value(m, i);
   m->done = 0;
   m->damper_CF = NAN;
+  m->outside_logged = false;
   m->state = Instantiated;
   m->stopTimeDefined = false;
   m->stopTime = 0.0;

@@ -51,6 +51,7 @@ typedef enum {
   STAGE_LIMIT,  /* udmap_model_limit_force, udmap_damper_get_info */
   STAGE_POINT,  /* udmap_model_backbone or udmap_model_response for F_E */
   STAGE_F1,     /* bare first natural frequency (f_res of an unbounded response) */
+  STAGE_COVER,  /* udmap_model_cover_forces over [F_E_min, F_E_max] at the current harmonics */
   NSTAGES
 } Stage;
 
@@ -104,6 +105,13 @@ struct ModelInstance {
   int jump; /* the point sits at a jump of k(gamma) */
   double f1_bare;
 
+  /* the force range prepared by the last cover (STAGE_COVER) [N], what it cost, and whether a
+   * force outside it was logged (once per range) */
+  double cover_lo, cover_hi;
+  double cover_seconds;
+  int cover_points, cover_leaves, cover_exact;
+  bool outside_logged;
+
   /* counters, for tests and diagnostics (not part of the FMU state) */
   unsigned long stage_runs[NSTAGES];
 
@@ -145,6 +153,12 @@ Status model_set(ModelInstance *m, const char *fn, ValueReference vr, VariableTy
  * whose failure was already logged during this call (start with 0). */
 Status model_get(ModelInstance *m, const char *fn, ValueReference vr, VariableType type,
                  double *value, unsigned *logged);
+
+/* The end of the initialization (ExitInitializationMode): builds the blade, damper and model
+ * and prepares the force range [F_E_min, F_E_max] (stages.c), logging its time in one line.
+ * Error (logged, naming the variables) for a range with F_E_min >= F_E_max; any other
+ * failure is left to the gets, as before the range existed. */
+Status model_prepare(ModelInstance *m, const char *fn);
 
 /* Advances time over a communication step (the outputs are quasi-steady). */
 Status model_do_step(ModelInstance *m, const char *fn, double t, double h);

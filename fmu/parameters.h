@@ -129,7 +129,14 @@
     "the traveling wave (PHYSICS.md 2.6)") \
   X(engine_order, INTEGER, PARAMETER, ANALYSIS, "", 0.0, 0.0, 1e6, 0, \
     "Engine order EO (taken modulo blades); 0 is the in-phase family. The asymmetric damper " \
-    "feels the phase; jenkins and table dampers do not")
+    "feels the phase; jenkins and table dampers do not") \
+  X(F_E_min, REAL, PARAMETER, RANGE, "N", 1.0, 0.0, NOLIMIT, 0, \
+    "Lowest F_E the master will use (with F_E_max; F_E_min < F_E_max): the initialization " \
+    "prepares the force range so that no later step in it builds anything (0: from " \
+    "F_E_max/1000)") \
+  X(F_E_max, REAL, PARAMETER, RANGE, "N", 10.0, 0.0, NOLIMIT, 0, \
+    "Highest F_E the master will use; a force outside [F_E_min, F_E_max] is still answered " \
+    "exactly, possibly in a longer step")
 
 /* Items of resources/udmap-case.txt (fmu/case.h) that are case-file fields:
  * X(key, member of CaseConfig, conversion of the number read). */

@@ -5,6 +5,9 @@
  * the value of each output. The values, the state machine, logging and snapshots are in
  * model.c.
  */
+#ifndef _WIN32
+#define _POSIX_C_SOURCE 200809L /* clock_gettime */
+#endif
 #include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
@@ -13,28 +16,38 @@
 
 #include "model.h"
 
+#ifdef _WIN32
+#include <windows.h>
+#else
+#include <time.h>
+#endif
+
 #define BIT(stage) (1u << (stage))
 #define V(name) (m->value[vr_##name])
 
 static const char *const stage_names[NSTAGES] = {"blade", "damper", "CF rescale", "model",
                                                  "limit force", "response point",
-                                                 "natural frequency"};
+                                                 "natural frequency", "force range"};
 
 /* Stages a change of a group's value makes stale. Neither CF nor the damper parameters
  * rebuild the model: it notices udmap_damper_set_CF by itself, and a new damper is coupled to
- * it with udmap_model_set_damper (the bare-blade data are kept). */
+ * it with udmap_model_set_damper (the bare-blade data are kept). Everything the kernel's
+ * tables depend on (damper, CF, model, harmonics) and the range itself make the force range
+ * stale: the next point prepares it again, in the step that made the change. */
 static const unsigned invalidates[] = {
   [GROUP_NONE] = 0,
   [GROUP_FORCE] = BIT(STAGE_POINT),
-  [GROUP_CF] = BIT(STAGE_CF) | BIT(STAGE_LIMIT) | BIT(STAGE_POINT),
-  [GROUP_DAMPER] = BIT(STAGE_DAMPER) | BIT(STAGE_CF) | BIT(STAGE_LIMIT) | BIT(STAGE_POINT),
+  [GROUP_CF] = BIT(STAGE_CF) | BIT(STAGE_LIMIT) | BIT(STAGE_POINT) | BIT(STAGE_COVER),
+  [GROUP_DAMPER] = BIT(STAGE_DAMPER) | BIT(STAGE_CF) | BIT(STAGE_LIMIT) | BIT(STAGE_POINT) |
+                   BIT(STAGE_COVER),
   [GROUP_BLADE] = BIT(STAGE_BLADE) | BIT(STAGE_MODEL) | BIT(STAGE_LIMIT) | BIT(STAGE_POINT) |
-                  BIT(STAGE_F1),
-  [GROUP_ANALYSIS] = BIT(STAGE_MODEL) | BIT(STAGE_LIMIT) | BIT(STAGE_POINT),
-  [GROUP_HARMONICS] = BIT(STAGE_POINT),
+                  BIT(STAGE_F1) | BIT(STAGE_COVER),
+  [GROUP_ANALYSIS] = BIT(STAGE_MODEL) | BIT(STAGE_LIMIT) | BIT(STAGE_POINT) | BIT(STAGE_COVER),
+  [GROUP_HARMONICS] = BIT(STAGE_POINT) | BIT(STAGE_COVER),
   [GROUP_POINT] = 0,
   [GROUP_LIMIT] = 0,
   [GROUP_RATIO] = 0,
+  [GROUP_RANGE] = BIT(STAGE_POINT) | BIT(STAGE_COVER),
 };
 
 void model_invalidate(ModelInstance *m, Group group) { m->done &= ~invalidates[group]; }
@@ -134,7 +147,7 @@ static double reference_CF(const ModelInstance *m) { return model_start_value(m,
 /* Releases the model and marks it (and what it computed) to be built again. */
 static void drop_model(ModelInstance *m) {
   udmap_delete_model(&m->model);
-  m->done &= ~(BIT(STAGE_MODEL) | BIT(STAGE_LIMIT) | BIT(STAGE_POINT));
+  m->done &= ~(BIT(STAGE_MODEL) | BIT(STAGE_LIMIT) | BIT(STAGE_POINT) | BIT(STAGE_COVER));
 }
 
 /* The damper of a case that is not asymmetric: a Jenkins element or a measured table. */
@@ -276,10 +289,92 @@ static Status compute_f1(ModelInstance *m) {
   return OK;
 }
 
-static Status compute_point(ModelInstance *m) {
-  /* CF (and so the damper) first: a new damper may drop the model */
+static double seconds(void) {
+#ifdef _WIN32
+  LARGE_INTEGER f, c;
+  QueryPerformanceFrequency(&f);
+  QueryPerformanceCounter(&c);
+  return (double)c.QuadPart / (double)f.QuadPart;
+#else
+  struct timespec ts;
+  clock_gettime(CLOCK_MONOTONIC, &ts);
+  return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+#endif
+}
+
+/* The harmonics of the point (and of the cover), with the case's tolerance of the auto H. */
+static int set_harmonics(ModelInstance *m) {
+  const double tol = m->config ? m->config->analysis.harmonic_tol : 1e-3;
+  return udmap_model_set_harmonics(m->err, m->model, (int)V(harmonics), tol);
+}
+
+static const char *harmonics_text(const ModelInstance *m, char *buf, size_t n) {
+  if (V(harmonics) == 0.0) snprintf(buf, n, "auto");
+  else snprintf(buf, n, "%d", (int)V(harmonics));
+  return buf;
+}
+
+/* The force range [F_E_min, F_E_max] prepared in the kernel (udmap_model_cover_forces): the
+ * single-harmonic backbone table to F_E_max and, at harmonics != 1, every panel of the force
+ * table over the range, so that no later step with F_E in the range builds anything. F_E_min
+ * = 0 covers from F_E_max/1000. Not on the finite-difference instance (no force table). */
+static Status compute_cover(ModelInstance *m) {
   static const Stage deps[] = {STAGE_CF, STAGE_MODEL};
-  Status st = need(m, STAGE_POINT, deps, 2);
+  Status st = need(m, STAGE_COVER, deps, 2);
+  if (st >= Discard) return st;
+  if (!m->model) return failure(m, STAGE_COVER, "internal: no model");
+  const double lo = V(F_E_min), hi = V(F_E_max);
+  if (!(lo < hi))
+    return failure(m, STAGE_COVER, "F_E_min = %g N must be below F_E_max = %g N", lo, hi);
+  if (m->exact_points) return OK;
+  m->cover_lo = lo > 0.0 ? lo : 1e-3 * hi;
+  m->cover_hi = hi;
+  m->outside_logged = false;
+  const double t0 = seconds();
+  int stat = set_harmonics(m);
+  if (stat != UDMAP_OK) return kernel_failure(m, STAGE_COVER, stat, "udmap_model_set_harmonics");
+  stat = udmap_model_cover_forces(m->err, m->model, m->cover_lo, m->cover_hi);
+  if (stat != UDMAP_OK) return kernel_failure(m, STAGE_COVER, stat, "udmap_model_cover_forces");
+  stat = udmap_model_force_table_info(m->err, m->model, &m->cover_points, &m->cover_leaves,
+                                      &m->cover_exact);
+  if (stat != UDMAP_OK)
+    return kernel_failure(m, STAGE_COVER, stat, "udmap_model_force_table_info");
+  m->cover_seconds = seconds() - t0;
+  if (m->state != InitializationMode) {
+    char h[16];
+    model_log_category(m, LOG_EVENTS, OK, "force range [%g, %g] N prepared again at harmonics "
+                       "%s in %.1f ms (%d exact points, %d leaves, %d of them exact)",
+                       m->cover_lo, m->cover_hi, harmonics_text(m, h, sizeof h),
+                       1e3 * m->cover_seconds, m->cover_points, m->cover_leaves,
+                       m->cover_exact);
+  }
+  return OK;
+}
+
+Status model_prepare(ModelInstance *m, const char *fn) {
+  if (!(V(F_E_min) < V(F_E_max))) {
+    model_log(m, Error, "%s: F_E_min = %g N must be below F_E_max = %g N", fn, V(F_E_min),
+              V(F_E_max));
+    return Error;
+  }
+  const double t0 = seconds();
+  Status st = run(m, STAGE_COVER);
+  const double t = seconds() - t0;
+  if (st >= Discard) return OK; /* the gets report it, as without a range */
+  char h[16];
+  model_log_category(m, LOG_EVENTS, OK, "%s: initialization took %.1f ms (blade, damper, model "
+                     "and force range [%g, %g] N at harmonics %s in %.1f ms: %d exact points, "
+                     "%d leaves, %d of them exact)", fn, 1e3 * t, m->cover_lo, m->cover_hi,
+                     harmonics_text(m, h, sizeof h), 1e3 * m->cover_seconds, m->cover_points,
+                     m->cover_leaves, m->cover_exact);
+  return OK;
+}
+
+static Status compute_point(ModelInstance *m) {
+  /* CF (and so the damper) first: a new damper may drop the model; the force range before
+   * the point, so that it is prepared in the step that made it stale */
+  static const Stage deps[] = {STAGE_CF, STAGE_MODEL, STAGE_COVER};
+  Status st = need(m, STAGE_POINT, deps, 3);
   if (st >= Discard) return st;
   if (!m->model) return failure(m, STAGE_POINT, "internal: no model");
   const double f_exc = V(f_exc);
@@ -301,11 +396,28 @@ static Status compute_point(ModelInstance *m) {
   m->jump = 0;
   /* harmonics only changes the point: the model keeps its caches (bare blade, the
    * single-harmonic table, the contact element of the layers) */
-  const double tol = m->config ? m->config->analysis.harmonic_tol : 1e-3;
-  int stat = udmap_model_set_harmonics(m->err, m->model, (int)V(harmonics), tol);
+  int stat = set_harmonics(m);
   if (stat != UDMAP_OK) return kernel_failure(m, STAGE_POINT, stat, "udmap_model_set_harmonics");
   if (f_exc == 0.0) {
+    /* a force outside the prepared range is answered as before (exact, the force table
+     * built on demand), and said once per range */
+    if (!m->exact_points && !m->outside_logged && !(F_E >= m->cover_lo && F_E <= m->cover_hi)) {
+      m->outside_logged = true;
+      model_log_category(m, LOG_EVENTS, OK, "F_E = %g N is outside the prepared force range "
+                         "[%g, %g] N: answered exactly, the force table built on demand (a "
+                         "longer step; said once until the range changes)", F_E, m->cover_lo,
+                         m->cover_hi);
+    }
+    int before = 0, after = 0, leaves, exact;
+    const double t0 = seconds();
+    if (!m->exact_points) udmap_model_force_table_info(m->err, m->model, &before, &leaves, &exact);
     stat = udmap_model_backbone(m->err, m->model, 1, &F_E, &m->point);
+    if (stat == UDMAP_OK && !m->exact_points) {
+      udmap_model_force_table_info(m->err, m->model, &after, &leaves, &exact);
+      if (after > before)
+        model_log_category(m, LOG_EVENTS, OK, "force table: %d exact points built for F_E = "
+                           "%.17g N in %.2f ms", after - before, F_E, 1e3 * (seconds() - t0));
+    }
     if (stat != UDMAP_OK) return kernel_failure(m, STAGE_POINT, stat, "udmap_model_backbone");
     stat = udmap_model_backbone_jumps(m->err, m->model, 1, &m->jump);
     if (stat != UDMAP_OK)
@@ -369,6 +481,7 @@ static Status run(ModelInstance *m, Stage s) {
     case STAGE_LIMIT: st = compute_limit(m); break;
     case STAGE_POINT: st = compute_point(m); break;
     case STAGE_F1: st = compute_f1(m); break;
+    case STAGE_COVER: st = compute_cover(m); break;
     case NSTAGES: break;
   }
   m->done |= BIT(s);

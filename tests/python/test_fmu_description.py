@@ -19,7 +19,7 @@ PARAMETERS = ["neck_L", "neck_h", "neck_b", "platform_L", "platform_m", "platfor
               "airfoil_L", "airfoil_h", "airfoil_b", "neck_elements", "airfoil_elements", "E",
               "rho", "zeta", "pitch", "y_P", "beta_L_deg", "beta_R_deg", "flat1_x", "flat1_y",
               "flat2_x", "flat2_y", "curved_x", "curved_y", "f_min", "f_max", "sigma_all",
-              "harmonics", "blades", "engine_order"]
+              "harmonics", "blades", "engine_order", "F_E_min", "F_E_max"]
 OUTPUTS = {"gamma_P": "rad", "sigma_a": "Pa", "F_lim": "N", "f_res": "Hz", "u_E": "m",
            "k_re": "N.m/rad", "k_im": "N.m/rad", "F_ratio": "", "hcf_ok": "",
            "regime": "", "lift_off": "", "gamma_max": "rad", "sigma_max": "Pa",

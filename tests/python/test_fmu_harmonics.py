@@ -50,8 +50,10 @@ def test_harmonics_parameter_matches_the_package(version):
         assert st == OK, inst.messages()
         p, _, _ = reference(5.0, "auto" if H == 0 else H)
         assert got[6] == p["harmonics"] and (H == 0 or p["harmonics"] == H)
+        # 5 N lies in the force range the FMU prepares (F_E_min, F_E_max = 1, 10 N): the point
+        # comes from the force table, to harmonic_tol/1000 (test_fmu_force_range.py)
         for name, x in zip(REAL, got):
-            assert close(x, p[name], 1e-9), (H, name, x, p[name])
+            assert close(x, p[name], 1e-6), (H, name, x, p[name])
         assert got[7] == p["hcf_ok"]
         # gross slip: the higher harmonics move the peak (PHYSICS.md 4.1)
         assert abs(got[0] / h1[0] - 1) > 1e-4

@@ -75,3 +75,31 @@ def test_automatic_harmonics_equal_the_exact_point_at_the_reported_H():
         # two exact solves at H = 46 already differ by about 1e-6 in f_res (the peak's
         # location is that sensitive to rounding there, PHYSICS.md 4.1)
         compare(p, fixed[H].backbone([p["F_E"]])[0], 3 * TOL)
+
+
+@pytest.mark.parametrize("harmonics", [3, "auto"])
+def test_cover_forces_builds_every_panel_of_the_range_in_advance(harmonics):
+    # udmap_model_cover_forces (the FMU's F_E_min, F_E_max): afterwards no force of the range
+    # adds a point to the table, and every point equals one of a table built on demand within
+    # the table's accuracy (both are within harmonic_tol/1000 of the exact point)
+    covered, on_demand = model(harmonics, True), model(harmonics, True)
+    covered.cover_forces(2.0, 5.0)
+    info = covered.force_table_info()
+    assert info["points"] > 0 and info["leaves"] > 0
+    forces = 2 + 3 * np.mod(0.6180339887498949 * np.arange(1, 31), 1.0)
+    for F in forces:
+        on_demand.backbone([F])
+    for F in forces:
+        p, q = covered.backbone([F])[0], on_demand.backbone([F])[0]
+        assert p["harmonics"] == q["harmonics"] and p["regime"] == q["regime"]
+        for name in REAL:
+            assert rel(p[name], q[name]) <= 2 * TOL, (F, name)
+    assert covered.force_table_info() == info
+    assert on_demand.force_table_info()["points"] > 0   # it really built on the way
+    # covering again changes nothing; a bad range is an error
+    covered.cover_forces(2.0, 5.0)
+    assert covered.force_table_info() == info
+    with pytest.raises(Exception, match="cover_forces"):
+        covered.cover_forces(0.0, 5.0)
+    with pytest.raises(Exception, match="cover_forces"):
+        covered.cover_forces(5.0, 2.0)

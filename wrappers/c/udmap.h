@@ -255,6 +255,19 @@ int udmap_model_set_harmonics(udmap_error error, udmap_model model, int harmonic
  * elsewhere (the first force in a panel, and where the points jump). Off by default. */
 int udmap_model_set_force_table(udmap_error error, udmap_model model, int on);
 
+/* Prepares the model so that udmap_model_backbone for forces in [F_min, F_max] [N]
+ * (0 < F_min <= F_max, finite) at the current harmonics builds nothing: the single-harmonic
+ * backbone table is grown to F_max and, at harmonics != 1 with the force table on, the force
+ * table gets every panel of the range (as visits on demand would build them; their answers
+ * agree to the layer tolerance, far inside harmonic_tol/1000). Nothing for a traveling-wave
+ * model. Holds until the damper, the harmonics or harmonic_tol change. */
+int udmap_model_cover_forces(udmap_error error, udmap_model model, double F_min, double F_max);
+
+/* What the model's force table holds: *points exact points (a count that grows only when
+ * panels are built), *leaves leaves, *exact_leaves of them answered by exact solves. */
+int udmap_model_force_table_info(udmap_error error, udmap_model model, int *points,
+                                 int *leaves, int *exact_leaves);
+
 /* Harmonic content of point i (0-based) of the last udmap_model_backbone or
  * udmap_model_response call: gamma_h[h] = |Gamma_h| [rad], sigma_h[h] = |sigma_h| [Pa] for
  * h = 0..*nh - 1 (at most nmax entries written; *nh = harmonics + 1, or 2 at H = 1). */

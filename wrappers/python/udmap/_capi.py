@@ -182,6 +182,9 @@ model_admissible_force = declare("udmap_model_admissible_force",
 model_classify = declare("udmap_model_classify", [vp, vp, _cd, _ci, c_double_p, c_double_p,
                                                   c_double_p, c_int_p, c_int_p, c_int_p])
 model_set_force_table = declare("udmap_model_set_force_table", [vp, vp, _ci])
+model_cover_forces = declare("udmap_model_cover_forces", [vp, vp, _cd, _cd])
+model_force_table_info = declare("udmap_model_force_table_info",
+                                 [vp, vp, c_int_p, c_int_p, c_int_p])
 model_point_harmonics = declare("udmap_model_point_harmonics",
                                 [vp, vp, _ci, _ci, c_double_p, c_double_p, c_int_p])
 

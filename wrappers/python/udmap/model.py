@@ -110,6 +110,20 @@ class Model:
         holds F_E, solved exactly elsewhere."""
         self._err.check(_capi.model_set_force_table(self._err.ptr, self._ptr, int(bool(on))))
 
+    def cover_forces(self, F_min: float, F_max: float) -> None:
+        """Prepares the backbone for every force in [F_min, F_max] N at the current harmonics
+        (the single-harmonic table to F_max; with the force table on and harmonics != 1 every
+        panel of the range), so that later backbone calls in the range build nothing."""
+        self._err.check(_capi.model_cover_forces(self._err.ptr, self._ptr, float(F_min),
+                                                 float(F_max)))
+
+    def force_table_info(self) -> dict:
+        """What the force table holds: exact points, leaves, exact leaves."""
+        n = [ctypes.c_int() for _ in range(3)]
+        self._err.check(_capi.model_force_table_info(self._err.ptr, self._ptr,
+                                                     *(ctypes.byref(x) for x in n)))
+        return dict(zip(("points", "leaves", "exact_leaves"), (x.value for x in n)))
+
     def admissible_force(self, F_lim: float, sigma_all: float, rtol: float = 1e-12) -> float:
         """F_adm [N]: the largest F_E <= F_lim/2 whose resonant stress (sigma_a, sigma_max with
         more than one harmonic) is at most sigma_all [Pa], refined to rtol; pass the smaller of

@@ -18,6 +18,7 @@ module udmap_api_c_model
     & set_damper, limit_force, backbone_curve, backbone, response, response_curves, &
     & limit_force_backbone, set_harmonics, admissible_force
   use udmap_mapping_model_data, only: regime_of, check_forces, REGIME_LIMIT
+  use udmap_mapping_harmonic_mapping, only: cover_forces, force_table_count
   implicit none
   private
   public :: c_analysis_type, c_point_type, c_model_type, traced_damper_type, model_from_handle
@@ -401,6 +402,57 @@ contains
     if (.not.allocated(error)) m%model%force_table = on /= 0
     stat = set_error(errh, error)
   end function udmap_model_set_force_table
+
+  !> int udmap_model_cover_forces(error, model, F_min, F_max): prepares the model so that a
+  !> later udmap_model_backbone for forces in [F_min, F_max] [N] (0 < F_min <= F_max, finite)
+  !> at the current harmonics builds nothing: the single-harmonic backbone table is grown to
+  !> F_max and, at harmonics /= 1 with the force table on, the force table gets every panel the
+  !> range needs (as visits on demand would build them; the answers agree with those of a table
+  !> built on demand to the layer tolerance, far inside harmonic_tol/1000). A traveling-wave
+  !> model has no such tables: nothing is done. The cover holds until the damper, the
+  !> harmonics or harmonic_tol change.
+  function udmap_model_cover_forces(errh, modelh, F_min, F_max) result(stat) &
+      & bind(C, name="udmap_model_cover_forces")
+    type(c_ptr), value :: errh, modelh
+    real(c_double), value :: F_min, F_max
+    integer(c_int) :: stat
+    type(error_type), allocatable :: error
+    type(c_model_type), pointer :: m
+    call model_from_handle(errh, modelh, m, error)
+    if (.not.allocated(error)) call check_input(F_min > 0 .and. F_min <= F_max .and. &
+      & F_max < huge(1.0_c_double), "cover_forces: the forces must satisfy 0 < F_min <= "// &
+      & "F_max < inf", error)
+    if (.not.allocated(error)) then
+      if (.not.is_traveling(m%model)) &
+        & call cover_forces(m%model, real(F_min, wp), real(F_max, wp), error)
+    end if
+    stat = set_error(errh, error)
+  end function udmap_model_cover_forces
+
+  !> int udmap_model_force_table_info(error, model, int *points, int *leaves,
+  !> int *exact_leaves): what the model's force table holds now: its exact points (each one
+  !> layer solve; a count that grows only when panels are built), its leaves, and of these the
+  !> ones whose forces are solved exactly at every visit.
+  function udmap_model_force_table_info(errh, modelh, points, leaves, exact_leaves) &
+      & result(stat) bind(C, name="udmap_model_force_table_info")
+    type(c_ptr), value :: errh, modelh
+    integer(c_int), intent(out) :: points, leaves, exact_leaves
+    integer(c_int) :: stat
+    type(error_type), allocatable :: error
+    type(c_model_type), pointer :: m
+    integer :: np, nl, ne
+    points = 0
+    leaves = 0
+    exact_leaves = 0
+    call model_from_handle(errh, modelh, m, error)
+    if (.not.allocated(error)) then
+      call force_table_count(m%model, np, nl, ne)
+      points = np
+      leaves = nl
+      exact_leaves = ne
+    end if
+    stat = set_error(errh, error)
+  end function udmap_model_force_table_info
 
   !> int udmap_model_point_harmonics(error, model, i, nmax, gamma_h, sigma_h, int *nh): the
   !> harmonic content of point i (0-based) of the last udmap_model_backbone or

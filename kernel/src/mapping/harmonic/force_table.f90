@@ -15,6 +15,10 @@
 !>   built only on its second visit: the first force in it is solved exactly.
 !> - Every point of a panel has the same harmonics: with the automatic H, the H chosen at the
 !>   middle of its level-0 panel (points are keyed by position and H).
+!> - A range of forces can be covered in advance (udmap_model_cover_forces, the FMU's
+!>   F_E_min..F_E_max): table_next_gap walks the range from left to right and names each
+!>   force no leaf holds yet; the caller builds the path to it exactly as on demand (same
+!>   panels, same judgement), so that afterwards every force of the range finds its leaf.
 !>
 !> The table holds numbers only; udmap_mapping_harmonic_mapping packs the points (what is
 !> interpolated in ln, what linearly, and on what scale the check is done) and solves them.
@@ -26,7 +30,8 @@ module udmap_mapping_harmonic_force_table
   implicit none
   private
   public :: table_reset, table_lookup, table_first_visit, table_panel, table_has_node, &
-    & table_add_node, table_judge, node_force, table_panel_harmonics, table_set_panel_harmonics
+    & table_add_node, table_judge, node_force, table_panel_harmonics, table_set_panel_harmonics, &
+    & table_position, table_next_gap, table_skip_panel, table_count
   public :: TABLE_MISSING, TABLE_VERIFIED, TABLE_EXACT, TABLE_SPLIT, LEVEL_MAX
 
   !> Deepest level (width_0/2^10, about 3e-4 in ln F_E).
@@ -156,6 +161,62 @@ contains
       return
     end do
   end subroutine table_lookup
+
+  !> The position (FINE units, real) of u = ln F_E, as table_lookup computes it.
+  pure real(wp) function table_position(u) result(x)
+    real(wp), intent(in) :: u
+    x = u/width_0*real(FINE, wp)
+  end function table_position
+
+  !> The walk of a range [x, position of u_hi] in FINE units (table_cover in the mapping):
+  !> from the cursor x on, skipping every leaf, the first u = ln F_E that no leaf holds
+  !> (found), or found = .false. once leaves hold everything up to u_hi. Past the first leaf
+  !> the cursor sits half a FINE unit inside a cell, so that no rounding of u moves it across
+  !> a panel edge (edges are whole FINE units, the finest leaf is 4 of them wide).
+  subroutine table_next_gap(t, x, u_hi, u, found)
+    type(force_table_type), intent(in) :: t
+    real(wp), intent(inout) :: x
+    real(wp), intent(in) :: u_hi
+    real(wp), intent(out) :: u
+    logical, intent(out) :: found
+    integer :: i
+    logical :: inside
+    found = .false.
+    u = 0
+    do while (x <= table_position(u_hi))
+      inside = .false.
+      do i = 1, t%n_leaf
+        if (x >= real(t%leaf_lo(i), wp) .and. x < real(t%leaf_hi(i), wp)) then
+          inside = .true.
+          x = real(t%leaf_hi(i), wp) + 0.5_wp
+          exit
+        end if
+      end do
+      if (.not.inside) then
+        u = x*(width_0/real(FINE, wp))
+        found = .true.
+        return
+      end if
+    end do
+  end subroutine table_next_gap
+
+  !> The cursor of table_next_gap past the level-0 panel holding u (whose building left u
+  !> without a leaf: an automatic H that failed there; its forces stay exact).
+  pure real(wp) function table_skip_panel(u) result(x)
+    real(wp), intent(in) :: u
+    x = real(panel_lo(u, 0) + FINE, wp) + 0.5_wp
+  end function table_skip_panel
+
+  !> What the table holds: exact points, leaves, and of these the exact ones (forces solved
+  !> exactly at every visit).
+  pure subroutine table_count(t, points, leaves, exact_leaves)
+    type(force_table_type), intent(in) :: t
+    integer, intent(out) :: points, leaves, exact_leaves
+    points = t%n_node
+    leaves = t%n_leaf
+    exact_leaves = 0
+    if (t%n_leaf > 0) exact_leaves = count(t%leaf_status(1:t%n_leaf) == TABLE_EXACT)
+  end subroutine table_count
 
   !> Weights of the quartic through the points 0..4 at x.
   pure function lagrange(x) result(w)

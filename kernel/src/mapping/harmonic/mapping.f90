@@ -26,7 +26,7 @@ module udmap_mapping_harmonic_mapping
   use udmap_contact_element_jenkins, only: jenkins_element_type, new_jenkins_element
   use udmap_contact_element_asymmetric, only: contact_element_type, new_contact_element
   use udmap_mapping_model_data, only: model_type, point_type, curve_type, limit_force_or_huge, &
-    & regime_of, damper_fingerprint, EIGEN_AUTO, EIGEN_MODAL
+    & regime_of, damper_fingerprint, limit_force_backbone, EIGEN_AUTO, EIGEN_MODAL
   use udmap_mapping_backbone, only: backbone_single => backbone, backbone_curve
   use udmap_mapping_response, only: response_single => response
   use udmap_mapping_curves, only: curves_single => response_curves
@@ -36,12 +36,12 @@ module udmap_mapping_harmonic_mapping
   use udmap_mapping_harmonic_search, only: harmonic_root, harmonic_peak_root, harmonic_force_root
   use udmap_mapping_harmonic_force_table, only: table_reset, table_lookup, table_first_visit, &
     & table_panel, table_has_node, table_add_node, table_judge, node_force, &
-    & table_panel_harmonics, table_set_panel_harmonics, TABLE_VERIFIED, TABLE_MISSING, &
-    & TABLE_SPLIT, LEVEL_MAX
+    & table_panel_harmonics, table_set_panel_harmonics, table_position, table_next_gap, &
+    & table_skip_panel, table_count, TABLE_VERIFIED, TABLE_MISSING, TABLE_SPLIT, LEVEL_MAX
   implicit none
   private
   public :: backbone, response, response_curves, harmonics_near_modes, set_harmonics, &
-    & check_harmonics
+    & check_harmonics, cover_forces, force_table_count
 
   !> The ladder of H tried by the automatic choice.
   integer, parameter :: ladder(10) = [3, 5, 7, 9, 13, 17, 25, 33, 49, 64]
@@ -170,17 +170,13 @@ contains
     type(error_type), allocatable, intent(out) :: error
     real(wp), allocatable :: y(:)
     real(wp) :: u
-    integer(int64) :: idx(9)
-    integer :: status, sig(4), L, j
-    call table_reset(model%ftable, [real(model%damper%revision, wp), &
-      & damper_fingerprint(model%damper), real(model%analysis%harmonics, wp), &
-      & model%analysis%harmonic_tol])
+    integer :: status, sig(4)
+    call reset_table(model)
     u = log(p1%F_E)
     call table_lookup(model%ftable, u, status, y, sig)
     if (status == TABLE_MISSING) then
       if (.not.table_first_visit(model%ftable, u)) then
-        call build()
-        if (allocated(error)) return
+        call build_panels(model, u)
         call table_lookup(model%ftable, u, status, y, sig)
       end if
     end if
@@ -189,36 +185,107 @@ contains
     else
       call multi_point(model, p1, .true., point, error)
     end if
-  contains
-    !> The panels on the path to u, down to a verified or exact leaf, with every point at
-    !> the panel's harmonics (auto: the H chosen at the middle of the level-0 panel, solved
-    !> then at that fixed H).
-    subroutine build()
-      integer :: H, harmonics
-      real(wp) :: F_mid
-      harmonics = model%analysis%harmonics
-      H = harmonics
-      if (harmonics == 0) then
-        call table_panel_harmonics(model%ftable, u, H, F_mid)
-        if (H == 0) then
-          H = -1
-          call panel_harmonics(F_mid, H)
-          call table_set_panel_harmonics(model%ftable, u, H)
-        end if
-        if (H < 0) return
-      end if
-      model%analysis%harmonics = H
-      do L = 0, LEVEL_MAX
-        idx = table_panel(u, L)
-        do j = 1, 9
-          if (.not.table_has_node(model%ftable, idx(j), H)) call add_node(idx(j))
-        end do
-        if (table_judge(model%ftable, idx, H, table_share*model%analysis%harmonic_tol, &
-          & L == LEVEL_MAX) /= TABLE_SPLIT) exit
-      end do
-      model%analysis%harmonics = harmonics
-    end subroutine build
+  end subroutine table_point
 
+  !> Empties the force table unless it was built for the model's damper, harmonics and
+  !> harmonic_tol.
+  subroutine reset_table(model)
+    type(model_type), intent(inout) :: model
+    call table_reset(model%ftable, [real(model%damper%revision, wp), &
+      & damper_fingerprint(model%damper), real(model%analysis%harmonics, wp), &
+      & model%analysis%harmonic_tol])
+  end subroutine reset_table
+
+  !> Covers the forces [F_min, F_max] (F_min > 0) in advance, so that no later backbone call
+  !> for a force of the range at the model's current harmonics builds anything: the
+  !> single-harmonic table is grown to F_max and, at harmonics /= 1 with the force table on,
+  !> the force table gets a leaf at every force of the range, each built by build_panels as a
+  !> visit on demand would build it (same panels, same harmonics, same judgement; the exact
+  !> points are the same solves, started from the last root instead of the visit's, so they
+  !> agree to the layer tolerance rtol_h, not bit for bit). Where the automatic H fails at a
+  !> level-0 panel's middle its forces stay exact (as on demand); unbounded forces (zeta = 0
+  !> at or above the limit force) need no table and are left out.
+  subroutine cover_forces(model, F_min, F_max, error)
+    type(model_type), intent(inout) :: model
+    real(wp), intent(in) :: F_min, F_max
+    type(error_type), allocatable, intent(out) :: error
+    type(point_type), allocatable :: p1(:)
+    real(wp) :: F_hi, u, x
+    integer :: em, status, sig(4)
+    real(wp), allocatable :: y(:)
+    logical :: found, first
+    call require(F_min > 0 .and. F_min <= F_max .and. F_max < huge(1.0_wp), &
+      & "cover_forces: the range must satisfy 0 < F_min <= F_max < inf", error)
+    if (allocated(error)) return
+    em = starts_modal(model)
+    call run()
+    model%analysis%eigen_method = em
+  contains
+    subroutine run()
+      ! the single-harmonic table up to F_max (the start of every multi-harmonic point)
+      call backbone_single(model, [F_max], p1, error)
+      if (allocated(error)) return
+      if (model%analysis%harmonics == 1 .or. .not.model%force_table .or. &
+        & table_share*model%analysis%harmonic_tol < table_tol_min) return
+      F_hi = F_max
+      if (model%undamped) F_hi = min(F_hi, limit_force_or_huge(model), &
+        & limit_force_backbone(model))
+      if (.not.(F_hi >= F_min)) return
+      call ensure_element(model, error)
+      if (allocated(error)) return
+      call reset_table(model)
+      x = table_position(log(F_min))
+      do
+        call table_next_gap(model%ftable, x, log(F_hi), u, found)
+        if (.not.found) exit
+        ! the visit recorded (build_panels needs it), then the building a second visit does
+        first = table_first_visit(model%ftable, u)
+        call build_panels(model, u)
+        call table_lookup(model%ftable, u, status, y, sig)
+        if (status == TABLE_MISSING) x = table_skip_panel(u)
+      end do
+    end subroutine run
+  end subroutine cover_forces
+
+  !> What the model's force table holds (udmap_model_force_table_info): exact points, leaves
+  !> and exact leaves.
+  subroutine force_table_count(model, points, leaves, exact_leaves)
+    type(model_type), intent(in) :: model
+    integer, intent(out) :: points, leaves, exact_leaves
+    call table_count(model%ftable, points, leaves, exact_leaves)
+  end subroutine force_table_count
+
+  !> The panels of the force table on the path to u = ln F_E, down to a verified or exact leaf,
+  !> with every point at the panel's harmonics (auto: the H chosen at the middle of the
+  !> level-0 panel, solved then at that fixed H); u's level-0 panel must have been visited.
+  subroutine build_panels(model, u)
+    type(model_type), intent(inout) :: model
+    real(wp), intent(in) :: u
+    integer(int64) :: idx(9)
+    integer :: H, harmonics, L, j
+    real(wp) :: F_mid
+    harmonics = model%analysis%harmonics
+    H = harmonics
+    if (harmonics == 0) then
+      call table_panel_harmonics(model%ftable, u, H, F_mid)
+      if (H == 0) then
+        H = -1
+        call panel_harmonics(F_mid, H)
+        call table_set_panel_harmonics(model%ftable, u, H)
+      end if
+      if (H < 0) return
+    end if
+    model%analysis%harmonics = H
+    do L = 0, LEVEL_MAX
+      idx = table_panel(u, L)
+      do j = 1, 9
+        if (.not.table_has_node(model%ftable, idx(j), H)) call add_node(idx(j))
+      end do
+      if (table_judge(model%ftable, idx, H, table_share*model%analysis%harmonic_tol, &
+        & L == LEVEL_MAX) /= TABLE_SPLIT) exit
+    end do
+    model%analysis%harmonics = harmonics
+  contains
     !> The automatic H at F (-1 if the point fails: the panel then stays exact).
     subroutine panel_harmonics(F, H)
       real(wp), intent(in) :: F
@@ -256,7 +323,7 @@ contains
           & [real(wp) ::], [real(wp) ::])
       end if
     end subroutine add_node
-  end subroutine table_point
+  end subroutine build_panels
 
   !> A multi-harmonic backbone point as the force table holds it: y the outputs (in ln where
   !> positive by nature), s the scale each is checked on (1: relative, in ln), signature its
