@@ -7,7 +7,7 @@ module test_force_table
   use, intrinsic :: iso_fortran_env, only: int64
   use testing, only: test_suite, check_true, unittest_type, new_unittest
   use udmap_core_kinds, only: wp
-  use udmap_mapping_harmonic_types, only: force_table_type
+  use udmap_mapping_harmonic_types, only: force_table_type, SIGNATURE_SIZE
   use udmap_mapping_harmonic_force_table, only: table_reset, table_lookup, table_first_visit, &
     & table_panel, table_has_node, table_add_node, table_judge, node_force, TABLE_MISSING, &
     & TABLE_VERIFIED, TABLE_EXACT, TABLE_SPLIT, LEVEL_MAX
@@ -42,9 +42,9 @@ contains
       integer, intent(in) :: kind
       real(wp), intent(in) :: u
       real(wp), intent(out) :: y(2)
-      integer, intent(out) :: sig(4)
+      integer, intent(out) :: sig(SIGNATURE_SIZE)
       y = [2 + sin(3*u), exp(0.7_wp*u)]
-      sig = [3, 1, 0, 4]
+      sig = [3, 1, 0, 4, 0]
       if (kind == JUMP .and. u >= 1) y(1) = y(1) + 1.0e-3_wp
       if (kind == STRUCTURE .and. u >= 1) sig(2) = 2
     end subroutine outputs
@@ -57,7 +57,7 @@ contains
       integer, intent(out) :: status
       real(wp), allocatable, intent(inout) :: y(:)
       integer(int64) :: idx(9)
-      integer :: sig(4), L, j
+      integer :: sig(SIGNATURE_SIZE), L, j
       real(wp) :: yn(2)
       call table_lookup(t, u, status, y, sig)
       if (status /= TABLE_MISSING) return
@@ -78,7 +78,7 @@ contains
       type(force_table_type) :: t
       real(wp), allocatable :: y(:)
       real(wp) :: u, exact(2), worst
-      integer :: i, status, sig(4), n_first, n_verified
+      integer :: i, status, sig(SIGNATURE_SIZE), n_first, n_verified
       call table_reset(t, [1.0_wp])
       worst = 0
       n_first = 0
@@ -105,7 +105,7 @@ contains
       type(force_table_type) :: t
       real(wp), allocatable :: y(:)
       real(wp) :: u, exact(2), worst, width
-      integer :: i, status, sig(4), n_exact
+      integer :: i, status, sig(SIGNATURE_SIZE), n_exact
       call table_reset(t, [1.0_wp])
       worst = 0
       n_exact = 0

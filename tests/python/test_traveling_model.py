@@ -8,6 +8,7 @@ import subprocess
 import sys
 from pathlib import Path
 
+import numpy as np
 import pytest
 
 from udmap.case import build_blade, build_damper, load_case
@@ -88,3 +89,28 @@ def test_backbone_curve_at_a_phase_passes_through_the_peaks(wave):
     for p, F, f in zip(peaks, F_bb, f_res):
         assert F == pytest.approx(p["F_E"], rel=1e-8)
         assert f == pytest.approx(p["f_res"], rel=1e-6)  # the peak frequency to ~1e-7
+
+
+def test_force_table_at_a_phase_answers_as_the_exact_points(wave):
+    """The force table at a phase (opt-in: udmap_model_set_force_table): a range covered in
+    advance holds every force of it, no later force of the range adds a point, and the points
+    agree with exact ones to the table's tolerance (harmonic_tol/1000 = 1e-6), with the same
+    regime, hcf verdict and harmonics. A force outside the range is exact."""
+    blade, damper, exact = wave
+    tabled = Model(blade, damper, 150.0, 230.0, ibpa_deg=90.0)
+    tabled.set_force_table(True)
+    tabled.cover_forces(2.0, 2.4)
+    info = tabled.force_table_info()
+    assert info["points"] > 0 and info["leaves"] > 0
+    forces = list(np.random.default_rng(7).uniform(2.0, 2.4, 12)) + [3.5]
+    worst = 0.0
+    for F in forces:
+        p, q = tabled.backbone([F])[0], exact.backbone([F])[0]
+        assert (p["regime"], p["hcf_ok"], p["harmonics"]) == (q["regime"], q["hcf_ok"],
+                                                              q["harmonics"])
+        for key in ("gamma_P", "f_res", "sigma_a", "u_E", "k_re", "k_im", "gamma_max"):
+            worst = max(worst, abs(p[key] / q[key] - 1))
+        if F == 3.5:  # outside (first force of its level-0 panel): the exact point itself
+            assert p == q
+    assert tabled.force_table_info()["points"] == info["points"]
+    assert worst <= 1e-6

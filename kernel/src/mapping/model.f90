@@ -33,13 +33,13 @@ module udmap_mapping_model
     & harmonics_near_modes, set_harmonics, check_harmonics
   use udmap_mapping_admissible, only: admissible_force
   use udmap_mapping_traveling_dispatch, only: is_traveling, limit_force, backbone, &
-    & backbone_curve
+    & backbone_curve, cover_forces
   use udmap_mapping_traveling_backbone, only: wave_response
   use udmap_mapping_traveling_curves, only: wave_curves
   implicit none
   private
   public :: analysis_type, point_type, curve_type, model_type
-  public :: limit_force_backbone, admissible_force, is_traveling
+  public :: limit_force_backbone, admissible_force, is_traveling, cover_forces
   public :: new_model, set_damper, limit_force, backbone_curve, backbone, response, &
     & response_curves, harmonics_near_modes, set_harmonics
   public :: EIGEN_AUTO, EIGEN_DIRECT, EIGEN_MODAL

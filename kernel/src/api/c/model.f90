@@ -13,12 +13,12 @@ module udmap_api_c_model
   use udmap_damper_type, only: damper_type
   ! udmap_analysis and its conversions, generated from kernel/parameters.toml
   use udmap_api_c_parameters, only: c_analysis_type, analysis_from_c, analysis_to_c
-  use udmap_mapping_model, only: is_traveling
+  use udmap_mapping_model, only: is_traveling, cover_forces
   use udmap_mapping_model, only: model_type, analysis_type, point_type, curve_type, new_model, &
     & set_damper, limit_force, backbone_curve, backbone, response, response_curves, &
     & limit_force_backbone, set_harmonics, admissible_force
   use udmap_mapping_model_data, only: regime_of, check_forces, REGIME_LIMIT
-  use udmap_mapping_harmonic_mapping, only: cover_forces, force_table_count
+  use udmap_mapping_harmonic_mapping, only: force_table_count
   implicit none
   private
   public :: c_analysis_type, c_point_type, c_model_type, traced_damper_type, model_from_handle
@@ -409,8 +409,8 @@ contains
   !> F_max and, at harmonics /= 1 with the force table on, the force table gets every panel the
   !> range needs (as visits on demand would build them; the answers agree with those of a table
   !> built on demand to the layer tolerance, far inside harmonic_tol/1000). A traveling-wave
-  !> model has no such tables: nothing is done. The cover holds until the damper, the
-  !> harmonics or harmonic_tol change.
+  !> model with the force table on gets its panels at every H, H = 1 included. The cover holds
+  !> until the damper, the harmonics or harmonic_tol change.
   function udmap_model_cover_forces(errh, modelh, F_min, F_max) result(stat) &
       & bind(C, name="udmap_model_cover_forces")
     type(c_ptr), value :: errh, modelh
@@ -422,10 +422,8 @@ contains
     if (.not.allocated(error)) call check_input(F_min > 0 .and. F_min <= F_max .and. &
       & F_max < huge(1.0_c_double), "cover_forces: the forces must satisfy 0 < F_min <= "// &
       & "F_max < inf", error)
-    if (.not.allocated(error)) then
-      if (.not.is_traveling(m%model)) &
-        & call cover_forces(m%model, real(F_min, wp), real(F_max, wp), error)
-    end if
+    if (.not.allocated(error)) &
+      & call cover_forces(m%model, real(F_min, wp), real(F_max, wp), error)
     stat = set_error(errh, error)
   end function udmap_model_cover_forces
 

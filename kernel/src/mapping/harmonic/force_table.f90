@@ -26,7 +26,7 @@ module udmap_mapping_harmonic_force_table
   use, intrinsic :: iso_fortran_env, only: int64
   use udmap_core_kinds, only: wp
   use udmap_core_arrays, only: put
-  use udmap_mapping_harmonic_types, only: table_node_type, force_table_type
+  use udmap_mapping_harmonic_types, only: table_node_type, force_table_type, SIGNATURE_SIZE
   implicit none
   private
   public :: table_reset, table_lookup, table_first_visit, table_panel, table_has_node, &
@@ -49,9 +49,13 @@ contains
   subroutine table_reset(t, key)
     type(force_table_type), intent(inout) :: t
     real(wp), intent(in) :: key(:)
-    if (all(t%key(1:size(key)) == key)) return
-    t%key = -huge(1.0_wp)
-    t%key(1:size(key)) = key
+    if (allocated(t%key)) then
+      if (size(t%key) == size(key)) then
+        if (all(t%key == key)) return
+      end if
+    end if
+    t%key = key
+    t%F_lim = -1
     t%n_node = 0
     t%n_leaf = 0
     t%n_visit = 0
@@ -136,7 +140,7 @@ contains
     real(wp), intent(in) :: u
     integer, intent(out) :: status
     real(wp), allocatable, intent(inout) :: y(:)
-    integer, intent(out) :: signature(4)
+    integer, intent(out) :: signature(SIGNATURE_SIZE)
     real(wp) :: x, w(5)
     integer :: i, j, m(5)
     status = TABLE_MISSING
@@ -275,7 +279,7 @@ contains
     integer(int64), intent(in) :: idx
     integer, intent(in) :: h
     logical, intent(in) :: ok
-    integer, intent(in) :: signature(4)
+    integer, intent(in) :: signature(SIGNATURE_SIZE)
     real(wp), intent(in) :: y(:), s(:)
     type(table_node_type), allocatable :: grown(:)
     integer :: i, pos

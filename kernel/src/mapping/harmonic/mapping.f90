@@ -18,7 +18,6 @@
 !> sigma_a, gamma_max, sigma_max and f_res change by less than harmonic_tol (relative); the
 !> larger H is reported.
 module udmap_mapping_harmonic_mapping
-  use, intrinsic :: iso_fortran_env, only: int64
   use udmap_core_kinds, only: wp, pi
   use udmap_core_sorting, only: sort_ascending
   use udmap_core_error, only: error_type, fatal_error, require, UDMAP_EINPUT
@@ -34,10 +33,8 @@ module udmap_mapping_harmonic_mapping
     & HARMONICS_MAX
   use udmap_mapping_harmonic_layer, only: harmonic_setup, harmonic_resize, harmonic_outputs
   use udmap_mapping_harmonic_search, only: harmonic_root, harmonic_peak_root, harmonic_force_root
-  use udmap_mapping_harmonic_force_table, only: table_reset, table_lookup, table_first_visit, &
-    & table_panel, table_has_node, table_add_node, table_judge, node_force, &
-    & table_panel_harmonics, table_set_panel_harmonics, table_position, table_next_gap, &
-    & table_skip_panel, table_count, TABLE_VERIFIED, TABLE_MISSING, TABLE_SPLIT, LEVEL_MAX
+  use udmap_mapping_harmonic_force_table, only: table_count
+  use udmap_mapping_harmonic_table_points, only: table_usable, table_backbone_point, cover_table
   implicit none
   private
   public :: backbone, response, response_curves, harmonics_near_modes, set_harmonics, &
@@ -50,9 +47,6 @@ module udmap_mapping_harmonic_mapping
   !> Relative tolerance of the layer roots and peaks (far below the 1e-6 agreement asked of
   !> the outputs; the AFT is exact to rounding).
   real(wp), parameter :: rtol_h = 1.0e-10_wp
-  !> The force table (model%force_table) interpolates to harmonic_tol times this, and is not
-  !> used below table_tol_min (exact points are then cheaper than a table that fine).
-  real(wp), parameter :: table_share = 1.0e-3_wp, table_tol_min = 1.0e-9_wp
 
 contains
 
@@ -134,8 +128,7 @@ contains
           points(i) = p1(i)
           cycle
         end if
-        if (at_peak .and. model%force_table .and. &
-          & table_share*model%analysis%harmonic_tol >= table_tol_min) then
+        if (at_peak .and. table_usable(model)) then
           call table_point(model, p1(i), points(i), error)
         else
           call multi_point(model, p1(i), at_peak, points(i), error)
@@ -158,43 +151,37 @@ contains
       & model%analysis%eigen_method = EIGEN_MODAL
   end function starts_modal
 
-  !> The backbone point at p1%F_E from the force table (udmap_mapping_harmonic_force_table):
-  !> interpolated where a verified panel holds F_E, else solved exactly. Building a panel solves its
-  !> points
-  !> exactly; a point that fails there only makes the panel finer (the asked force then gets
-  !> its own exact solve, and its own error if any).
+  !> The backbone point at p1%F_E from the force table (udmap_mapping_harmonic_table_points):
+  !> interpolated where a verified panel holds F_E, else solved exactly. Building a panel
+  !> solves its points exactly; a point that fails there only makes the panel finer (the asked
+  !> force then gets its own exact solve, and its own error if any).
   subroutine table_point(model, p1, point, error)
     type(model_type), intent(inout) :: model
     type(point_type), intent(in) :: p1
     type(point_type), intent(out) :: point
     type(error_type), allocatable, intent(out) :: error
-    real(wp), allocatable :: y(:)
-    real(wp) :: u
-    integer :: status, sig(4)
-    call reset_table(model)
-    u = log(p1%F_E)
-    call table_lookup(model%ftable, u, status, y, sig)
-    if (status == TABLE_MISSING) then
-      if (.not.table_first_visit(model%ftable, u)) then
-        call build_panels(model, u)
-        call table_lookup(model%ftable, u, status, y, sig)
-      end if
-    end if
-    if (status == TABLE_VERIFIED) then
-      call unpack_point(model, p1%F_E, y, sig, point)
-    else
-      call multi_point(model, p1, .true., point, error)
-    end if
+    logical :: found
+    call table_backbone_point(model, p1%F_E, inphase_exact, .false., &
+      & limit_force_or_huge(model), point, found)
+    if (.not.found) call multi_point(model, p1, .true., point, error)
   end subroutine table_point
 
-  !> Empties the force table unless it was built for the model's damper, harmonics and
-  !> harmonic_tol.
-  subroutine reset_table(model)
+  !> The exact multi-harmonic backbone point at F [N] (the force table's solver in phase).
+  subroutine inphase_exact(model, F, q, ok)
     type(model_type), intent(inout) :: model
-    call table_reset(model%ftable, [real(model%damper%revision, wp), &
-      & damper_fingerprint(model%damper), real(model%analysis%harmonics, wp), &
-      & model%analysis%harmonic_tol])
-  end subroutine reset_table
+    real(wp), intent(in) :: F
+    type(point_type), intent(out) :: q
+    logical, intent(out) :: ok
+    type(point_type), allocatable :: pn(:)
+    type(error_type), allocatable :: err
+    call backbone_single(model, [F], pn, err)
+    ok = .not.allocated(err)
+    if (ok) ok = .not.pn(1)%unbounded
+    if (ok) then
+      call multi_point(model, pn(1), .true., q, err)
+      ok = .not.allocated(err)
+    end if
+  end subroutine inphase_exact
 
   !> Covers the forces [F_min, F_max] (F_min > 0) in advance, so that no later backbone call
   !> for a force of the range at the model's current harmonics builds anything: the
@@ -210,10 +197,8 @@ contains
     real(wp), intent(in) :: F_min, F_max
     type(error_type), allocatable, intent(out) :: error
     type(point_type), allocatable :: p1(:)
-    real(wp) :: F_hi, u, x
-    integer :: em, status, sig(4)
-    real(wp), allocatable :: y(:)
-    logical :: found, first
+    real(wp) :: F_hi
+    integer :: em
     call require(F_min > 0 .and. F_min <= F_max .and. F_max < huge(1.0_wp), &
       & "cover_forces: the range must satisfy 0 < F_min <= F_max < inf", error)
     if (allocated(error)) return
@@ -225,25 +210,14 @@ contains
       ! the single-harmonic table up to F_max (the start of every multi-harmonic point)
       call backbone_single(model, [F_max], p1, error)
       if (allocated(error)) return
-      if (model%analysis%harmonics == 1 .or. .not.model%force_table .or. &
-        & table_share*model%analysis%harmonic_tol < table_tol_min) return
+      if (model%analysis%harmonics == 1 .or. .not.table_usable(model)) return
       F_hi = F_max
       if (model%undamped) F_hi = min(F_hi, limit_force_or_huge(model), &
         & limit_force_backbone(model))
       if (.not.(F_hi >= F_min)) return
       call ensure_element(model, error)
       if (allocated(error)) return
-      call reset_table(model)
-      x = table_position(log(F_min))
-      do
-        call table_next_gap(model%ftable, x, log(F_hi), u, found)
-        if (.not.found) exit
-        ! the visit recorded (build_panels needs it), then the building a second visit does
-        first = table_first_visit(model%ftable, u)
-        call build_panels(model, u)
-        call table_lookup(model%ftable, u, status, y, sig)
-        if (status == TABLE_MISSING) x = table_skip_panel(u)
-      end do
+      call cover_table(model, F_min, F_hi, inphase_exact, .false.)
     end subroutine run
   end subroutine cover_forces
 
@@ -254,130 +228,6 @@ contains
     integer, intent(out) :: points, leaves, exact_leaves
     call table_count(model%ftable, points, leaves, exact_leaves)
   end subroutine force_table_count
-
-  !> The panels of the force table on the path to u = ln F_E, down to a verified or exact leaf,
-  !> with every point at the panel's harmonics (auto: the H chosen at the middle of the
-  !> level-0 panel, solved then at that fixed H); u's level-0 panel must have been visited.
-  subroutine build_panels(model, u)
-    type(model_type), intent(inout) :: model
-    real(wp), intent(in) :: u
-    integer(int64) :: idx(9)
-    integer :: H, harmonics, L, j
-    real(wp) :: F_mid
-    harmonics = model%analysis%harmonics
-    H = harmonics
-    if (harmonics == 0) then
-      call table_panel_harmonics(model%ftable, u, H, F_mid)
-      if (H == 0) then
-        H = -1
-        call panel_harmonics(F_mid, H)
-        call table_set_panel_harmonics(model%ftable, u, H)
-      end if
-      if (H < 0) return
-    end if
-    model%analysis%harmonics = H
-    do L = 0, LEVEL_MAX
-      idx = table_panel(u, L)
-      do j = 1, 9
-        if (.not.table_has_node(model%ftable, idx(j), H)) call add_node(idx(j))
-      end do
-      if (table_judge(model%ftable, idx, H, table_share*model%analysis%harmonic_tol, &
-        & L == LEVEL_MAX) /= TABLE_SPLIT) exit
-    end do
-    model%analysis%harmonics = harmonics
-  contains
-    !> The automatic H at F (-1 if the point fails: the panel then stays exact).
-    subroutine panel_harmonics(F, H)
-      real(wp), intent(in) :: F
-      integer, intent(inout) :: H
-      type(point_type), allocatable :: pn(:)
-      type(point_type) :: q
-      type(error_type), allocatable :: err
-      call backbone_single(model, [F], pn, err)
-      if (allocated(err)) return
-      if (pn(1)%unbounded) return
-      call multi_point(model, pn(1), .true., q, err)
-      if (.not.allocated(err)) H = q%harmonics
-    end subroutine panel_harmonics
-
-    subroutine add_node(at)
-      integer(int64), intent(in) :: at
-      type(point_type), allocatable :: pn(:)
-      type(point_type) :: q
-      type(error_type), allocatable :: err
-      real(wp), allocatable :: yn(:), sn(:)
-      integer :: sn_sig(4)
-      logical :: ok
-      call backbone_single(model, [node_force(at)], pn, err)
-      ok = .not.allocated(err)
-      if (ok) ok = .not.pn(1)%unbounded
-      if (ok) then
-        call multi_point(model, pn(1), .true., q, err)
-        ok = .not.allocated(err)
-      end if
-      if (ok) call pack_point(q, yn, sn, sn_sig, ok)
-      if (ok) then
-        call table_add_node(model%ftable, at, model%analysis%harmonics, .true., sn_sig, yn, sn)
-      else
-        call table_add_node(model%ftable, at, model%analysis%harmonics, .false., [0, 0, 0, 0], &
-          & [real(wp) ::], [real(wp) ::])
-      end if
-    end subroutine add_node
-  end subroutine build_panels
-
-  !> A multi-harmonic backbone point as the force table holds it: y the outputs (in ln where
-  !> positive by nature), s the scale each is checked on (1: relative, in ln), signature its
-  !> structure (H, roots, jump, harmonic content). ok = .false. for a point the table cannot
-  !> hold (a zero where a logarithm is taken).
-  subroutine pack_point(p, y, s, signature, ok)
-    type(point_type), intent(in) :: p
-    real(wp), allocatable, intent(out) :: y(:), s(:)
-    integer, intent(out) :: signature(4)
-    logical, intent(out) :: ok
-    integer :: nr, nh
-    nr = size(p%roots)
-    nh = size(p%gamma_h)
-    signature = [p%harmonics, nr, merge(1, 0, p%jump), nh]
-    ok = p%gamma_P > 0 .and. p%f_res > 0 .and. p%u_E > 0 .and. p%gamma_max > 0 .and. &
-      & all(p%roots > 0) .and. nr > 0 .and. size(p%sigma_h) == nh
-    if (.not.ok) return
-    y = [log(p%gamma_P), log(p%f_res), p%sigma_a, log(p%u_E), real(p%k, wp), aimag(p%k), &
-      & log(p%gamma_max), p%sigma_max, log(p%roots), p%gamma_h, p%sigma_h]
-    s = [1.0_wp, 1.0_wp, p%sigma_a, 1.0_wp, abs(p%k), abs(p%k), 1.0_wp, p%sigma_max, &
-      & spread(1.0_wp, 1, nr), spread(p%gamma_max, 1, nh), spread(p%sigma_max, 1, nh)]
-  end subroutine pack_point
-
-  !> The point at F_E from the interpolated outputs y (pack_point's order) and their
-  !> structure; regime and hcf_ok follow from them as for an exact point.
-  subroutine unpack_point(model, F_E, y, signature, p)
-    type(model_type), intent(in) :: model
-    real(wp), intent(in) :: F_E, y(:)
-    integer, intent(in) :: signature(4)
-    type(point_type), intent(out) :: p
-    real(wp) :: F_lim
-    integer :: nr, nh
-    nr = signature(2)
-    nh = signature(4)
-    F_lim = limit_force_or_huge(model)
-    p%F_E = F_E
-    p%gamma_P = exp(y(1))
-    p%f_res = exp(y(2))
-    p%sigma_a = y(3)
-    p%u_E = exp(y(4))
-    p%k = cmplx(y(5), y(6), wp)
-    p%gamma_max = exp(y(7))
-    p%sigma_max = y(8)
-    p%roots = exp(y(9:8+nr))
-    p%roots(nr) = p%gamma_P
-    p%gamma_h = y(9+nr:8+nr+nh)
-    p%sigma_h = y(9+nr+nh:8+nr+2*nh)
-    p%harmonics = signature(1)
-    p%jump = signature(3) == 1
-    p%unbounded = .false.
-    p%regime = regime_of(model%damper, F_E, F_lim, p%gamma_P)
-    p%hcf_ok = F_E <= 0.5_wp*F_lim .and. p%sigma_max <= model%analysis%sigma_all .and. &
-      & F_lim < huge(1.0_wp)
-  end subroutine unpack_point
 
   !> The response curves (PHYSICS.md 3) for the forces F_E [N]. With H > 1 (or auto: the H
   !> of each force's peak) every point of the single-harmonic curve is solved again as a

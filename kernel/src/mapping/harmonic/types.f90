@@ -11,7 +11,8 @@ module udmap_mapping_harmonic_types
   implicit none
   private
   public :: HARMONICS_MAX, harmonic_state_type, harmonic_workspace_type, &
-    & harmonic_root_memory_type, harmonic_outputs_type, table_node_type, force_table_type
+    & harmonic_root_memory_type, harmonic_outputs_type, table_node_type, force_table_type, &
+    & SIGNATURE_SIZE
 
   !> Largest number of harmonics of a layer.
   integer, parameter :: HARMONICS_MAX = 64
@@ -83,19 +84,25 @@ module udmap_mapping_harmonic_types
     real(wp), allocatable :: gamma_h(:), sigma_h(:)
   end type harmonic_outputs_type
 
-  !> An exact point: its structure (H, roots, jump, sizes), packed outputs y and check scales s.
+  !> Entries of a table point's signature (H, roots, jump, harmonic content, regime + 1 or 0).
+  integer, parameter :: SIGNATURE_SIZE = 5
+
+  !> An exact point: its structure (H, roots, jump, sizes, regime), packed outputs y and check
+  !> scales s.
   type :: table_node_type
     integer(int64) :: idx = 0
     integer :: h = 0
     logical :: ok = .false.
-    integer :: signature(4) = 0
+    integer :: signature(SIGNATURE_SIZE) = 0
     real(wp), allocatable :: y(:), s(:)
   end type table_node_type
 
   type :: force_table_type
     !> What the table was built for (damper revision and summary numbers, harmonics,
-    !> harmonic_tol); a change of any empties it.
-    real(wp) :: key(8) = -huge(1.0_wp)
+    !> harmonic_tol, interblade phase); a change of any empties it.
+    real(wp), allocatable :: key(:)
+    !> The limit force the table's points were classified with [N] (negative: not yet known).
+    real(wp) :: F_lim = -1
     integer :: n_node = 0, n_leaf = 0, n_visit = 0
     !> Exact points, sorted by idx.
     type(table_node_type), allocatable :: node(:)

@@ -23,12 +23,14 @@ module udmap_mapping_traveling_backbone
     & REGIME_PARTIAL_SLIP, REGIME_FULL_SLIP, REGIME_LIMIT
   use udmap_mapping_harmonic_mapping, only: inphase_backbone => backbone
   use udmap_mapping_harmonic_layer, only: largest_excursion
+  use udmap_mapping_harmonic_table_points, only: table_usable, table_backbone_point, &
+    & cover_table, reset_table
   use udmap_mapping_traveling_layer, only: traveling_type, wave_layer_type, new_traveling, &
     & wave_peak, wave_layer_solve, wave_layer_slope
   implicit none
   private
   public :: wave_backbone, wave_response, wave_limit_force, interblade_phase, new_model_traveling, &
-    & wave_backbone_curve
+    & wave_backbone_curve, wave_cover_forces
 
   !> Relative tolerance of the backbone roots in gamma (the layers are solved to ~1e-11).
   real(wp), parameter :: root_rtol = 1.0e-10_wp
@@ -100,9 +102,82 @@ contains
     F_lim = (W(2) - W(1))/(amp(2) - amp(1))/(pi*abs(psi_E))
   end subroutine wave_limit_force
 
-  !> The peaks of the traveling wave for the forces F_E [N]. analysis%harmonics = 0 (auto):
-  !> H = 1, 3, 5, ... until gamma_P, sigma_a and f_res change by less than harmonic_tol.
+  !> The peaks of the traveling wave for the forces F_E [N]: from the force table where it is
+  !> on (model%force_table, the FMU's F_E-only steps; udmap_mapping_harmonic_table_points, at
+  !> every H, H = 1 included: a traveling point costs a root of layer solves), interpolated
+  !> where a verified panel holds F_E; else, and for every force where none does, exact.
   subroutine wave_backbone(model, F_E, points, error)
+    type(model_type), intent(inout) :: model
+    real(wp), intent(in) :: F_E(:)
+    type(point_type), allocatable, intent(out) :: points(:)
+    type(error_type), allocatable, intent(out) :: error
+    type(point_type), allocatable :: p(:)
+    real(wp) :: F_lim
+    logical :: found
+    integer :: i
+    if (.not. table_usable(model)) then
+      call wave_backbone_exact(model, F_E, points, error)
+      return
+    end if
+    ! F_lim(phi) is kept with the table (a trace of its own: most of a step from the table)
+    call reset_table(model)
+    if (model%ftable%F_lim < 0) then
+      call wave_limit_force(model, F_lim, error)
+      if (allocated(error)) return
+      model%ftable%F_lim = F_lim
+    end if
+    F_lim = model%ftable%F_lim
+    allocate(points(size(F_E)))
+    do i = 1, size(F_E)
+      found = .false.
+      if (F_E(i) > 0 .and. .not.(model%undamped .and. F_E(i) >= F_lim)) &
+        & call table_backbone_point(model, F_E(i), wave_exact, .true., F_lim, points(i), found)
+      if (found) cycle
+      call wave_backbone_exact(model, F_E(i:i), p, error)
+      if (allocated(error)) return
+      points(i) = p(1)
+    end do
+  end subroutine wave_backbone
+
+  !> The exact traveling-wave backbone point at F [N] (the force table's solver at phi).
+  subroutine wave_exact(model, F, q, ok)
+    type(model_type), intent(inout) :: model
+    real(wp), intent(in) :: F
+    type(point_type), intent(out) :: q
+    logical, intent(out) :: ok
+    type(point_type), allocatable :: p(:)
+    type(error_type), allocatable :: err
+    call wave_backbone_exact(model, [F], p, err)
+    ok = .not.allocated(err)
+    if (ok) ok = .not.p(1)%unbounded
+    if (ok) q = p(1)
+  end subroutine wave_exact
+
+  !> Covers the forces [F_min, F_max] in advance (the FMU's F_E_min..F_E_max), as
+  !> udmap_mapping_harmonic_mapping's cover_forces does in phase: every force of the range gets
+  !> its leaf of the force table, at every H (H = 1 included). Unbounded forces are left out.
+  subroutine wave_cover_forces(model, F_min, F_max, error)
+    type(model_type), intent(inout) :: model
+    real(wp), intent(in) :: F_min, F_max
+    type(error_type), allocatable, intent(out) :: error
+    real(wp) :: F_lim, F_hi
+    if (.not.(F_min > 0 .and. F_min <= F_max .and. F_max < huge(1.0_wp))) then
+      call fatal_error(error, "cover_forces: the range must satisfy 0 < F_min <= F_max < inf", &
+        & UDMAP_EINPUT)
+      return
+    end if
+    if (.not. table_usable(model)) return
+    call wave_limit_force(model, F_lim, error)
+    if (allocated(error)) return
+    F_hi = F_max
+    if (model%undamped) F_hi = min(F_hi, F_lim)
+    if (.not.(F_hi >= F_min)) return
+    call cover_table(model, F_min, F_hi, wave_exact, .true.)
+  end subroutine wave_cover_forces
+
+  !> The exact peaks of the traveling wave for the forces F_E [N]. analysis%harmonics = 0
+  !> (auto): H = 1, 3, 5, ... until gamma_P, sigma_a and f_res change by less than harmonic_tol.
+  subroutine wave_backbone_exact(model, F_E, points, error)
     type(model_type), intent(inout) :: model
     real(wp), intent(in) :: F_E(:)
     type(point_type), allocatable, intent(out) :: points(:)
@@ -270,7 +345,8 @@ contains
       excess = log(Fbb) - log(F_cur)
     end function excess
 
-  end subroutine wave_backbone
+  end subroutine wave_backbone_exact
+
   !> The outputs of the solved layer L (amplitude gamma) scaled to the force F [N].
   subroutine fill_point(tw, L, gamma, F, F_lim, sigma_all, pt)
     type(traveling_type), intent(in) :: tw
@@ -295,7 +371,6 @@ contains
       pt%regime = REGIME_PARTIAL_SLIP
     end if
     if (F >= F_lim) pt%regime = REGIME_LIMIT
-    pt%hcf_ok = F <= 0.5_wp*F_lim .and. pt%sigma_a <= sigma_all
     pt%gamma_max = gamma
     pt%sigma_max = pt%sigma_a
     if (tw%H > 1) then
@@ -311,6 +386,8 @@ contains
         pt%sigma_h(h) = s*abs(L%sigma(h))
       end do
     end if
+    ! as in phase: with H > 1 the criterion takes the largest excursion sigma_max
+    pt%hcf_ok = F <= 0.5_wp*F_lim .and. pt%sigma_max <= sigma_all .and. F_lim < huge(1.0_wp)
   end subroutine fill_point
 
   !> The response of the traveling wave at the excitation frequency f_exc [Hz] for the forces

@@ -9,13 +9,14 @@ module udmap_mapping_traveling_dispatch
   use udmap_damper_type, only: DAMPER_ASYMMETRIC
   use udmap_mapping_model_data, only: model_type, point_type, &
     & inphase_limit_force => limit_force
-  use udmap_mapping_harmonic_mapping, only: inphase_backbone => backbone
+  use udmap_mapping_harmonic_mapping, only: inphase_backbone => backbone, &
+    & inphase_cover_forces => cover_forces
   use udmap_mapping_traveling_backbone, only: wave_backbone, wave_limit_force, &
-    & wave_backbone_curve
+    & wave_backbone_curve, wave_cover_forces
   use udmap_mapping_backbone, only: inphase_backbone_curve => backbone_curve
   implicit none
   private
-  public :: is_traveling, limit_force, backbone, backbone_curve
+  public :: is_traveling, limit_force, backbone, backbone_curve, cover_forces
 
 contains
 
@@ -53,6 +54,19 @@ contains
       call inphase_backbone(model, F_E, points, error)
     end if
   end subroutine backbone
+
+  !> Prepares the force table over [F_min, F_max] [N] (udmap_model_cover_forces), so that a
+  !> later backbone call for a force of the range builds nothing.
+  subroutine cover_forces(model, F_min, F_max, error)
+    type(model_type), intent(inout) :: model
+    real(wp), intent(in) :: F_min, F_max
+    type(error_type), allocatable, intent(out) :: error
+    if (is_traveling(model)) then
+      call wave_cover_forces(model, F_min, F_max, error)
+    else
+      call inphase_cover_forces(model, F_min, F_max, error)
+    end if
+  end subroutine cover_forces
 
   !> F_bb(gamma) [N] and the peak frequencies [Hz] (PHYSICS.md 4; at phi /= 0, 2.6).
   subroutine backbone_curve(model, gamma, F_bb, f_res, error)
