@@ -25,6 +25,12 @@ module udmap_mapping_harmonic_table_points
   !> The force table interpolates to harmonic_tol times this, and is not used below
   !> table_tol_min (exact points are then cheaper than a table that fine).
   real(wp), parameter :: table_share = 1.0e-3_wp, table_tol_min = 1.0e-9_wp
+  !> At the deepest level (panels 3e-4 wide in ln F_E) the check takes harmonic_tol times this
+  !> instead: a panel that still fails there has exact points that scatter by more than
+  !> table_share (the automatic H at some 46 harmonics: f_res rough at 1e-5), and
+  !> interpolating them is as good as solving them again; panels whose structure changes
+  !> (H, roots, jump, regime) stay exact.
+  real(wp), parameter :: deepest_share = 1.0e-1_wp
 
   abstract interface
     !> The exact backbone point at F [N] at the model's harmonics (0: auto, reporting the H it
@@ -139,8 +145,8 @@ contains
       do j = 1, 9
         if (.not.table_has_node(model%ftable, idx(j), H)) call add_node(idx(j))
       end do
-      if (table_judge(model%ftable, idx, H, table_share*model%analysis%harmonic_tol, &
-        & L == LEVEL_MAX) /= TABLE_SPLIT) exit
+      if (table_judge(model%ftable, idx, H, merge(deepest_share, table_share, &
+        & L == LEVEL_MAX)*model%analysis%harmonic_tol, L == LEVEL_MAX) /= TABLE_SPLIT) exit
     end do
     model%analysis%harmonics = harmonics
   contains
