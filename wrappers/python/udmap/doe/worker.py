@@ -167,9 +167,7 @@ class DesignContext:
         the bare first mode in the band): once per run when neither varies. The checks that
         need the stuck peak (a backbone point per design) are not made in a DOE."""
         def kinds(c, b):
-            a = c.analysis
-            f1 = float(b.natural_frequencies(1)[0])
-            return [k for k, _ in blade_checks(c.blade, f1, a["f_min"], a["f_max"])]
+            return [k for k, _ in blade_checks(b, c.analysis["f_min"], c.analysis["f_max"])]
 
         if self.blade_varies or self.band_varies:
             return kinds(case, blade)
