@@ -92,3 +92,25 @@ def test_a_change_that_brings_a_new_warning_logs_it(version):
     assert inst.set(**SOFT) == OK
     assert inst.step(1e-3) == OK and inst.get("gamma_P")[0] == OK
     assert warnings(inst) == [GAMMA_B, SHIFT, GAMMA_B, SHIFT]
+
+
+@pytest.mark.parametrize("version", VERSIONS)
+def test_fmpy_shows_the_warning_of_a_platform_in_grams(version):
+    # an importer of its own: fmpy's simulation with the platform mass typed as 21 (grams)
+    from fmpy import simulate_fmu
+
+    from fmu_harness import FMUS
+    logged = []
+
+    def logger2(component, name, status, category, message):
+        logged.append((status, category.decode(), message.decode()))
+
+    def logger3(environment, status, category, message):
+        logged.append((status, category.decode(), message.decode()))
+
+    r = simulate_fmu(str(FMUS[version]), start_values={"platform_m": 21.0, "F_E": 2.0},
+                     stop_time=0.01, output_interval=0.005, output=["gamma_P"],
+                     logger=logger2 if version == 2 else logger3)
+    found = [m for m in logged if m[2].startswith("plausibility: ")]
+    assert found == [(WARNING, "logStatusWarning", MASS)], logged
+    assert r["gamma_P"][-1] == reference(2.0, 21.0)["gamma_P"]

@@ -86,3 +86,16 @@ def test_blade_a_has_no_warning_and_the_cli_prints_the_counts(tmp_path):
                        cwd=ROOT)
     assert r.returncode == 0, r.stderr
     assert "plausibility warnings: platform_mass 4 (of 4 designs" in r.stdout, r.stdout
+
+
+def test_a_resumed_run_continues_the_recorded_counts(tmp_path):
+    out = tmp_path / "r.csv"
+    s = run_doe(str(CASE), ["stiffness_scale=0.0005:1:log"], 24, out, forces="2", workers=1,
+                progress=False)
+    assert s["warnings"]["gamma_b_large"] > 0
+    # nothing left to compute: the counts are the recorded ones, not zero
+    again = run_doe(str(CASE), ["stiffness_scale=0.0005:1:log"], 24, out, forces="2",
+                    workers=1, progress=False, resume=True)
+    assert again["computed"] == 0
+    assert again["warnings"] == s["warnings"] and again["warnings_designs"] == 24
+    assert _meta(out)["warnings"] == s["warnings"]
