@@ -18,7 +18,6 @@ ROOT = Path(__file__).resolve().parents[2]
 CASE = ROOT / "cases" / "blade_a.json"
 #: Neck and airfoil of blade A [kg]: rho (b h L of the neck + b h L of the airfoil).
 REST = 8200.0 * (0.020 * 0.008 * 0.020 + 0.030 * 0.004 * 0.120)
-F1_BARE = 187.1  # Hz, blade A's bare first mode (docs/case-files.md)
 
 
 def _rows(path):
@@ -99,3 +98,19 @@ def test_a_resumed_run_continues_the_recorded_counts(tmp_path):
     assert again["computed"] == 0
     assert again["warnings"] == s["warnings"] and again["warnings_designs"] == 24
     assert _meta(out)["warnings"] == s["warnings"]
+
+
+def test_the_doe_threshold_is_the_kernels():
+    # gamma_b scales as 1/kappa with a common factor kappa of the contact stiffnesses
+    # (PHYSICS.md 2.3): just above and just below GAMMA_B_MAX, the kernel agrees
+    case = load_case(str(CASE))
+    blade = build_blade(case)
+    kappa0 = build_damper(case).gamma_b / GAMMA_B_MAX
+    for factor, above in ((1 - 1e-6, True), (1 + 1e-6, False)):
+        c = load_case(str(CASE))
+        for k in ("kn_flat", "kt_flat", "kn_curved", "kt_curved"):
+            c.damper[k] *= kappa0 * factor
+        damper = build_damper(c)
+        assert (damper.gamma_b > GAMMA_B_MAX) == above
+        kinds = [k for k, _ in plausibility_checks(c, blade, damper)]
+        assert ("gamma_b_large" in kinds) == above, (factor, damper.gamma_b)
