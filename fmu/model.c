@@ -99,7 +99,8 @@ bool model_allowed(ModelInstance *m, const char *fn, unsigned mask) {
 /* ---------------------------------------------------------------- lifecycle */
 
 static void free_kernel_objects(ModelInstance *m) {
-  /* the model borrows blade and damper: release it first */
+  /* the models borrow blade and damper: release them first */
+  udmap_delete_model(&m->probe);
   udmap_delete_model(&m->model);
   udmap_delete_damper(&m->damper);
   udmap_delete_blade(&m->blade);
@@ -159,6 +160,8 @@ void model_reset(ModelInstance *m) {
   m->done = 0;
   m->damper_CF = NAN;
   m->outside_logged = false;
+  m->plausibility_kinds = 0;
+  m->plausibility_stale = false;
   m->state = Instantiated;
   m->stopTimeDefined = false;
   m->stopTime = 0.0;

@@ -112,6 +112,14 @@ struct ModelInstance {
   int cover_points, cover_leaves, cover_exact;
   bool outside_logged;
 
+  /* the analysis settings the model was built with, the model of the plausibility checks
+   * (over the same blade, damper and settings; dropped with the model), the kinds (bit per UDMAP_WARNING_*) of the plausibility warnings of the
+   * last check, and whether the blade, damper, CF or band changed since */
+  udmap_analysis analysis;
+  udmap_model probe;
+  unsigned plausibility_kinds;
+  bool plausibility_stale;
+
   /* counters, for tests and diagnostics (not part of the FMU state) */
   unsigned long stage_runs[NSTAGES];
 

@@ -97,6 +97,7 @@ static Status need(ModelInstance *m, Stage s, const Stage *deps, int ndeps) {
 }
 
 static Status build_blade(ModelInstance *m) {
+  udmap_delete_model(&m->probe);
   udmap_delete_model(&m->model);
   udmap_delete_blade(&m->blade);
   const CaseConfig *c = m->config;
@@ -149,6 +150,7 @@ static double reference_CF(const ModelInstance *m) { return model_start_value(m,
 
 /* Releases the model and marks it (and what it computed) to be built again. */
 static void drop_model(ModelInstance *m) {
+  udmap_delete_model(&m->probe);
   udmap_delete_model(&m->model);
   m->done &= ~(BIT(STAGE_MODEL) | BIT(STAGE_LIMIT) | BIT(STAGE_POINT) | BIT(STAGE_COVER));
 }
@@ -197,6 +199,9 @@ static Status build_damper(ModelInstance *m) {
   } else {
     drop_model(m);
   }
+  /* the plausibility checks' model borrows the damper too: couple it to the new one first */
+  if (m->probe && udmap_model_set_damper(m->err, m->probe, fresh) != UDMAP_OK)
+    udmap_delete_model(&m->probe);
   udmap_delete_damper(&m->damper);
   m->damper = fresh;
   m->damper_CF = p.CF;
@@ -222,6 +227,7 @@ static Status build_model(ModelInstance *m) {
   static const Stage deps[] = {STAGE_BLADE, STAGE_DAMPER, STAGE_CF};
   Status st = need(m, STAGE_MODEL, deps, 3);
   if (st >= Discard) return st;
+  udmap_delete_model(&m->probe);
   udmap_delete_model(&m->model);
   if (!(V(f_min) < V(f_max)))
     return failure(m, STAGE_MODEL, "f_min = %g Hz must be below f_max = %g Hz", V(f_min),
@@ -242,6 +248,7 @@ static Status build_model(ModelInstance *m) {
   const double N = V(blades), EO = fmod(V(engine_order), N);
   a.ibpa_deg = 360.0 * EO / N;
   if (a.ibpa_deg > 180.0) a.ibpa_deg -= 360.0;
+  m->analysis = a;
   int stat = udmap_new_model(m->err, m->blade, m->damper, &a, &m->model);
   if (stat != UDMAP_OK) return kernel_failure(m, STAGE_MODEL, stat, "udmap_new_model");
   /* after a change of F_E alone, points at harmonics != 1 come from the verified force table
@@ -475,6 +482,47 @@ static Status compute_point(ModelInstance *m) {
   return OK;
 }
 
+/* ---------------------------------------------------------------- plausibility warnings */
+
+/* Most warnings a check gives (one per kind). */
+#define MAX_WARNINGS 8
+
+/* The plausibility warnings (docs/case-files.md, "Plausibility") of the current blade, damper
+ * and band, each logged as a Warning (category logStatusWarning) when the previous check did
+ * not give its kind: once after the model is built, and again only when a change of the
+ * values brings a new one. With a model the check runs on a model of its own (m->probe) over
+ * the same blade, damper and settings, so that the caches and the numbers of m->model stay
+ * exactly what they would be without it (the stuck peak is a backbone point); the probe is
+ * built with the model and coupled to each new damper, as the model is. Without a model (its
+ * stage failed) the checks that need none are made. Nothing is refused and no status
+ * changes: the stages report their own failures. Not on an instance that cannot log (the
+ * finite-difference scratch instance). */
+static void check_plausibility(ModelInstance *m) {
+  m->plausibility_stale = false;
+  if (!m->emit || !m->blade) return;
+  int kinds[MAX_WARNINGS], n = 0, stat;
+  char texts[MAX_WARNINGS * UDMAP_WARNING_LEN];
+  if (m->model && m->damper && (m->done & BIT(STAGE_MODEL))) {
+    stat = UDMAP_OK;
+    if (!m->probe) stat = udmap_new_model(m->err, m->blade, m->damper, &m->analysis, &m->probe);
+    if (stat == UDMAP_OK)
+      stat = udmap_model_warnings(m->err, m->probe, MAX_WARNINGS, UDMAP_WARNING_LEN, kinds,
+                                  texts, &n);
+  } else {
+    stat = udmap_plausibility_warnings(m->err, m->blade, m->damper, V(f_min), V(f_max),
+                                       MAX_WARNINGS, UDMAP_WARNING_LEN, kinds, texts, &n);
+  }
+  if (stat != UDMAP_OK) return;
+  unsigned now = 0;
+  for (int i = 0; i < n && i < MAX_WARNINGS; i++) {
+    const unsigned bit = 1u << (kinds[i] & 31);
+    if (!(m->plausibility_kinds & bit))
+      model_log(m, Warning, "plausibility: %s", texts + (size_t)i * UDMAP_WARNING_LEN);
+    now |= bit;
+  }
+  m->plausibility_kinds = now;
+}
+
 static Status run(ModelInstance *m, Stage s) {
   if (m->done & BIT(s)) return m->stage_status[s];
   m->stage_message[s][0] = '\0';
@@ -493,6 +541,11 @@ static Status run(ModelInstance *m, Stage s) {
   m->done |= BIT(s);
   m->stage_status[s] = st;
   m->stage_runs[s]++;
+  /* a new blade, damper, CF or model: check again once the outputs' stage has run */
+  if (s == STAGE_BLADE || s == STAGE_DAMPER || s == STAGE_CF || s == STAGE_MODEL)
+    m->plausibility_stale = true;
+  else if (m->plausibility_stale && (s == STAGE_POINT || s == STAGE_LIMIT || s == STAGE_COVER))
+    check_plausibility(m);
   return st;
 }
 

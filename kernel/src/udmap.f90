@@ -13,6 +13,7 @@
 !>   call response(model, f_exc, F_E, points, error)           ! at a given frequency
 !>   call response_curves(model, F_E, layers, curves, error)   ! curve_type(:)
 !>   call set_harmonics(model, 0, 1e-3_wp, error)              ! multi-harmonic layers, auto H
+!>   call model_warnings(model, warnings)                      ! plausibility: kind, text
 !>
 !> analysis%harmonics (or set_harmonics): 1 the single-harmonic method, H > 1 harmonics 0..H,
 !> 0 automatic (PHYSICS.md 4.1); points then carry gamma_max, sigma_max, harmonics, gamma_h(0:H)
@@ -37,6 +38,9 @@ module udmap
     & limit_force, backbone_curve, backbone, response, response_curves, set_harmonics, &
     & admissible_force, REGIME_STUCK, REGIME_PARTIAL_SLIP, REGIME_FULL_SLIP, REGIME_LIMIT, &
     & BRANCH_LOWER, BRANCH_UPPER, BRANCH_TURNING
+  use udmap_mapping_plausibility, only: warning_type, plausibility_warnings, model_warnings, &
+    & WARNING_PLATFORM_MASS, WARNING_PLATFORM_INERTIA, WARNING_GAMMA_B_LARGE, &
+    & WARNING_STUCK_SHIFT, WARNING_BAND_MISSES_MODE
   use udmap_api_legacy_interface, only: udmap_version_numbers, udmap_table_arrays, &
     & udmap_backbone_arrays, udmap_response_arrays, udmap_curve_arrays
   implicit none
@@ -55,6 +59,10 @@ module udmap
     & backbone_curve, backbone, response, response_curves, set_harmonics, admissible_force
   public :: REGIME_STUCK, REGIME_PARTIAL_SLIP, REGIME_FULL_SLIP, REGIME_LIMIT
   public :: BRANCH_LOWER, BRANCH_UPPER, BRANCH_TURNING
+  ! plausibility warnings (docs/case-files.md, "Plausibility")
+  public :: warning_type, plausibility_warnings, model_warnings, WARNING_PLATFORM_MASS, &
+    & WARNING_PLATFORM_INERTIA, WARNING_GAMMA_B_LARGE, WARNING_STUCK_SHIFT, &
+    & WARNING_BAND_MISSES_MODE
   ! plain arrays (kernel/src/api/legacy/arrays.f90, explicit interfaces only)
   public :: udmap_version_numbers, udmap_table_arrays, udmap_backbone_arrays, &
     & udmap_response_arrays, udmap_curve_arrays

@@ -32,6 +32,7 @@ program tester
   use test_mapping_harmonics_dti, only: collect_mapping_harmonics_dti
   use test_mapping_isola, only: collect_mapping_isola
   use test_mapping_oscillator, only: collect_mapping_oscillator
+  use test_plausibility, only: collect_plausibility
   use test_traveling, only: collect_traveling
   use test_umbrella, only: collect_umbrella
   implicit none
@@ -69,6 +70,7 @@ program tester
     & new_testsuite("mapping_harmonics_dti", collect_mapping_harmonics_dti), &
     & new_testsuite("mapping_isola", collect_mapping_isola), &
     & new_testsuite("mapping_oscillator", collect_mapping_oscillator), &
+    & new_testsuite("plausibility", collect_plausibility), &
     & new_testsuite("traveling", collect_traveling), &
     & new_testsuite("umbrella", collect_umbrella)])
 

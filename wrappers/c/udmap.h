@@ -312,6 +312,34 @@ int udmap_model_curve_size(udmap_error error, udmap_model model, int i, int *npo
 int udmap_model_curve_get(udmap_error error, udmap_model model, int i, int npoints, double *f_hz,
                           double *gamma_P, double *sigma_a, int *branch, int *part);
 
+/* ---------------------------------------------------------------- plausibility warnings */
+
+/* A blade, damper and band inside every range can still be physically implausible, most often
+ * because a value was typed in another unit (docs/case-files.md, "Plausibility"). Each warning
+ * has a kind and a text that names the quantity, says why it looks wrong and suggests the
+ * likely unit error; nothing is refused and the results stay what they are. Kinds: */
+#define UDMAP_WARNING_PLATFORM_MASS 1    /* beam platform heavier than neck and airfoil */
+#define UDMAP_WARNING_PLATFORM_INERTIA 2 /* beam platform J over 1000 m L^2/12 */
+#define UDMAP_WARNING_GAMMA_B_LARGE 3    /* asymmetric damper's gamma_b above 1e-2 rad */
+#define UDMAP_WARNING_STUCK_SHIFT 4      /* stuck damper shifts f1 by < 0.1 % or > 100 % */
+#define UDMAP_WARNING_BAND_MISSES_MODE 5 /* the band misses the bare or the stuck first mode */
+/* A text length that holds every warning's text. */
+#define UDMAP_WARNING_LEN 512
+
+/* The warnings of a blade, a damper (NULL: its check left out) and the band [f_min, f_max]
+ * [Hz], without a model (the band against the bare first mode; no stuck-peak checks). *n: the
+ * number of warnings (all of them); the first nmax are written: kinds[i] and the text at
+ * texts + i * len (NUL-terminated, cut to len - 1 characters). kinds and texts may be NULL
+ * with nmax = 0. */
+int udmap_plausibility_warnings(udmap_error error, udmap_blade blade, udmap_damper damper,
+                                double f_min, double f_max, int nmax, int len, int *kinds,
+                                char *texts, int *n);
+/* The same for a model's blade, damper and band, with the stuck peak: a backbone point at
+ * 1e-3 gamma_s (gamma_b without a stuck range), computed as udmap_model_backbone_curve would
+ * (no stuck peak in the band is a warning, not an error). */
+int udmap_model_warnings(udmap_error error, udmap_model model, int nmax, int len, int *kinds,
+                         char *texts, int *n);
+
 /* ---------------------------------------------------------------- many designs at once */
 
 /* The stages udmap_model_designs computes (bit flags; the outputs a design of experiments

@@ -95,6 +95,9 @@ module udmap_blade_type
     !> (circumferential), v_P = platform_uv(:,2).q (radial; a zero row: held); not allocated
     !> when the blade does not know them (traveling waves are then refused).
     real(wp), allocatable :: platform_uv(:, :)
+    !> The beam's parameters, when the blade is the built-in beam (the plausibility checks read
+    !> its platform and sections); not allocated for imported blades.
+    type(beam_params_type), allocatable :: beam
     !> Damping is the explicit matrix C (else C = beta K).
     logical :: explicit_C = .false.
     !> Modal damping ratio of mode 1 and the stiffness-proportional factor beta = 2 zeta/omega_1.
@@ -177,6 +180,7 @@ contains
     if (allocated(error)) return
     blade%ndof = size(blade%Kb, 2)
     blade%kd = beam_kd
+    allocate(blade%beam, source=params)
     blade%zeta = params%zeta
     blade%has_stress = .true.
     ! w points along -x (PHYSICS.md 2.6): u_P = -w_P; the beam has no radial DOF (v_P held)

@@ -177,6 +177,35 @@ model_curve_size = declare("udmap_model_curve_size", [vp, vp, _ci, c_int_p])
 model_curve_get = declare("udmap_model_curve_get", [vp, vp, _ci, _ci, c_double_p, c_double_p,
                                                     c_double_p, c_int_p, c_int_p])
 model_set_harmonics = declare("udmap_model_set_harmonics", [vp, vp, _ci, _cd])
+# plausibility warnings (docs/case-files.md, "Plausibility"): kinds UDMAP_WARNING_* of udmap.h
+WARNING_KINDS = {1: "platform_mass", 2: "platform_inertia", 3: "gamma_b_large",
+                 4: "stuck_shift", 5: "band_misses_mode"}
+WARNING_LEN = 512
+plausibility_warnings = declare("udmap_plausibility_warnings",
+                                [vp, vp, vp, _cd, _cd, _ci, _ci, c_int_p, ctypes.c_char_p,
+                                 c_int_p])
+model_warnings = declare("udmap_model_warnings",
+                         [vp, vp, _ci, _ci, c_int_p, ctypes.c_char_p, c_int_p])
+
+
+def warnings_of(call, err) -> list[tuple[str, str]]:
+    """(kind, text) of the warnings a C API warnings call returns: ``call(nmax, len, kinds,
+    texts, n)`` with the other arguments bound, checked on the error handle ``err``."""
+    nmax = 8
+    while True:
+        kinds = (ctypes.c_int * nmax)()
+        texts = ctypes.create_string_buffer(nmax * WARNING_LEN)
+        n = ctypes.c_int()
+        err.check(call(nmax, WARNING_LEN, kinds, texts, ctypes.byref(n)))
+        if n.value <= nmax:
+            break
+        nmax = n.value
+    raw = texts.raw
+    return [(WARNING_KINDS[kinds[i]],
+             raw[i * WARNING_LEN:(i + 1) * WARNING_LEN].split(b"\0", 1)[0].decode())
+            for i in range(n.value)]
+
+
 model_admissible_force = declare("udmap_model_admissible_force",
                                  [vp, vp, _cd, _cd, _cd, c_double_p])
 model_classify = declare("udmap_model_classify", [vp, vp, _cd, _ci, c_double_p, c_double_p,

@@ -26,6 +26,22 @@ UNBOUNDED_MESSAGE = ("without structural damping (zeta = 0) friction cannot boun
                      "amplitude is unbounded")
 
 
+#: The kinds of plausibility warning, as :meth:`Model.warnings` and
+#: :func:`plausibility_warnings` name them.
+WARNING_KINDS = tuple(_capi.WARNING_KINDS.values())
+
+
+def plausibility_warnings(blade, f_min: float, f_max: float,
+                          damper=None) -> list[tuple[str, str]]:
+    """The plausibility warnings of a blade, a damper (None: its check left out) and a band
+    [Hz] without a model (the band against the bare first mode; no stuck-peak checks): (kind,
+    text) pairs (docs/case-files.md, "Plausibility")."""
+    err = ErrorHandle()
+    handle = None if damper is None else damper.handle
+    return _capi.warnings_of(lambda *out: _capi.plausibility_warnings(
+        err.ptr, blade.handle, handle, float(f_min), float(f_max), *out), err)
+
+
 def harmonics_code(harmonics) -> int:
     """The kernel code of a harmonics setting: an integer 1..64, or "auto" (0)."""
     if harmonics == "auto":
@@ -168,6 +184,14 @@ class Model:
         self._err.check(_capi.model_limit_force_backbone(self._err.ptr, self._ptr,
                                                          ctypes.byref(value)))
         return value.value
+
+    def warnings(self) -> list[tuple[str, str]]:
+        """The plausibility warnings of the model's blade, damper and band, with the stuck
+        peak (docs/case-files.md, "Plausibility"): (kind, text) pairs, kind one of
+        :data:`WARNING_KINDS`. The stuck peak is a backbone point, computed as
+        :meth:`backbone_curve` would."""
+        return _capi.warnings_of(lambda *out: _capi.model_warnings(self._err.ptr, self._ptr,
+                                                                   *out), self._err)
 
     def backbone_curve(self, gamma) -> tuple[np.ndarray, np.ndarray]:
         """F_bb(gamma) [N] and the peak frequency [Hz] for amplitudes gamma [rad]."""

@@ -98,11 +98,12 @@ def _model(case, blade, damper):
 
 
 def _computed(case, blade, damper, model, compute):
-    """compute(), a failure of which carries the case's plausibility hints."""
+    """compute(), a failure of which carries the case's plausibility hints (the model's, so
+    with the stuck peak: a band that holds the bare mode but not the stuck one says so)."""
     try:
         return compute()
     except UdmapError as exc:
-        raise with_hints(exc, plausibility_warnings(case, blade, damper)) from None
+        raise with_hints(exc, plausibility_warnings(case, blade, damper, model)) from None
 
 
 def _plausible(data: dict, case, blade, damper, model) -> dict:
@@ -150,7 +151,8 @@ def cmd_backbone(args) -> None:
     blade, damper = build_blade(case), build_damper(case)
     model = _model(case, blade, damper)
     points = _computed(case, blade, damper, model, lambda: model.backbone(args.forces))
-    data = _plausible(_wave(_summary(model, blade, damper), case), case, blade, damper, model)
+    summary = _computed(case, blade, damper, model, lambda: _summary(model, blade, damper))
+    data = _plausible(_wave(summary, case), case, blade, damper, model)
     data["points"] = [point_json(p) for p in points]
     _verdicts(data, case)
 
@@ -173,10 +175,12 @@ def cmd_response(args) -> None:
                          f"analysis.f_max] = [{a['f_min']}, {a['f_max']}] Hz of the case")
     blade, damper = build_blade(case), build_damper(case)
     model = _model(case, blade, damper)
-    data = _plausible(_wave(_summary(model, blade, damper), case), case, blade, damper, model)
+    summary = _computed(case, blade, damper, model, lambda: _summary(model, blade, damper))
+    data = _plausible(_wave(summary, case), case, blade, damper, model)
     data["f_exc"] = args.freq
-    data["points"] = [point_json(dict(p, jump=False))
-                      for p in model.response(args.freq, args.forces)]
+    points = _computed(case, blade, damper, model,
+                       lambda: model.response(args.freq, args.forces))
+    data["points"] = [point_json(dict(p, jump=False)) for p in points]
     _verdicts(data, case)
 
     def plot(path):
@@ -195,7 +199,8 @@ def cmd_curves(args) -> None:
     blade, damper = build_blade(case), build_damper(case)
     model = _model(case, blade, damper)
     layers = args.layers or case.analysis["layers"]
-    curves = model.curves(args.forces, layers=layers)
+    curves = _computed(case, blade, damper, model,
+                       lambda: model.curves(args.forces, layers=layers))
     data = _plausible(_wave({}, case), case, model.blade, model.damper, model)
     data["curves"] = [{"F_E": c["F_E"], "f": [float(x) for x in c["f"]],
                         "gamma_P": [float(x) for x in c["gamma_P"]],

@@ -105,6 +105,10 @@ def cmd_doe(args) -> None:
           + (f", {rate:.0f} designs/s, {summary['workers']} {summary['executor']} worker"
              + ("s" if summary["workers"] > 1 else "") if rate else "") + ")")
     print("status: " + ", ".join(f"{k} {v}" for k, v in sorted(summary["status"].items())))
+    if summary["warnings"]:
+        print("plausibility warnings: " + ", ".join(
+            f"{k} {v}" for k, v in summary["warnings"].items()) +
+            f" (of {summary['warnings_designs']} designs; docs/case-files.md, \"Plausibility\")")
     for label, share in summary.get("hcf_share", {}).items():
         print(f"hcf_ok at F_E = {label} N: {100 * share:.1f} % of the designs")
     if summary.get("parquet") and summary["parquet"] != summary["out"]:

@@ -492,6 +492,13 @@ class Output:
             if self.written >= len(self.values) and self.journal_path.exists():
                 self.journal_path.unlink()
 
+    def recorded(self, name: str, default=None):
+        """A field of FILE.meta.json (``default`` when it has none or cannot be read)."""
+        try:
+            return json.loads(self.meta_path.read_text()).get(name, default)
+        except (OSError, ValueError):
+            return default
+
     def record(self, **fields) -> None:
         """Adds fields to FILE.meta.json (after the run: e.g. the traces it made)."""
         try:

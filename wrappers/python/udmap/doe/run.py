@@ -115,6 +115,10 @@ def run_doe(case, vary, samples: int, out, *, method: str = "sobol", forces=None
     ranges = ((s, values[s:e], chunk_refs(s, e)) for s, e in bounds)
     computed = 0
     traces = 0
+    # plausibility warnings per kind, over the designs counted (a resumed run continues the
+    # counts its meta file recorded)
+    warnings = dict(output.recorded("warnings", {}) if resume else {})
+    warned = int(output.recorded("warnings_designs", 0)) if resume else 0
     interrupted = False
     try:
         if todo > 0:
@@ -126,6 +130,9 @@ def run_doe(case, vary, samples: int, out, *, method: str = "sobol", forces=None
                         output.put(start, n, text)
                         computed += n
                         traces += chunk_counts.pop("traces", 0)
+                        for k, v in chunk_counts.pop("warnings", {}).items():
+                            warnings[k] = warnings.get(k, 0) + v
+                        warned += n
                         for k, v in chunk_counts.items():
                             counts[k] = counts.get(k, 0) + v
                         bar.update(n)
@@ -141,7 +148,9 @@ def run_doe(case, vary, samples: int, out, *, method: str = "sobol", forces=None
                "status": io.split_counts(counts)[0], "seconds": seconds,
                "designs_per_second": computed / seconds if seconds > 0 and computed else None,
                "workers": executor.workers, "executor": executor.kind,
-               "startup_seconds": executor.startup_seconds, "interrupted": interrupted}
+               "startup_seconds": executor.startup_seconds, "interrupted": interrupted,
+               "warnings": dict(sorted(warnings.items())), "warnings_designs": warned}
+    output.record(warnings=summary["warnings"], warnings_designs=warned)
     if interrupted:
         return summary
     output.record(traces=traces)

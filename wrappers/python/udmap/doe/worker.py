@@ -12,6 +12,7 @@ from typing import Sequence
 import numpy as np
 
 from ..case import Case, build_blade, build_damper, build_model
+from ..case.plausibility import GAMMA_B_LARGE, GAMMA_B_MAX, blade_checks
 from ..damper import ASYMMETRIC_FIELDS, Damper
 from ..errors import InputError, PhysicsError, UdmapError
 from ..model import (DESIGN_ADMISSIBLE, DESIGN_FAILED_ADMISSIBLE, DESIGN_FAILED_DAMPER,
@@ -82,6 +83,14 @@ class ChunkRows:
         self.flags = {k: np.full((n, nf), -1, dtype=np.int8) for k in ("hcf_ok", "jump")}
         self.status = [STATUS_OK] * n
         self.message = [""] * n
+        #: Plausibility warnings (udmap.case.plausibility) counted per kind over the designs.
+        self.warnings: dict = {}
+
+    def warn(self, kinds, count: int = 1) -> None:
+        """Counts each kind in ``kinds`` ``count`` times."""
+        for kind in kinds:
+            if count:
+                self.warnings[kind] = self.warnings.get(kind, 0) + int(count)
 
 
 class DesignContext:
@@ -153,6 +162,17 @@ class DesignContext:
             return build_blade(case)
         return self._shared("blade", lambda: build_blade(self.case))
 
+    def _blade_warnings(self, case: Case, blade) -> list[str]:
+        """The kinds of the plausibility warnings of a design's blade and band (the platform,
+        the bare first mode in the band): once per run when neither varies. The checks that
+        need the stuck peak (a backbone point per design) are not made in a DOE."""
+        def kinds(c, b):
+            return [k for k, _ in blade_checks(b, c.analysis["f_min"], c.analysis["f_max"])]
+
+        if self.blade_varies or self.band_varies:
+            return kinds(case, blade)
+        return self._shared("blade_warnings", lambda: kinds(self.case, blade))
+
     def _built_damper(self, case: Case):
         if case.damper["kind"] == "asymmetric":
             self.traces += 1
@@ -200,6 +220,7 @@ class DesignContext:
                 for i in range(rows.n):
                     self._fail(rows, i, exc, "")
                 return rows
+            rows.warn(self._blade_warnings(self.case, model.blade), rows.n)
             blocks = self._asym.blocks(values)
             if self.nominal_reference:
                 reference = np.repeat(self._asym.base[None, :], rows.n, axis=0)
@@ -216,6 +237,9 @@ class DesignContext:
         else:
             for i, v in enumerate(values):
                 self._evaluate_one(rows, i, v)
+        if self.case.damper["kind"] == "asymmetric":
+            # every design whose damper was traced has its gamma_b here (NaN otherwise)
+            rows.warn([GAMMA_B_LARGE], np.count_nonzero(rows.num["gamma_b"] > GAMMA_B_MAX))
         return rows
 
     def _evaluate_one(self, rows: ChunkRows, i: int, values) -> None:
@@ -232,7 +256,9 @@ class DesignContext:
             rows.num["gamma_b"][i], rows.num["M_max"][i], rows.num["M_min"][i] = \
                 info.gamma_b, info.M_max, info.M_min
             rows.lift_off[i] = bool(info.lift_off)
-            model = self._model_for(case, self._blade(case), damper)
+            blade = self._blade(case)
+            rows.warn(self._blade_warnings(case, blade))
+            model = self._model_for(case, blade, damper)
         except Exception as exc:  # recorded per design; the run goes on
             self._fail(rows, i, exc, "")
             return
@@ -386,11 +412,12 @@ def run_chunk(spec: dict, start: int, values: Sequence[tuple], refs=None) -> tup
     """Evaluates designs ``start, start + 1, ...`` with the given parameter values (``refs``:
     per design the values of its reference design or None, see :func:`design_references`) and
     returns ``(start, count, csv_text, counts)`` (counts: see :func:`udmap.doe.io.tally`, plus
-    ``traces``, the dampers traced): the chunk's rows already formatted, so that the writer
+    ``traces``, the dampers traced, and ``warnings``, the plausibility warnings per kind): the chunk's rows already formatted, so that the writer
     only appends text and the result is independent of where it was computed."""
     ctx = context_for(spec)
     traces = ctx.traces
     rows = ctx.evaluate_chunk(values, refs)
     text, counts = format_chunk(spec, start, values, rows)
     counts["traces"] = ctx.traces - traces
+    counts["warnings"] = rows.warnings
     return start, rows.n, text, counts
