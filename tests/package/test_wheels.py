@@ -11,7 +11,8 @@
   no gfortran, no LAPACK; debootstrap, cached in UDMAP_WHEEL_ROOT), the Linux wheel installs
   into a venv; `udmap demo`, `udmap backbone cases/blade_a.json --harmonics auto` and `udmap
   fmu` run there, their numbers are bit-identical to the source build's, and the FMU written
-  there has both platforms and passes fmpy's validation.
+  there has both platforms, passes fmpy's validation and gives under Wine the outputs of its
+  Linux binary (the FMUs' Wine test, tests/windows/test_fmu_wine.py, on that FMU).
 
 Environment: UDMAP_DIST (default dist/) holds the wheels; UDMAP_LIBRARY is the source build's
 library; the fresh root needs root privileges (chroot) and the Debian mirror.
@@ -32,7 +33,8 @@ import pytest
 
 ROOT = Path(__file__).resolve().parents[2]
 sys.path.insert(0, str(ROOT / "tests" / "windows"))
-from test_fmu_wine import SYSTEM_DLLS, wine  # noqa: E402  (the FMUs' Wine test: one wine())
+# the FMUs' Wine test: its wine(), and its importer run on both binaries of an FMU
+from test_fmu_wine import SYSTEM_DLLS, run_both, unpacked as unpacked_fmu, wine  # noqa: E402
 DIST = Path(os.environ.get("UDMAP_DIST", ROOT / "dist"))
 FRESH_ROOT = Path(os.environ.get("UDMAP_WHEEL_ROOT", ROOT / "build" / "wheel-root"))
 SYSTEM_SO = ("libc.so", "libm.so", "libpthread.so", "libdl.so", "ld-linux", "linux-vdso")
@@ -225,6 +227,10 @@ def test_linux_wheel_in_a_fresh_root(linux_wheel, tmp_path):
     assert "binaries/linux64/udmap.so" in names and "binaries/win64/udmap.dll" in names
     from fmpy.validation import validate_fmu
     assert validate_fmu(str(w / "blade_a.fmu")) == []
+    # and it runs under Wine as on Linux (the FMUs' Wine test on this FMU, co-simulation)
+    result = run_both(2, unpacked_fmu(2, tmp_path / "fmu", w / "blade_a.fmu"), tmp_path, "cs")
+    print(f"the wheel's FMU under Wine against Linux: {result['steps']} steps, max rel. diff "
+          f"{result['max_relative_difference']:.1e}")
     outside = [ln for ln in (w / "ldd.txt").read_text().splitlines()
                if "udmap.libs" not in ln and not Path(ln.split()[0]).name.startswith(SYSTEM_SO)]
     assert not outside, outside

@@ -72,6 +72,12 @@ def test_fixture_reduces_with_its_repeated_pair(name, cache, capsys):
     top = 3 * case["analysis"]["f_max"]
     np.testing.assert_allclose(ff, full[full <= top], rtol=1e-9)
     np.testing.assert_allclose(fr, ff, rtol=1e-6)
+    # the pair lies in the band: reduce says that the analyses will refuse such a band
+    a = case["analysis"]
+    in_band = [f for f in fr if a["f_min"] <= f <= a["f_max"]]
+    assert len(in_band) == 2
+    assert any("holds 2 modes of the reduced blade" in w and "narrow the band" in w
+               for w in info.get("warnings", [])), info.get("warnings")
     print(f"{name}: full {ff.tolist()} Hz, reduced {fr.tolist()} Hz, "
           f"largest relative difference {np.max(np.abs(fr / ff - 1)):.1e}")
 
