@@ -3,7 +3,8 @@
  * udmap_model_set_damper, _limit_force, _limit_force_backbone, _backbone, _backbone_jumps,
  * _admissible_force) bit for bit; the stages computed only when asked; a design rescaled from
  * a reference tracing (CF times 1.5, contact stiffnesses times 2: PHYSICS.md 2.3) against its
- * own tracing; the traces counted; the statuses of bad calls. */
+ * own tracing; the traces counted; the statuses of bad calls; the plausibility warnings per
+ * design (udmap_model_designs_warnings) against udmap_model_warnings. */
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
@@ -136,6 +137,42 @@ int main(void) {
         "unknown stage refused");
   check(udmap_model_designs(err, model, 1, NULL, ref, NF, F, 31, &out) == UDMAP_EINPUT,
         "reference without params refused");
+
+  /* the plausibility warnings per design (udmap_model_designs_warnings) against
+   * udmap_model_warnings on the model with each design's damper: blade A's own damper, its
+   * stiffnesses in N/mm (x 1e-3: gamma_b large), and a jammed damper (-1) */
+  {
+    int kinds[N], wk[8], nw = 0, bits, k;
+    char texts[8 * UDMAP_WARNING_LEN];
+    p[0] = blade_a_damper_params();
+    p[1] = p[0];
+    p[1].kn_flat *= 1e-3;
+    p[1].kt_flat *= 1e-3;
+    p[1].kn_curved *= 1e-3;
+    p[1].kt_curved *= 1e-3;
+    p[2] = p[0];
+    p[2].mu = 3.0;
+    check(udmap_model_designs_warnings(err, model, N, p, NULL, NF, F, 31, &out, kinds) ==
+              UDMAP_OK, "warnings");
+    check(status[0] == UDMAP_OK && status[1] == UDMAP_OK && status[2] == UDMAP_EPHYSICS,
+          "the designs' stages too");
+    check(kinds[0] == 0, "blade A: no warning");
+    check(kinds[1] & (1 << (UDMAP_WARNING_GAMMA_B_LARGE - 1)), "N/mm: gamma_b large");
+    check(kinds[2] == -1, "the jammed damper: -1");
+    for (i = 0; i < 2; i++) {
+      check(udmap_new_damper_asymmetric(err, &p[i], &own) == UDMAP_OK, "damper");
+      check(udmap_model_set_damper(err, model, own) == UDMAP_OK, "set damper");
+      check(udmap_model_warnings(err, model, 8, UDMAP_WARNING_LEN, wk, texts, &nw) == UDMAP_OK,
+            "model warnings");
+      bits = 0;
+      for (k = 0; k < nw; k++) bits |= 1 << (wk[k] - 1);
+      check(bits == kinds[i], "the same kinds as udmap_model_warnings");
+      check(udmap_model_set_damper(err, model, d) == UDMAP_OK, "back to the jenkins damper");
+      udmap_delete_damper(&own);
+    }
+    check(udmap_model_designs_warnings(err, model, 1, p, NULL, NF, F, 31, &out, NULL) ==
+              UDMAP_EINPUT, "kinds required");
+  }
 
   udmap_delete_model(&model);
   udmap_delete_damper(&d);

@@ -393,6 +393,16 @@ int udmap_model_designs(udmap_error error, udmap_model model, int n,
                         const udmap_asymmetric_params *reference, int nforces,
                         const double *F_E, int stages, udmap_design_outputs *out);
 
+/* udmap_model_designs, and per design the plausibility warnings that udmap_model_warnings
+ * gives on the model coupled to the design's damper, the stuck peak included, taken after its
+ * stages (so those are udmap_model_designs' bit for bit): kinds[i] = the sum of
+ * 1 << (kind - 1) over them (UDMAP_WARNING_*), or -1 where the design's damper fails. */
+int udmap_model_designs_warnings(udmap_error error, udmap_model model, int n,
+                                 const udmap_asymmetric_params *params,
+                                 const udmap_asymmetric_params *reference, int nforces,
+                                 const double *F_E, int stages, udmap_design_outputs *out,
+                                 int *kinds);
+
 /* ---------------------------------------------------------------- standard method, time integration */
 
 /* The standard convergence-based method (PHYSICS.md 6) and the time-domain ground truth

@@ -231,6 +231,9 @@ class DesignOutputs(ctypes.Structure):
 
 model_designs = declare("udmap_model_designs", [vp, vp, _ci, vp, vp, _ci, c_double_p, _ci,
                                                 ctypes.POINTER(DesignOutputs)])
+model_designs_warnings = declare("udmap_model_designs_warnings",
+                                 [vp, vp, _ci, vp, vp, _ci, c_double_p, _ci,
+                                  ctypes.POINTER(DesignOutputs), c_int_p])
 
 # reduction
 reduce = declare("udmap_reduce", [

@@ -359,12 +359,15 @@ class DesignBatch:
         self._struct = s
         self._n = n
 
-    def run(self, model: Model, stages: int, params=None, reference=None) -> dict:
+    def run(self, model: Model, stages: int, params=None, reference=None,
+            warnings: bool = False) -> dict:
         """The designs: ``params`` an (n, 16) array of asymmetric parameter blocks (or None:
         one design with the model's own damper), ``reference`` the same shape or None (each
         design traced for its own block). Returns the output arrays (views valid until the
         next call; missing stages keep stale values, see ``status`` and ``stage``) and
-        ``traces`` (dampers traced by this call)."""
+        ``traces`` (dampers traced by this call). With ``warnings``, also ``warnings``: per
+        design the kinds of its plausibility warnings (:data:`WARNING_KINDS`, the stuck peak
+        included; ``udmap_model_designs_warnings``), None where its damper failed."""
         if params is None:
             n, pp, rp = 1, None, None
         else:
@@ -377,12 +380,22 @@ class DesignBatch:
                 rp = reference.ctypes.data
         if n != self._n:
             self._alloc(n)
-        status = _capi.model_designs(model._err.ptr, model._ptr, n, pp, rp, len(self.forces),
-                                     self._forces_ptr, int(stages), ctypes.byref(self._struct))
+        if warnings:
+            bits = np.zeros(max(n, 1), dtype=np.intc)
+            status = _capi.model_designs_warnings(
+                model._err.ptr, model._ptr, n, pp, rp, len(self.forces), self._forces_ptr,
+                int(stages), ctypes.byref(self._struct), bits.ctypes.data_as(_capi.c_int_p))
+        else:
+            status = _capi.model_designs(model._err.ptr, model._ptr, n, pp, rp, len(self.forces),
+                                         self._forces_ptr, int(stages), ctypes.byref(self._struct))
         if status:
             model._err.check(status)
         result = dict(self.out)
         result["traces"] = self._struct.traces
+        if warnings:
+            result["warnings"] = [None if b < 0 else
+                                  [k for j, k in enumerate(WARNING_KINDS) if b >> j & 1]
+                                  for b in bits[:n]]
         return result
 
     def message(self, i: int) -> str:

@@ -13,7 +13,7 @@
 !> that share a reference share one tracing across calls too.
 module udmap_api_c_designs
   use, intrinsic :: iso_c_binding, only: c_ptr, c_int, c_double, c_char, c_null_char, &
-    & c_associated, c_f_pointer
+    & c_associated, c_f_pointer, c_null_ptr
   use, intrinsic :: iso_fortran_env, only: int64
   use udmap_core_kinds, only: wp
   use udmap_core_error, only: error_type, fatal_error, UDMAP_EINPUT
@@ -24,9 +24,10 @@ module udmap_api_c_designs
   use udmap_mapping_model_data, only: check_forces
   use udmap_mapping_model, only: point_type, set_damper, limit_force, limit_force_backbone, &
     & backbone, admissible_force, is_traveling
+  use udmap_mapping_plausibility, only: warning_type, model_warnings
   implicit none
   private
-  public :: udmap_design_outputs
+  public :: udmap_design_outputs, udmap_model_designs_warnings
 
   !> Stages (bit flags of `stages`): UDMAP_DESIGN_LIMIT, _LIMIT_BACKBONE, _PEAKS, _JUMPS,
   !> _ADMISSIBLE.
@@ -59,6 +60,39 @@ contains
     integer(c_int), value :: n, nforces, stages
     type(udmap_design_outputs), intent(inout) :: out
     integer(c_int) :: stat
+    stat = designs(errh, modelh, n, params, reference, nforces, F_E, stages, out, c_null_ptr)
+  end function udmap_model_designs
+
+  !> int udmap_model_designs_warnings(error, model, n, params, reference, nforces, F_E, stages,
+  !> out, kinds): udmap_model_designs, and per design the plausibility warnings that
+  !> udmap_model_warnings gives on the model coupled to the design's damper, after its stages
+  !> (so that they are those of udmap_model_designs bit for bit), as the bit set kinds[i] = sum
+  !> of 2^(kind - 1) over them; -1 where the design's damper fails.
+  function udmap_model_designs_warnings(errh, modelh, n, params, reference, nforces, F_E, &
+      & stages, out, kinds) result(stat) bind(C, name="udmap_model_designs_warnings")
+    type(c_ptr), value :: errh, modelh, params, reference, F_E, kinds
+    integer(c_int), value :: n, nforces, stages
+    type(udmap_design_outputs), intent(inout) :: out
+    integer(c_int) :: stat
+    type(error_type), allocatable :: error
+    call check_input(c_associated(kinds), "designs: kinds must not be NULL", error)
+    if (allocated(error)) then
+      stat = set_error(errh, error)
+      return
+    end if
+    stat = designs(errh, modelh, n, params, reference, nforces, F_E, stages, out, kinds)
+  end function udmap_model_designs_warnings
+
+  !> Both entries: kinds null or the caller's n ints.
+  integer(c_int) function designs(errh, modelh, n, params, reference, nforces, F_E, stages, &
+      & out, kinds) result(stat)
+    type(c_ptr), value :: errh, modelh, params, reference, F_E, kinds
+    integer(c_int), value :: n, nforces, stages
+    type(udmap_design_outputs), intent(inout) :: out
+    type(warning_type), allocatable :: warnings(:)
+    integer(c_int), pointer :: o_k(:)
+    logical :: coupled
+    integer :: j
     type(error_type), allocatable :: error
     type(c_model_type), pointer :: m
     type(damper_type), pointer :: original
@@ -118,8 +152,19 @@ contains
     out%traces = 0
     if (.not.allocated(m%traced)) allocate(m%traced(n_cache))
     original => m%model%damper
+    o_k => null()
+    if (c_associated(kinds)) call c_f_pointer(kinds, o_k, [n])
     do i = 1, n
+      coupled = .false.
       call one_design(i)
+      if (.not. associated(o_k)) cycle
+      o_k(i) = -1
+      if (.not. coupled) cycle
+      call model_warnings(m%model, warnings)
+      o_k(i) = 0
+      do j = 1, size(warnings)
+        o_k(i) = ior(o_k(i), int(ishft(1, warnings(j)%kind - 1), c_int))
+      end do
     end do
     if (associated(original)) call set_damper(m%model, original, error)
     stat = set_error(errh, error)
@@ -132,36 +177,15 @@ contains
       type(damper_type), pointer :: d
       type(error_type), allocatable :: err
       type(point_type), allocatable :: p(:)
-      real(wp) :: F_lim, F_lbb, kappa, F_adm
-      integer :: slot, j, base
+      real(wp) :: F_lim, F_lbb, F_adm
+      integer :: k, base
       o_st(i) = 0
       if (associated(o_sg)) o_sg(i) = 0
       if (ml > 0) o_msg((i - 1)*ml + 1) = c_null_char
-      if (associated(pp)) then
-        kappa = 1
-        if (associated(rr)) then
-          call stiffness_factor(pp(i), rr(i), i, kappa, err)
-          if (allocated(err)) then
-            call fail(i, err, F_DAMPER)
-            return
-          end if
-          slot = traced_slot(rr(i))
-        else
-          slot = traced_slot(pp(i))
-        end if
-        if (allocated(m%traced(slot)%error)) then
-          err = m%traced(slot)%error
-          call fail(i, err, F_DAMPER)
-          return
-        end if
-        d => m%traced(slot)%damper
-        call d%set_scale(real(pp(i)%CF, wp), kappa, err)
-        if (allocated(err)) then
-          call fail(i, err, F_DAMPER)
-          return
-        end if
-      else
-        d => original
+      call design_damper(m, original, pp, rr, i, d, out%traces, err)
+      if (allocated(err)) then
+        call fail(i, err, F_DAMPER)
+        return
       end if
       if (associated(o_gb)) o_gb(i) = d%gamma_b
       if (associated(o_mx)) o_mx(i) = d%M_max
@@ -172,6 +196,7 @@ contains
         call fail(i, err, F_LIMIT)
         return
       end if
+      coupled = .true.
       F_lim = huge(1.0_wp)
       F_lbb = huge(1.0_wp)
       if (iand(int(stages), S_LIMIT + S_LIMIT_BACKBONE + S_ADMISSIBLE) /= 0) then
@@ -192,13 +217,13 @@ contains
           return
         end if
         base = (i - 1)*nf
-        do j = 1, nf
-          if (associated(o_gp)) o_gp(base + j) = p(j)%gamma_P
-          if (associated(o_fr)) o_fr(base + j) = p(j)%f_res
-          if (associated(o_sa)) o_sa(base + j) = p(j)%sigma_a
-          if (associated(o_ub)) o_ub(base + j) = merge(1_c_int, 0_c_int, p(j)%unbounded)
-          if (associated(o_ok)) o_ok(base + j) = merge(1_c_int, 0_c_int, p(j)%hcf_ok)
-          if (associated(o_jp)) o_jp(base + j) = merge(1_c_int, 0_c_int, p(j)%jump)
+        do k = 1, nf
+          if (associated(o_gp)) o_gp(base + k) = p(k)%gamma_P
+          if (associated(o_fr)) o_fr(base + k) = p(k)%f_res
+          if (associated(o_sa)) o_sa(base + k) = p(k)%sigma_a
+          if (associated(o_ub)) o_ub(base + k) = merge(1_c_int, 0_c_int, p(k)%unbounded)
+          if (associated(o_ok)) o_ok(base + k) = merge(1_c_int, 0_c_int, p(k)%hcf_ok)
+          if (associated(o_jp)) o_jp(base + k) = merge(1_c_int, 0_c_int, p(k)%jump)
         end do
       end if
       if (iand(int(stages), S_ADMISSIBLE) /= 0) then
@@ -233,55 +258,89 @@ contains
       end if
     end subroutine fail
 
-    !> The slot of the traced damper for the block (tracing it now if no slot holds it).
-    integer function traced_slot(block) result(slot)
-      type(udmap_asymmetric_params), intent(in) :: block
-      integer(int64) :: key(16)
-      integer :: k
-      key = transfer(block, key)
-      do k = 1, n_cache
-        if (m%traced(k)%used) then
-          if (all(m%traced(k)%key == key)) then
-            slot = k
-            return
-          end if
-        end if
-      end do
-      slot = m%next_traced
-      m%next_traced = mod(slot, n_cache) + 1
-      associate(t => m%traced(slot))
-        t%used = .true.
-        t%key = key
-        if (allocated(t%error)) deallocate(t%error)
-        call new_asymmetric_damper(t%damper, asymmetric_from_c(block), t%error)
-      end associate
-      out%traces = out%traces + 1
-    end function traced_slot
+  end function designs
 
-    !> kappa = the design's kn_flat over the reference's, checked: every other field but CF
-    !> equal bit for bit, the other three stiffness ratios equal to ratio_tol.
-    subroutine stiffness_factor(a, r, i, kappa, err)
-      type(udmap_asymmetric_params), intent(in) :: a, r
-      integer, intent(in) :: i
-      real(wp), intent(out) :: kappa
-      type(error_type), allocatable, intent(out) :: err
-      integer(int64) :: ka(16), kr(16)
-      real(c_double) :: va(16), vr(16)
-      character(len=16) :: buf
-      ka = transfer(a, ka)
-      kr = transfer(r, kr)
-      va = transfer(a, va)
-      vr = transfer(r, vr)
-      kappa = va(13)/vr(13)
-      if (any(ka(2:12) /= kr(2:12)) .or. &
-        & any(abs(va(14:16)/vr(14:16) - kappa) > ratio_tol*kappa)) then
-        write(buf, '(i0)') i - 1
-        call fatal_error(err, "designs: design "//trim(buf)//" differs from its reference "// &
-          & "block in more than CF and a common factor of kn_flat, kt_flat, kn_curved, "// &
-          & "kt_curved", UDMAP_EINPUT)
+  !> Design i's damper: the model's own (params null()), or the traced damper of its block or
+  !> of its reference block (tracing it now if no slot holds it; traces counts the tracings),
+  !> rescaled to the design's CF and stiffness factor.
+  subroutine design_damper(m, original, pp, rr, i, d, traces, err)
+    type(c_model_type), pointer, intent(in) :: m
+    type(damper_type), pointer, intent(in) :: original
+    type(udmap_asymmetric_params), pointer, intent(in) :: pp(:), rr(:)
+    integer, intent(in) :: i
+    type(damper_type), pointer, intent(out) :: d
+    integer(c_int), intent(inout) :: traces
+    type(error_type), allocatable, intent(out) :: err
+    real(wp) :: kappa
+    integer :: slot
+    d => original
+    if (.not. associated(pp)) return
+    kappa = 1
+    if (associated(rr)) then
+      call stiffness_factor(pp(i), rr(i), i, kappa, err)
+      if (allocated(err)) return
+      slot = traced_slot(m, rr(i), traces)
+    else
+      slot = traced_slot(m, pp(i), traces)
+    end if
+    if (allocated(m%traced(slot)%error)) then
+      err = m%traced(slot)%error
+      return
+    end if
+    d => m%traced(slot)%damper
+    call d%set_scale(real(pp(i)%CF, wp), kappa, err)
+  end subroutine design_damper
+
+  !> The slot of the traced damper for the block (tracing it now if no slot holds it).
+  integer function traced_slot(m, block, traces) result(slot)
+    type(c_model_type), intent(inout) :: m
+    type(udmap_asymmetric_params), intent(in) :: block
+    integer(c_int), intent(inout) :: traces
+    integer(int64) :: key(16)
+    integer :: k
+    key = transfer(block, key)
+    do k = 1, n_cache
+      if (m%traced(k)%used) then
+        if (all(m%traced(k)%key == key)) then
+          slot = k
+          return
+        end if
       end if
-    end subroutine stiffness_factor
-  end function udmap_model_designs
+    end do
+    slot = m%next_traced
+    m%next_traced = mod(slot, n_cache) + 1
+    associate(t => m%traced(slot))
+      t%used = .true.
+      t%key = key
+      if (allocated(t%error)) deallocate(t%error)
+      call new_asymmetric_damper(t%damper, asymmetric_from_c(block), t%error)
+    end associate
+    traces = traces + 1
+  end function traced_slot
+
+  !> kappa = the design's kn_flat over the reference's, checked: every other field but CF
+  !> equal bit for bit, the other three stiffness ratios equal to ratio_tol.
+  subroutine stiffness_factor(a, r, i, kappa, err)
+    type(udmap_asymmetric_params), intent(in) :: a, r
+    integer, intent(in) :: i
+    real(wp), intent(out) :: kappa
+    type(error_type), allocatable, intent(out) :: err
+    integer(int64) :: ka(16), kr(16)
+    real(c_double) :: va(16), vr(16)
+    character(len=16) :: buf
+    ka = transfer(a, ka)
+    kr = transfer(r, kr)
+    va = transfer(a, va)
+    vr = transfer(r, vr)
+    kappa = va(13)/vr(13)
+    if (any(ka(2:12) /= kr(2:12)) .or. &
+      & any(abs(va(14:16)/vr(14:16) - kappa) > ratio_tol*kappa)) then
+      write(buf, '(i0)') i - 1
+      call fatal_error(err, "designs: design "//trim(buf)//" differs from its reference "// &
+        & "block in more than CF and a common factor of kn_flat, kt_flat, kn_curved, "// &
+        & "kt_curved", UDMAP_EINPUT)
+    end if
+  end subroutine stiffness_factor
 
   !> A caller's array of doubles (or null()).
   subroutine real_out(ptr, n, a)

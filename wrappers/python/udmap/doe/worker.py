@@ -12,7 +12,7 @@ from typing import Sequence
 import numpy as np
 
 from ..case import Case, build_blade, build_damper, build_model
-from ..case.plausibility import GAMMA_B_LARGE, GAMMA_B_MAX, blade_checks
+from ..case.plausibility import blade_checks
 from ..damper import ASYMMETRIC_FIELDS, Damper
 from ..errors import InputError, PhysicsError, UdmapError
 from ..model import (DESIGN_ADMISSIBLE, DESIGN_FAILED_ADMISSIBLE, DESIGN_FAILED_DAMPER,
@@ -164,8 +164,8 @@ class DesignContext:
 
     def _blade_warnings(self, case: Case, blade) -> list[str]:
         """The kinds of the plausibility warnings of a design's blade and band (the platform,
-        the bare first mode in the band): once per run when neither varies. The checks that
-        need the stuck peak (a backbone point per design) are not made in a DOE."""
+        the bare first mode in the band): once per run when neither varies. For the designs
+        whose damper fails; the others get every check from the kernel."""
         def kinds(c, b):
             return [k for k, _ in blade_checks(b, c.analysis["f_min"], c.analysis["f_max"])]
 
@@ -220,7 +220,6 @@ class DesignContext:
                 for i in range(rows.n):
                     self._fail(rows, i, exc, "")
                 return rows
-            rows.warn(self._blade_warnings(self.case, model.blade), rows.n)
             blocks = self._asym.blocks(values)
             if self.nominal_reference:
                 reference = np.repeat(self._asym.base[None, :], rows.n, axis=0)
@@ -231,15 +230,20 @@ class DesignContext:
                         reference[i] = self._asym.blocks([r])[0]
             else:
                 reference = None
-            r = self._batch.run(model, self.stages, blocks, reference)
+            # with every plausibility check of each design, the stuck peak included
+            r = self._batch.run(model, self.stages, blocks, reference, warnings=True)
             self.traces += r["traces"]
             self._take(rows, slice(0, rows.n), r, model.has_stress)
+            blade_kinds = None
+            for kinds in r["warnings"]:
+                if kinds is None:  # its damper failed: the checks of the blade and band alone
+                    if blade_kinds is None:
+                        blade_kinds = self._blade_warnings(self.case, model.blade)
+                    kinds = blade_kinds
+                rows.warn(kinds)
         else:
             for i, v in enumerate(values):
                 self._evaluate_one(rows, i, v)
-        if self.case.damper["kind"] == "asymmetric":
-            # every design whose damper was traced has its gamma_b here (NaN otherwise)
-            rows.warn([GAMMA_B_LARGE], np.count_nonzero(rows.num["gamma_b"] > GAMMA_B_MAX))
         return rows
 
     def _evaluate_one(self, rows: ChunkRows, i: int, values) -> None:
@@ -257,13 +261,15 @@ class DesignContext:
                 info.gamma_b, info.M_max, info.M_min
             rows.lift_off[i] = bool(info.lift_off)
             blade = self._blade(case)
-            rows.warn(self._blade_warnings(case, blade))
             model = self._model_for(case, blade, damper)
         except Exception as exc:  # recorded per design; the run goes on
             self._fail(rows, i, exc, "")
             return
         r = self._batch.run(model, self.stages)
         self._take(rows, slice(i, i + 1), r, model.has_stress)
+        # every check of the design, the stuck peak included (after its stages: the check's
+        # backbone point does not touch them)
+        rows.warn(sorted({kind for kind, _ in model.warnings()}))
 
     def _take(self, rows: ChunkRows, at: slice, r: dict, has_stress: bool) -> None:
         """Rows ``at`` from the kernel's arrays ``r``: what each design got before a failure,
