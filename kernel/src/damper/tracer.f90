@@ -23,6 +23,15 @@ module udmap_damper_tracer
     & full_slip_moment, trace_gamma, trace_to_plateau, record_start, reset_record, same_forces, &
     & trace_path, platform_actions
 
+  !> The contact events of a straight segment of trace_path: at the fraction s(j) of the
+  !> segment (0 <= s < 1, ascending) the contact states change from before(:, j) to after(:, j).
+  type, public :: path_events_type
+    integer :: n = 0
+    real(wp), allocatable :: s(:)
+    integer, allocatable :: before(:, :), after(:, :)
+    type(branch_record_type) :: rec
+  end type path_events_type
+
 contains
 
   !> Contact kinematics of the damper `params` (PHYSICS.md 2.1); checks the parameters.
@@ -145,14 +154,16 @@ contains
   !> transition resolved. A straight line in X moves every contact linearly, so the tracer
   !> runs with a geometry whose lever arms are the contacts' travel along the segment and the
   !> load parameter going from 0 to 1; the start of the segment enters as the offsets.
-  subroutine trace_path(geo, state, X_to, error)
+  !> With `events`, the contact events inside the segment are returned too.
+  subroutine trace_path(geo, state, X_to, error, events)
     type(damper_geometry_type), intent(in) :: geo
     type(damper_state_type), intent(inout) :: state
     real(wp), intent(in) :: X_to(6)
     type(error_type), allocatable, intent(out) :: error
+    type(path_events_type), intent(inout), optional :: events
     type(damper_geometry_type) :: seg
     real(wp) :: dX(6), travel, dM
-    integer :: i, k
+    integer :: i, k, j, entry(3)
     if (.not. all(abs(X_to) <= huge(1.0_wp))) then
       call fatal_error(error, "trace_path: the platform coordinates are not finite numbers")
       return
@@ -165,12 +176,36 @@ contains
       seg%ct(i) = dot_product(geo%pt(:,i), dX(k+1:k+3))
     end do
     seg%rate_scale = max(maxval(geo%kn*abs(seg%cn)), maxval(geo%kt*abs(seg%ct)))
+    if (present(events)) events%n = 0
     if (seg%rate_scale > 0) then
       call set_offsets(state%X)
       state%gamma = 0
       state%direction = 1
-      call trace_core(seg, state, 1, 1, 1.0_wp, 0.0_wp, .true., travel, dM, error)
-      if (allocated(error)) return
+      if (present(events)) then
+        ! a vertex ends each step of the tracer, in the states of that step: an event inside
+        ! the segment is a vertex before s = 1, the states after it those of the next vertex
+        call reset_record(events%rec)
+        events%rec%keep_states = .true.
+        entry = state%mode
+        call trace_core(seg, state, 1, 1, 1.0_wp, 0.0_wp, .true., travel, dM, error, &
+          & events%rec)
+        if (allocated(error)) return
+        ! states that change as the segment starts (the other side of an event that ended the
+        ! last segment, or a reversal at the instant itself) are an event at s = 0
+        if (events%rec%n >= 1) then
+          if (any(events%rec%states(1)%mode /= entry)) &
+            & call add_event(0.0_wp, entry, events%rec%states(1)%mode)
+        end if
+        do j = 1, events%rec%n - 1
+          associate (v => events%rec%states(j), w => events%rec%states(j + 1))
+            if (.not. (v%gamma > 0 .and. v%gamma < 1) .or. all(v%mode == w%mode)) cycle
+            call add_event(v%gamma, v%mode, w%mode)
+          end associate
+        end do
+      else
+        call trace_core(seg, state, 1, 1, 1.0_wp, 0.0_wp, .true., travel, dM, error)
+        if (allocated(error)) return
+      end if
     end if
     state%X = X_to
     call set_offsets(X_to)
@@ -185,6 +220,28 @@ contains
         state%off(2,j) = dot_product(geo%pt(:,j), X(m+1:m+3))
       end do
     end subroutine set_offsets
+
+    subroutine add_event(s_e, m_before, m_after)
+      real(wp), intent(in) :: s_e
+      integer, intent(in) :: m_before(3), m_after(3)
+      real(wp), allocatable :: s2(:)
+      integer, allocatable :: b2(:, :), a2(:, :)
+      if (.not. allocated(events%s)) allocate(events%s(4), events%before(3, 4), &
+        & events%after(3, 4))
+      if (events%n == size(events%s)) then
+        allocate(s2(2*events%n), b2(3, 2*events%n), a2(3, 2*events%n))
+        s2(1:events%n) = events%s(1:events%n)
+        b2(:, 1:events%n) = events%before(:, 1:events%n)
+        a2(:, 1:events%n) = events%after(:, 1:events%n)
+        call move_alloc(s2, events%s)
+        call move_alloc(b2, events%before)
+        call move_alloc(a2, events%after)
+      end if
+      events%n = events%n + 1
+      events%s(events%n) = s_e
+      events%before(:, events%n) = m_before
+      events%after(:, events%n) = m_after
+    end subroutine add_event
   end subroutine trace_path
 
   !> The damper's restoring actions on its two platforms (PHYSICS.md 2.6): A(:,k) = (F_x, F_y,

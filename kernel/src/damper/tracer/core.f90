@@ -8,7 +8,7 @@ module udmap_damper_tracer_core
   use udmap_core_error, only: error_type, fatal_error, UDMAP_EPHYSICS, UDMAP_ENUMERIC
   implicit none
   private
-  public :: contact_forces, trace_core, solve3, append_vertex
+  public :: contact_forces, trace_core, solve3, append_vertex, compute_rates, rates_type
 
   !> Contact states.
   integer, parameter, public :: CONTACT_OPEN = 0, CONTACT_STICK = 1, CONTACT_SLIP_POS = 2, &
