@@ -15,7 +15,7 @@ module udmap_damper_tracer
   use udmap_core_error, only: error_type, fatal_error, UDMAP_EPHYSICS
   use udmap_damper_params, only: asymmetric_params_type, check_asymmetric_params
   use udmap_damper_tracer_core, only: damper_geometry_type, damper_state_type, validity_type, &
-    & branch_record_type, &
+    & branch_record_type, mode_log_type, &
     & contact_forces, trace_core, solve3, append_vertex
   implicit none
   private
@@ -29,7 +29,7 @@ module udmap_damper_tracer
     integer :: n = 0
     real(wp), allocatable :: s(:)
     integer, allocatable :: before(:, :), after(:, :)
-    type(branch_record_type) :: rec
+    type(mode_log_type) :: log
   end type path_events_type
 
 contains
@@ -184,24 +184,23 @@ contains
       if (present(events)) then
         ! a vertex ends each step of the tracer, in the states of that step: an event inside
         ! the segment is a vertex before s = 1, the states after it those of the next vertex
-        call reset_record(events%rec)
-        events%rec%keep_states = .true.
+        events%log%n = 0
         entry = state%mode
         call trace_core(seg, state, 1, 1, 1.0_wp, 0.0_wp, .true., travel, dM, error, &
-          & events%rec)
+          & modes=events%log)
         if (allocated(error)) return
-        ! states that change as the segment starts (the other side of an event that ended the
-        ! last segment, or a reversal at the instant itself) are an event at s = 0
-        if (events%rec%n >= 1) then
-          if (any(events%rec%states(1)%mode /= entry)) &
-            & call add_event(0.0_wp, entry, events%rec%states(1)%mode)
-        end if
-        do j = 1, events%rec%n - 1
-          associate (v => events%rec%states(j), w => events%rec%states(j + 1))
-            if (.not. (v%gamma > 0 .and. v%gamma < 1) .or. all(v%mode == w%mode)) cycle
-            call add_event(v%gamma, v%mode, w%mode)
-          end associate
-        end do
+        associate (lg => events%log)
+          ! states that change as the segment starts (the other side of an event that ended
+          ! the last segment, or a reversal at the instant itself) are an event at s = 0
+          if (lg%n >= 1) then
+            if (any(lg%mode(:, 1) /= entry)) call add_event(0.0_wp, entry, lg%mode(:, 1))
+          end if
+          do j = 1, lg%n - 1
+            if (.not. (lg%s(j) > 0 .and. lg%s(j) < 1) .or. all(lg%mode(:, j) == lg%mode(:, j+1))) &
+              & cycle
+            call add_event(lg%s(j), lg%mode(:, j), lg%mode(:, j+1))
+          end do
+        end associate
       else
         call trace_core(seg, state, 1, 1, 1.0_wp, 0.0_wp, .true., travel, dM, error)
         if (allocated(error)) return

@@ -8,7 +8,8 @@ module udmap_damper_tracer_core
   use udmap_core_error, only: error_type, fatal_error, UDMAP_EPHYSICS, UDMAP_ENUMERIC
   implicit none
   private
-  public :: contact_forces, trace_core, solve3, append_vertex, compute_rates, rates_type
+  public :: contact_forces, trace_core, solve3, append_vertex, compute_rates, rates_type, &
+    & mode_log_type
 
   !> Contact states.
   integer, parameter, public :: CONTACT_OPEN = 0, CONTACT_STICK = 1, CONTACT_SLIP_POS = 2, &
@@ -90,6 +91,14 @@ module udmap_damper_tracer_core
     logical :: slipped = .false., opened = .false.
   end type branch_record_type
 
+  !> The contact states of each step of a trace and the value of gamma where the step ended
+  !> (trace_path's events; cheaper than a branch record with states).
+  type :: mode_log_type
+    integer :: n = 0
+    real(wp), allocatable :: s(:)
+    integer, allocatable :: mode(:, :)
+  end type mode_log_type
+
   !> Rates per unit travel of a set of contact states.
   type :: rates_type
     real(wp) :: dq(3) = 0, dg(3) = 0, ds(3) = 0, dN(3) = 0, dT(3) = 0, dw(3) = 0, dM = 0
@@ -138,7 +147,7 @@ contains
   !> at `target`, otherwise after the last event (travel = distance to it, dM = moment rate of
   !> the final states per unit travel).
   subroutine trace_core(geo, st, var, dir, target, target_p, has_target, travel, dM, error, &
-      & rec, val, frozen, max_travel)
+      & rec, val, frozen, max_travel, modes)
     type(damper_geometry_type), intent(in) :: geo
     type(damper_state_type), intent(inout) :: st
     integer, intent(in) :: var, dir
@@ -150,6 +159,7 @@ contains
     type(validity_type), intent(inout), optional :: val
     logical, intent(out), optional :: frozen
     real(wp), intent(in), optional :: max_travel
+    type(mode_log_type), intent(inout), optional :: modes
     type(rates_type) :: rt
     integer :: pred(3), nev, i, nc, ic, best, ev_contact(10), ev_state(10)
     real(wp) :: dgam, dcf, tc(10), tcp(10), rate_of(10), g(3), s(3), N(3), T(3), gp(3), sp(3), Np(3), Tp(3)
@@ -275,6 +285,7 @@ contains
         end if
         call append_vertex(geo, st, rt%dM*dir, rec)
       end if
+      if (present(modes)) call log_step(modes, st%gamma, st%mode)
       if (ev_contact(best) == 0) then
         if (var == 1) st%direction = dir
         return
@@ -591,6 +602,25 @@ contains
       rec%states(rec%n) = st
     end if
   end subroutine append_vertex
+
+  pure subroutine log_step(log, s, mode)
+    type(mode_log_type), intent(inout) :: log
+    real(wp), intent(in) :: s
+    integer, intent(in) :: mode(3)
+    real(wp), allocatable :: s2(:)
+    integer, allocatable :: m2(:, :)
+    if (.not. allocated(log%s)) allocate(log%s(8), log%mode(3, 8))
+    if (log%n == size(log%s)) then
+      allocate(s2(2*log%n), m2(3, 2*log%n))
+      s2(1:log%n) = log%s(1:log%n)
+      m2(:, 1:log%n) = log%mode(:, 1:log%n)
+      call move_alloc(s2, log%s)
+      call move_alloc(m2, log%mode)
+    end if
+    log%n = log%n + 1
+    log%s(log%n) = s
+    log%mode(:, log%n) = mode
+  end subroutine log_step
 
   pure subroutine grow_states(rec)
     type(branch_record_type), intent(inout) :: rec
