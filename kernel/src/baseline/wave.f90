@@ -19,7 +19,8 @@ module udmap_baseline_wave
     & platform_unknowns_type, platform_count, platform_scales, platform_pack, platform_unpack, &
     & platform_balance
   use udmap_damper_tracer_core, only: damper_geometry_type
-  use udmap_contact_element_wave, only: wave_aft, wave_settings_type, wave_static_action
+  use udmap_contact_element_wave, only: wave_aft, wave_settings_type, wave_static_action, &
+    & wave_samples
   implicit none
   private
   public :: wave_hbm_type, wave_hbm_point_type, new_wave_hbm, wave_hbm_peak
@@ -71,7 +72,7 @@ contains
     s%CF = CF
     s%phi = phi
     s%H = H
-    s%settings%samples = max(128, 8*H)
+    s%settings%samples = wave_samples(H)
     s%u = platform_unknowns_type(H=H, v_free=any(blade%platform_uv(:, 2) /= 0), &
       & gamma1_fixed=.false., lever=max(maxval(abs(geo%cn)), maxval(abs(geo%ct)), tiny(1.0_wp)))
     call wave_static_action(geo, CF, s%A_ref, error)

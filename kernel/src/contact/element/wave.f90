@@ -30,7 +30,7 @@ module udmap_contact_element_wave
     & path_events_type
   implicit none
   private
-  public :: wave_aft, wave_settings_type, wave_result_type, wave_static_action
+  public :: wave_aft, wave_settings_type, wave_result_type, wave_static_action, wave_samples
 
   !> How the trace is run.
   type :: wave_settings_type
@@ -54,6 +54,14 @@ module udmap_contact_element_wave
   end type wave_result_type
 
 contains
+
+  !> Instants per period for harmonics 1..H: 64, or 8 H beyond H = 8. With the kink
+  !> correction, 64 instants put k within 4e-5 of the smooth path's (blade A's damper, in
+  !> phase, gamma 6e-4 to 4e-3 rad; 128: within 7e-6), at half the cost of 128.
+  pure integer function wave_samples(H)
+    integer, intent(in) :: H
+    wave_samples = max(64, 8*H)
+  end function wave_samples
 
   !> The static action on blade 0 of the damper loaded by CF with both platforms at rest.
   subroutine wave_static_action(geo, CF, A_ref, error)

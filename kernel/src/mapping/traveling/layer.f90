@@ -23,7 +23,7 @@ module udmap_mapping_traveling_layer
     & platform_unpack, platform_balance
   use udmap_damper_tracer_core, only: damper_geometry_type
   use udmap_contact_element_wave, only: wave_aft, wave_settings_type, wave_result_type, &
-    & wave_static_action
+    & wave_static_action, wave_samples
   implicit none
   private
   public :: traveling_type, wave_layer_type, new_traveling, wave_layer_solve, wave_peak, &
@@ -96,7 +96,7 @@ contains
     tw%H = H
     tw%omega_lo = omega_lo
     tw%omega_hi = omega_hi
-    tw%settings%samples = max(128, 8*H)
+    tw%settings%samples = wave_samples(H)
     if (.not. allocated(blade%platform_uv)) then
       call fatal_error(error, "traveling wave (phi /= 0): the blade's platform translations "// &
         & "are unknown: give blade.u_dof (matrices) or blade.platform.tangent (fe)", UDMAP_EINPUT)
