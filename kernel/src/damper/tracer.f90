@@ -12,23 +12,25 @@
 !> in p; `validity_type` collects the exact range of p over which the event sequence holds.
 module udmap_damper_tracer
   use udmap_core_kinds, only: wp
+  use udmap_core_arrays, only: put
   use udmap_core_error, only: error_type, fatal_error, UDMAP_EPHYSICS
   use udmap_damper_params, only: asymmetric_params_type, check_asymmetric_params
   use udmap_damper_tracer_core, only: damper_geometry_type, damper_state_type, validity_type, &
-    & branch_record_type, mode_log_type, &
+    & branch_record_type, mode_log_type, mode_code, &
     & contact_forces, trace_core, solve3, append_vertex
   implicit none
   private
   public :: new_damper_geometry, virgin_state, ramp_CF, advance, restoring_moment, &
     & full_slip_moment, trace_gamma, trace_to_plateau, record_start, reset_record, same_forces, &
-    & trace_path, platform_actions
+    & trace_path, platform_actions, along
 
   !> The contact events of a straight segment of trace_path: at the fraction s(j) of the
-  !> segment (0 <= s < 1, ascending) the contact states change from before(:, j) to after(:, j).
+  !> segment (0 <= s < 1, ascending) the contact states change from before(j) to after(j)
+  !> (as mode_code gives them).
   type, public :: path_events_type
     integer :: n = 0
     real(wp), allocatable :: s(:)
-    integer, allocatable :: before(:, :), after(:, :)
+    integer, allocatable :: before(:), after(:)
     type(mode_log_type) :: log
   end type path_events_type
 
@@ -163,18 +165,13 @@ contains
     type(path_events_type), intent(inout), optional :: events
     type(damper_geometry_type) :: seg
     real(wp) :: dX(6), travel, dM
-    integer :: i, k, j, entry(3)
+    integer :: j, entry
     if (.not. all(abs(X_to) <= huge(1.0_wp))) then
       call fatal_error(error, "trace_path: the platform coordinates are not finite numbers")
       return
     end if
     dX = X_to - state%X
-    seg = geo
-    do i = 1, 3
-      k = 3*(geo%side(i) - 1)
-      seg%cn(i) = dot_product(geo%pn(:,i), dX(k+1:k+3))
-      seg%ct(i) = dot_product(geo%pt(:,i), dX(k+1:k+3))
-    end do
+    seg = along(geo, dX)
     seg%rate_scale = max(maxval(geo%kn*abs(seg%cn)), maxval(geo%kt*abs(seg%ct)))
     if (present(events)) events%n = 0
     if (seg%rate_scale > 0) then
@@ -185,7 +182,7 @@ contains
         ! a vertex ends each step of the tracer, in the states of that step: an event inside
         ! the segment is a vertex before s = 1, the states after it those of the next vertex
         events%log%n = 0
-        entry = state%mode
+        entry = mode_code(state%mode)
         call trace_core(seg, state, 1, 1, 1.0_wp, 0.0_wp, .true., travel, dM, error, &
           & modes=events%log)
         if (allocated(error)) return
@@ -193,12 +190,11 @@ contains
           ! states that change as the segment starts (the other side of an event that ended
           ! the last segment, or a reversal at the instant itself) are an event at s = 0
           if (lg%n >= 1) then
-            if (any(lg%mode(:, 1) /= entry)) call add_event(0.0_wp, entry, lg%mode(:, 1))
+            if (lg%code(1) /= entry) call add_event(0.0_wp, entry, lg%code(1))
           end if
           do j = 1, lg%n - 1
-            if (.not. (lg%s(j) > 0 .and. lg%s(j) < 1) .or. all(lg%mode(:, j) == lg%mode(:, j+1))) &
-              & cycle
-            call add_event(lg%s(j), lg%mode(:, j), lg%mode(:, j+1))
+            if (lg%s(j) > 0 .and. lg%s(j) < 1 .and. lg%code(j) /= lg%code(j+1)) &
+              & call add_event(lg%s(j), lg%code(j), lg%code(j+1))
           end do
         end associate
       else
@@ -220,28 +216,30 @@ contains
       end do
     end subroutine set_offsets
 
-    subroutine add_event(s_e, m_before, m_after)
+    subroutine add_event(s_e, code_before, code_after)
       real(wp), intent(in) :: s_e
-      integer, intent(in) :: m_before(3), m_after(3)
-      real(wp), allocatable :: s2(:)
-      integer, allocatable :: b2(:, :), a2(:, :)
-      if (.not. allocated(events%s)) allocate(events%s(4), events%before(3, 4), &
-        & events%after(3, 4))
-      if (events%n == size(events%s)) then
-        allocate(s2(2*events%n), b2(3, 2*events%n), a2(3, 2*events%n))
-        s2(1:events%n) = events%s(1:events%n)
-        b2(:, 1:events%n) = events%before(:, 1:events%n)
-        a2(:, 1:events%n) = events%after(:, 1:events%n)
-        call move_alloc(s2, events%s)
-        call move_alloc(b2, events%before)
-        call move_alloc(a2, events%after)
-      end if
+      integer, intent(in) :: code_before, code_after
       events%n = events%n + 1
-      events%s(events%n) = s_e
-      events%before(:, events%n) = m_before
-      events%after(:, events%n) = m_after
+      call put(events%s, events%n, s_e)
+      call put(events%before, events%n, code_before)
+      call put(events%after, events%n, code_after)
     end subroutine add_event
   end subroutine trace_path
+
+  !> The geometry whose lever arms are the contacts' travel for the motion dX of both
+  !> platforms' coordinates (a segment of trace_path, or a velocity: the rates per unit time).
+  pure function along(geo, dX) result(seg)
+    type(damper_geometry_type), intent(in) :: geo
+    real(wp), intent(in) :: dX(6)
+    type(damper_geometry_type) :: seg
+    integer :: i, k
+    seg = geo
+    do i = 1, 3
+      k = 3*(geo%side(i) - 1)
+      seg%cn(i) = dot_product(geo%pn(:,i), dX(k+1:k+3))
+      seg%ct(i) = dot_product(geo%pt(:,i), dX(k+1:k+3))
+    end do
+  end function along
 
   !> The damper's restoring actions on its two platforms (PHYSICS.md 2.6): A(:,k) = (F_x, F_y,
   !> moment about P) of the contact forces on the damper from side k's contacts; the

@@ -25,9 +25,9 @@ module udmap_contact_element_wave
   use udmap_core_kinds, only: wp, pi
   use udmap_core_error, only: error_type, fatal_error, UDMAP_EINPUT
   use udmap_damper_tracer_core, only: damper_geometry_type, damper_state_type, CONTACT_OPEN, &
-    & CONTACT_SLIP_POS, CONTACT_SLIP_NEG, compute_rates, rates_type
+    & CONTACT_SLIP_POS, CONTACT_SLIP_NEG, compute_rates, rates_type, code_modes
   use udmap_damper_tracer, only: virgin_state, ramp_CF, trace_path, platform_actions, same_forces, &
-    & path_events_type
+    & path_events_type, along
   implicit none
   private
   public :: wave_aft, wave_settings_type, wave_result_type, wave_static_action, wave_samples
@@ -141,7 +141,8 @@ contains
         call trace_path(geo, st, X(:, mod(j, ns)), error, ev)
         if (allocated(error)) return
         do k = 1, ev%n
-          call correct_kink((j - 1 + ev%s(k))*2*pi/ns, ev%s(k), ev%before(:, k), ev%after(:, k))
+          call correct_kink((j - 1 + ev%s(k))*2*pi/ns, ev%s(k), code_modes(ev%before(k)), &
+            & code_modes(ev%after(k)))
         end do
         Ak = platform_actions(geo, st)
         ! trapezoid on the samples: the work of the actions on their platforms
@@ -195,15 +196,10 @@ contains
       type(rates_type) :: r0, r1
       real(wp) :: V(6), dA(3, 2), c
       logical :: ok0, ok1
-      integer :: i, kk, m
+      integer :: i, kk
       V(1:3) = motion_rate(t_e)
       V(4:6) = motion_rate(t_e + phi)
-      arc = geo
-      do i = 1, 3
-        m = 3*(geo%side(i) - 1)
-        arc%cn(i) = dot_product(geo%pn(:, i), V(m+1:m+3))
-        arc%ct(i) = dot_product(geo%pt(:, i), V(m+1:m+3))
-      end do
+      arc = along(geo, V)
       call compute_rates(arc, m_before, 1.0_wp, 0.0_wp, r0, ok0)
       call compute_rates(arc, m_after, 1.0_wp, 0.0_wp, r1, ok1)
       if (.not. (ok0 .and. ok1)) return

@@ -9,7 +9,7 @@ module udmap_damper_tracer_core
   implicit none
   private
   public :: contact_forces, trace_core, solve3, append_vertex, compute_rates, rates_type, &
-    & mode_log_type
+    & mode_log_type, mode_code, code_modes
 
   !> Contact states.
   integer, parameter, public :: CONTACT_OPEN = 0, CONTACT_STICK = 1, CONTACT_SLIP_POS = 2, &
@@ -91,12 +91,12 @@ module udmap_damper_tracer_core
     logical :: slipped = .false., opened = .false.
   end type branch_record_type
 
-  !> The contact states of each step of a trace and the value of gamma where the step ended
-  !> (trace_path's events; cheaper than a branch record with states).
+  !> The contact states of each step of a trace (mode_code) and the value of gamma where the
+  !> step ended (trace_path's events; cheaper than a branch record with states).
   type :: mode_log_type
     integer :: n = 0
     real(wp), allocatable :: s(:)
-    integer, allocatable :: mode(:, :)
+    integer, allocatable :: code(:)
   end type mode_log_type
 
   !> Rates per unit travel of a set of contact states.
@@ -285,7 +285,11 @@ contains
         end if
         call append_vertex(geo, st, rt%dM*dir, rec)
       end if
-      if (present(modes)) call log_step(modes, st%gamma, st%mode)
+      if (present(modes)) then
+        modes%n = modes%n + 1
+        call put(modes%s, modes%n, st%gamma)
+        call put(modes%code, modes%n, mode_code(st%mode))
+      end if
       if (ev_contact(best) == 0) then
         if (var == 1) st%direction = dir
         return
@@ -603,24 +607,17 @@ contains
     end if
   end subroutine append_vertex
 
-  pure subroutine log_step(log, s, mode)
-    type(mode_log_type), intent(inout) :: log
-    real(wp), intent(in) :: s
+  !> The three contacts' states as one integer (base 4), and back.
+  pure integer function mode_code(mode)
     integer, intent(in) :: mode(3)
-    real(wp), allocatable :: s2(:)
-    integer, allocatable :: m2(:, :)
-    if (.not. allocated(log%s)) allocate(log%s(8), log%mode(3, 8))
-    if (log%n == size(log%s)) then
-      allocate(s2(2*log%n), m2(3, 2*log%n))
-      s2(1:log%n) = log%s(1:log%n)
-      m2(:, 1:log%n) = log%mode(:, 1:log%n)
-      call move_alloc(s2, log%s)
-      call move_alloc(m2, log%mode)
-    end if
-    log%n = log%n + 1
-    log%s(log%n) = s
-    log%mode(:, log%n) = mode
-  end subroutine log_step
+    mode_code = mode(1) + 4*mode(2) + 16*mode(3)
+  end function mode_code
+
+  pure function code_modes(code) result(mode)
+    integer, intent(in) :: code
+    integer :: mode(3)
+    mode = [modulo(code, 4), modulo(code/4, 4), code/16]
+  end function code_modes
 
   pure subroutine grow_states(rec)
     type(branch_record_type), intent(inout) :: rec
