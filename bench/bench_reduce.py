@@ -16,8 +16,13 @@ Method `reduce`: the reduction alone; `reduce_full_check`: with the full model's
 eigenfrequencies in [0, 3 f_max] (a second sparse eigen-solve, for the check), whose largest
 relative difference to the reduced ones is error_f_res; run up to UDMAP_BENCH_REDUCE_CHECK_MAX
 DOFs (default 2e4, as it costs three more factorisations). Targets: 10^5 DOFs under 60 s and
-4 GB, 10^6 under 15 min and 20 GB. UDMAP_BENCH_REDUCE_SIZES (e.g. "1e4,1e5,1e6") overrides
-the sizes.
+4 GB, 10^6 under 15 min and 20 GB. UDMAP_BENCH_REDUCE_SIZES (e.g. "1e4,1e5:C3D20R,1e6")
+overrides the sizes, each with its element (default C3D8).
+
+Elements: C3D8, the generator's own assembly, at 10^4, 10^5 and 10^6 DOFs; and C3D20R at about
+10^5 (123 294 DOFs), the usual CalculiX element for blades, whose consistent mass is only
+positive semi-definite: the quadratic mesh of the same blade, assembled by ccx (SOLVER =
+MATRIXSTORAGE, in the generation time) and read by the calculix reader.
 
 BLAS: MUMPS spends nearly all its time in BLAS dgemm/dtrsm, which Debian's reference BLAS runs
 at about 1.7 Gflop/s. The reduction child runs on Debian's OpenBLAS (libopenblas0-pthread,
@@ -48,6 +53,9 @@ OPENBLAS_DEB = "libopenblas0-pthread"
 MEM_1E6_GB = 18.0
 F_MAX = 230.0
 TARGETS = {100_000: (60.0, 4.0), 1_000_000: (900.0, 20.0)}
+#: The quadratic mesh has about 3.7 times the DOFs of the linear one it is made from (the
+#: midside nodes): 10^5 gives a C3D20R blade of 123 294 DOFs.
+HEX20_DOFS_PER_CORNER_DOF = 3.3
 
 
 def build_dir() -> Path:
@@ -130,22 +138,41 @@ def child(directory: Path, check: bool) -> None:
                       "freqs_reduced": red.freqs_reduced.tolist(), "info": info}))
 
 
-def measure(n_dofs: int, tmp: Path) -> list[dict]:
-    from udmap.fe.generator import generate_blade
+def generate(n_dofs: int, element: str, tmp: Path):
+    """The generated blade of about ``n_dofs`` DOFs and its model: C3D8 assembled by the
+    generator, or C3D20R (quadratic bricks with reduced integration: a positive semi-definite
+    consistent mass) assembled by CalculiX itself (*FREQUENCY, SOLVER=MATRIXSTORAGE) and read
+    back with the calculix reader. Returns (blade, model, platform nodes)."""
+    from udmap.fe import read_fe
+    from udmap.fe.generator import generate_blade, hex20_mesh, write_hex20_deck
+    if element == "C3D8":
+        b = generate_blade(n_dofs)
+        return b, b.fe, b.platform_nodes
+    b = generate_blade(int(n_dofs / HEX20_DOFS_PER_CORNER_DOF))
+    mesh = hex20_mesh(b)
+    write_hex20_deck(b, mesh, tmp / "export.inp", element=element)
+    subprocess.run(["ccx", "-i", "export"], cwd=tmp, check=True, capture_output=True)
+    fe = read_fe({"format": "calculix", "files": {k: f"export.{k}" for k in
+                                                  ("sti", "mas", "dof", "inp")}}, tmp)
+    for f in tmp.glob("export.*"):
+        f.unlink()
+    return b, fe, mesh.platform_nodes
+
+
+def measure(n_dofs: int, tmp: Path, element: str = "C3D8") -> list[dict]:
     t0 = time.perf_counter()
-    b = generate_blade(n_dofs)
+    b, fe, platform = generate(n_dofs, element, tmp)
     t_gen = time.perf_counter() - t0
-    fe = b.fe
     sp.save_npz(tmp / "K.npz", fe.K, compressed=False)
     sp.save_npz(tmp / "M.npz", fe.M, compressed=False)
     np.savez(tmp / "model.npz", dof_node=fe.dof_node, dof_comp=fe.dof_comp, node_ids=fe.node_ids,
-             node_xyz=fe.node_xyz, platform=b.platform_nodes, ref_point=b.ref_point,
+             node_xyz=fe.node_xyz, platform=platform, ref_point=b.ref_point,
              axis=b.axis, exc_node=b.exc_node, exc_direction=b.exc_direction,
-             gauge_row=b.gauge_row())
+             gauge_row=b.gauge_row(fe))
     ndof = fe.K.shape[0]
     nnz = fe.K.nnz
     del b, fe
-    label = f"1e{int(round(np.log10(n_dofs)))}"
+    label = f"1e{int(round(np.log10(n_dofs)))}" + ("" if element == "C3D8" else f"_{element}")
     records = []
     # the full check (a second sparse eigen-solve) up to UDMAP_BENCH_REDUCE_CHECK_MAX DOFs
     check_max = float(os.environ.get("UDMAP_BENCH_REDUCE_CHECK_MAX", "2e4"))
@@ -161,7 +188,7 @@ def measure(n_dofs: int, tmp: Path) -> list[dict]:
         method = "reduce_full_check" if check else "reduce"
         target = TARGETS.get(n_dofs)
         rec = {"case": f"generated_blade_{label}", "method": method,
-               "setting": f"{ndof} DOFs, f_max {F_MAX:g} Hz",
+               "setting": f"{ndof} DOFs, {element}, f_max {F_MAX:g} Hz", "element": element,
                "seconds_median": out["seconds"], "seconds_min": out["seconds"],
                "seconds_max": out["seconds"], "repeats": 1, "error_gamma_P": None,
                "error_sigma_a": None, "error_f_res": out["error_f_res"], "dofs": ndof,
@@ -180,7 +207,7 @@ def measure(n_dofs: int, tmp: Path) -> list[dict]:
         if target:
             rec["target_seconds"], rec["target_gb"] = target
             rec["meets_target"] = (out["seconds"] < target[0] and out["peak_rss_gb"] < target[1])
-        print(f"  reduce {ndof:>8d} DOFs{' + full check' if check else '':>13}: "
+        print(f"  reduce {ndof:>8d} DOFs {element:6s}{' + full check' if check else '':>13}: "
               f"{out['seconds']:8.2f} s (cpu {out['cpu_seconds']:.2f} s), peak {out['peak_rss_gb']:6.2f} GB, r = {rec['r']}, "
               f"freq error {out['error_f_res']}, BLAS {out['blas']}", flush=True)
         records.append(rec)
@@ -208,8 +235,9 @@ def main() -> int:
         child(Path(args.child), args.check)
         return 0
     sizes = os.environ.get("UDMAP_BENCH_REDUCE_SIZES")
-    if sizes:
-        ns = [int(float(s)) for s in sizes.split(",")]
+    if sizes:   # "1e4,1e5:C3D20R": sizes, each with its element (default C3D8)
+        runs = [(int(float(s.split(":")[0])), (s.split(":") + ["C3D8"])[1].upper())
+                for s in sizes.split(",")]
     else:
         ns = [10_000, 100_000]
         switch = os.environ.get("UDMAP_BENCH_1E6")
@@ -219,10 +247,12 @@ def main() -> int:
         elif switch != "0":
             print(f"  bench_reduce: 10^6 DOFs left out: {avail:.1f} GB of memory available, it "
                   f"needs {MEM_1E6_GB:g} GB (UDMAP_BENCH_1E6=1 runs it regardless)", flush=True)
+        runs = [(n, "C3D8") for n in ns]
+        runs.insert(2, (100_000, "C3D20R"))
     records = []
-    for n in ns:
+    for n, element in runs:
         with tempfile.TemporaryDirectory() as tmp:
-            records += measure(n, Path(tmp))
+            records += measure(n, Path(tmp), element)
     if args.json:
         Path(args.json).write_text(json.dumps(records, indent=1) + "\n")
     return 0

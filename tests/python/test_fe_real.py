@@ -223,3 +223,40 @@ def test_nastran_cp_positions_against_nastran_oload():
     assert printed[0] == -2.647650 and printed[4] == 8.367467e-02
     got = np.concatenate([force, moment])
     assert np.all(np.abs(got - printed) <= 5e-7 * np.abs(printed) + 1e-12), (got, printed)
+
+
+def test_nastran_include_files(tmp_path):
+    # sbuckl2a with its bulk data moved into INCLUDE files, as Nastran reads them: the first
+    # half in a gzipped file of a subfolder whose quoted name goes on over two lines, the rest
+    # in a second file; the positions and frames are the same as from the one file.
+    lines = (REAL / "nastran" / "sbuckl2a.bdf").read_text().split("\n")
+    begin = next(k for k, s in enumerate(lines) if s.upper().startswith("BEGIN BULK"))
+    bulk = lines[begin + 1:]
+    cut = next(k for k in range(len(bulk) // 2, len(bulk)) if bulk[k][:1].isalpha())
+    geo, rest = bulk[:cut], bulk[cut:]     # each file ends after a whole card
+    (tmp_path / "mesh").mkdir()
+    with gzip.open(tmp_path / "mesh" / "geometry.bdf", "wt") as f:
+        f.write("\n".join(geo) + "\n")
+    (tmp_path / "mesh" / "rest.bdf").write_text("\n".join(rest) + "\n")
+    main_deck = lines[:begin + 1] + ["INCLUDE 'mesh/", "  geometry.bdf' $ the grids",
+                                     "include 'mesh/rest.bdf'"]
+    (tmp_path / "model.bdf").write_text("\n".join(main_deck) + "\n")
+    got = read_grids(tmp_path / "model.bdf")
+    ref = read_grids(REAL / "nastran" / "sbuckl2a.bdf")
+    assert np.array_equal(got[0], ref[0]) and np.array_equal(got[1], ref[1])
+    assert sorted(got[2]) == sorted(ref[2])
+    assert all(np.array_equal(got[2][k], ref[2][k]) for k in ref[2])
+    # a card's place is its own file and line
+    files = {"geometry.bdf": geo, "rest.bdf": rest}
+    places = [(name, at.rsplit(":", 1)) for name, _, at in cards(tmp_path / "model.bdf", "bdf")]
+    assert {Path(f).name for _, (f, _) in places} == set(files)
+    assert all(files[Path(f).name][int(n) - 1].upper().startswith(name) for name, (f, n) in places)
+    # a missing file and a loop name the file and line of the INCLUDE
+    (tmp_path / "mesh" / "rest.bdf").write_text("INCLUDE '../model.bdf'\n")
+    with pytest.raises(InputError, match=r"bdf: .*rest\.bdf:1: INCLUDE \.\./model\.bdf "
+                                         r"includes itself"):
+        read_grids(tmp_path / "model.bdf", "bdf")
+    (tmp_path / "mesh" / "rest.bdf").unlink()
+    with pytest.raises(InputError, match=r"bdf: .*model\.bdf:\d+: INCLUDE file mesh/rest\.bdf "
+                                         r"not found"):
+        read_grids(tmp_path / "model.bdf", "bdf")

@@ -9,10 +9,7 @@ from pathlib import Path
 import numpy as np
 
 from ..errors import InputError
-from ._text import text_lines
-
-#: Deepest nesting of *INCLUDE files (deeper is taken for a loop).
-MAX_INCLUDE_DEPTH = 16
+from ._text import include_target, text_lines
 
 
 def keyword(line: str):
@@ -41,18 +38,8 @@ def deck_lines(path, field: str):
             if s.startswith("*"):
                 key, opts = keyword(s)
                 if key == "INCLUDE":
-                    name = opts.get("INPUT", "")
-                    if not name:
-                        raise InputError(f"{field}: {p}:{lineno}: *INCLUDE without INPUT=file")
-                    cands = [Path(name)] if Path(name).is_absolute() else \
-                        [main_dir / name, p.parent / name]
-                    target = next((c.resolve() for c in cands if c.is_file()), None)
-                    if target is None:
-                        raise InputError(f"{field}: {p}:{lineno}: *INCLUDE file {name} not "
-                                         f"found (looked in {', '.join(map(str, cands))})")
-                    if target in chain or len(chain) > MAX_INCLUDE_DEPTH:
-                        raise InputError(f"{field}: {p}:{lineno}: *INCLUDE {name} includes "
-                                         "itself (directly or through other files)")
+                    target = include_target(opts.get("INPUT", ""), main_dir, p, chain,
+                                            f"{field}: {p}:{lineno}", "*INCLUDE")
                     yield from walk(target, chain + (target,))
                     continue
             yield p, lineno, s

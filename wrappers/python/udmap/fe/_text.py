@@ -50,6 +50,30 @@ def text_lines(path: Path, field: str):
         yield lineno, line.replace("\t", " ").rstrip()
 
 
+#: Deepest nesting of include files (deeper is taken for a loop).
+MAX_INCLUDE_DEPTH = 16
+
+
+def include_target(name: str, main_dir: Path, including: Path, chain: tuple, where: str,
+                   what: str) -> Path:
+    """The file ``name`` that an include statement ``what`` at ``where`` names (no name is an
+    error: "``what`` without a file name"): a relative path is looked
+    up beside the main file (where the FE code runs), then beside the including file; a file
+    that includes itself (through others, or nested deeper than MAX_INCLUDE_DEPTH) is an
+    error."""
+    if not name:
+        raise InputError(f"{where}: {what} without a file name")
+    cands = [Path(name)] if Path(name).is_absolute() else [main_dir / name, including.parent / name]
+    target = next((c.resolve() for c in cands if c.is_file()), None)
+    if target is None:
+        raise InputError(f"{where}: {what} file {name} not found (looked in "
+                         f"{', '.join(map(str, cands))})")
+    if target in chain or len(chain) > MAX_INCLUDE_DEPTH:
+        raise InputError(f"{where}: {what} {name} includes itself (directly or through other "
+                         "files)")
+    return target
+
+
 def number(token: str) -> float:
     """A float, also written with a decimal comma (``0,15``, ``1,e-001``) or a Fortran ``D``."""
     t = token.strip().replace(",", ".").replace("D", "E").replace("d", "e")

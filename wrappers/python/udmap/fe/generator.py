@@ -55,9 +55,10 @@ class GeneratedBlade:
     elements: np.ndarray = field(repr=False)  # (n_el, 8) node ids, C3D8 order
     all_xyz: np.ndarray = field(repr=False)   # (m, 3) every node, ids 1..m
 
-    def gauge_row(self) -> np.ndarray:
-        """The virtual strain gauge row s (sigma = s^T u, PHYSICS.md 1.3) over the DOFs."""
-        fe = self.fe
+    def gauge_row(self, fe: "FEModel | None" = None) -> np.ndarray:
+        """The virtual strain gauge row s (sigma = s^T u, PHYSICS.md 1.3) over the DOFs of
+        ``fe`` (default: the blade's own model; the quadratic mesh keeps the gauge's nodes)."""
+        fe = self.fe if fe is None else fe
         a, b = self.gauge
         xa, xb = self.all_xyz[a - 1], self.all_xyz[b - 1]
         L = np.linalg.norm(xb - xa)
@@ -240,6 +241,23 @@ def _write_mtx(path: Path, A) -> None:
                    fmt=["%d", "%d", "%.17g"])
 
 
+def _ccx_real(x) -> str:
+    """``x`` in at most 20 characters, the width in which CalculiX reads a real (it cuts a
+    longer field, and a cut exponent is an error): the shortest round-trip form, else fewer
+    digits."""
+    text = repr(float(x))
+    digits = 16
+    while len(text) > 20:
+        text, digits = f"{float(x):.{digits}g}", digits - 1
+    return text
+
+
+def _node_lines(xyz) -> str:
+    """*NODE data lines ``id, x, y, z`` for the nodes 1..len(xyz)."""
+    return "".join(f"{k}, {_ccx_real(x)}, {_ccx_real(y)}, {_ccx_real(z)}\n"
+                   for k, (x, y, z) in enumerate(np.asarray(xyz, dtype=float).tolist(), start=1))
+
+
 def _idlines(ids, per_line=16):
     ids = list(map(int, ids))
     return "".join(", ".join(map(str, ids[i:i + per_line])) + ",\n"
@@ -261,8 +279,7 @@ def write_blade(blade: GeneratedBlade, directory, *, name: str = "generated_blad
     with open(d / "blade.inp", "w") as f:
         f.write("** udmap generated blade (root block, neck, platform, airfoil), SI units\n")
         f.write("*NODE, NSET=NALL\n")
-        np.savetxt(f, np.column_stack([np.arange(1, xyz.shape[0] + 1), xyz]),
-                   fmt=["%d", "%.17g", "%.17g", "%.17g"], delimiter=", ")
+        f.write(_node_lines(xyz))
         f.write("*ELEMENT, TYPE=C3D8, ELSET=EALL\n")
         np.savetxt(f, np.column_stack([np.arange(1, blade.elements.shape[0] + 1),
                                        blade.elements]), fmt="%d", delimiter=", ")
@@ -361,10 +378,9 @@ def write_hex20_deck(blade: GeneratedBlade, mesh: Hex20Mesh, path, *, element: s
         raise ValueError("element: C3D20 or C3D20R")
     with open(path, "w") as f:
         f.write(f"** udmap generated blade, {element}, SI units\n*NODE, NSET=NALL\n")
-        np.savetxt(f, np.column_stack([np.arange(1, mesh.xyz.shape[0] + 1), mesh.xyz]),
-                   fmt=["%d", "%.17g", "%.17g", "%.17g"], delimiter=", ")
+        f.write(_node_lines(mesh.xyz))
         for node, x in extra_nodes:
-            f.write(f"{int(node)}, {x[0]:.17g}, {x[1]:.17g}, {x[2]:.17g}\n")
+            f.write(f"{int(node)}, " + ", ".join(map(_ccx_real, x)) + "\n")
         f.write(f"*ELEMENT, TYPE={element}, ELSET=EALL\n")
         for k, e in enumerate(mesh.elements, start=1):   # 21 numbers: two lines of a card
             f.write(f"{k}, " + ", ".join(map(str, e[:15])) + ",\n"

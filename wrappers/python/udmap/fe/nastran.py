@@ -8,8 +8,8 @@ off-diagonal term once, below or above the diagonal. Reals may use the NASTRAN s
 (``1.5+3``, ``-2.-4``) and ``D`` exponents. The stiffness is the ``DMIG`` whose name starts with
 ``K``, the mass the one starting with ``M`` (or the names given in ``blade.dmig``; when a punch
 holds several, the error lists the names found). Card names in any case; tabs (to the next
-8-column field, as NASTRAN reads them); ``$`` comments; in a whole input file only the bulk data
-(after ``BEGIN BULK``, up to ``ENDDATA``) is read.
+8-column field, as NASTRAN reads them); ``$`` comments; ``INCLUDE 'file'`` statements (nested);
+in a whole input file only the bulk data (after ``BEGIN BULK``, up to ``ENDDATA``) is read.
 
 Coordinate systems (``nastran_coords``): ``GRID`` positions given in their ``CP`` system are put
 in the basic system; the matrices of a grid with a ``CD`` system are in that grid's frame, so
@@ -21,12 +21,13 @@ the basic axes must carry all three components of a block it has in the matrices
 from __future__ import annotations
 
 import re
+from pathlib import Path
 
 import numpy as np
 import scipy.sparse as sp
 
 from ..errors import InputError
-from ._text import read_text
+from ._text import include_target, read_text
 from .model import FEModel, make_model
 from .nastran_coords import resolve
 
@@ -56,13 +57,44 @@ def _untab(line: str) -> str:
     return out + segs[-1]
 
 
+def _lines(path, field: str):
+    """``(file, line number, line)`` of a NASTRAN input file with its ``INCLUDE 'file'``
+    statements replaced by the files' lines (nested; the quoted name may go on over several
+    lines; a relative name is looked up beside the main file, then beside the including
+    one)."""
+    main = Path(path)
+    main_dir = main.resolve().parent
+
+    def walk(p: Path, chain):
+        lines = read_text(p, field).split("\n")
+        k = 0
+        while k < len(lines):
+            raw, lineno = lines[k], k + 1
+            k += 1
+            if raw[:7].upper() != "INCLUDE" or raw[7:8].strip():
+                yield p, lineno, raw
+                continue
+            text = raw[7:].split("$", 1)[0].strip()
+            if text.startswith("'"):      # the name ends at the closing quote
+                while text.count("'") < 2 and k < len(lines):
+                    text, k = text + lines[k].strip(), k + 1
+                name = text[1:].split("'", 1)[0]
+            else:
+                name = text
+            target = include_target(name, main_dir, p, chain, f"{field}: {p}:{lineno}",
+                                    "INCLUDE")
+            yield from walk(target, chain + (target,))
+
+    yield from walk(main, (main.resolve(),))
+
+
 def cards(path, field: str):
     """Yields ``(name, [fields 2..9 of every line, concatenated], "file:line")``."""
     current = None
-    lines = read_text(path, field).split("\n")
-    start = next((k + 1 for k, raw in enumerate(lines)
+    lines = list(_lines(path, field))
+    start = next((k + 1 for k, (_, _, raw) in enumerate(lines)
                   if raw.strip().upper().replace(" ", "").startswith("BEGINBULK")), 0)
-    for lineno, raw in enumerate(lines[start:], start + 1):
+    for at_file, lineno, raw in lines[start:]:
         line = raw.split("$", 1)[0].rstrip()
         if not line.strip():
             continue
@@ -84,12 +116,13 @@ def cards(path, field: str):
         is_cont = head == "" or head.startswith("+") or head.startswith("*")
         if is_cont:
             if current is None:
-                raise InputError(f"{field}: {path}:{lineno}: continuation line without a card")
+                raise InputError(f"{field}: {at_file}:{lineno}: continuation line without a "
+                                 "card")
             current[1].extend(data)
             continue
         if current is not None:
             yield current
-        current = (head.rstrip("*").upper(), list(data), f"{path}:{lineno}")
+        current = (head.rstrip("*").upper(), list(data), f"{at_file}:{lineno}")
     if current is not None:
         yield current
 
