@@ -153,66 +153,10 @@ def test_a_wrong_use_fails_naming_file_line_and_arrow(tree):
     assert out.returncode == 1 and "kernel/src/damper/type.f90:3: damper -> blade" in out.stdout
 
 
-def test_a_folder_without_a_row_follows_the_folder_above(tree):
-    edit(tree / "kernel/src/damper/tracer/core.f90", "  use udmap_core_kinds\n",
-         "  use udmap_core_kinds\n  use udmap_blade_type\n")
-    assert messages(tree) == ["kernel/src/damper/tracer/core.f90:3: damper -> blade (use "
-                              "udmap_blade_type): not allowed by docs/ARCHITECTURE.md"]
-
-
-def test_blade_under_its_readers(tree):
-    edit(tree / "kernel/src/blade/type.f90", "  use udmap_core_error\n",
-         "  use udmap_core_error\n  use udmap_blade_io_mmio\n")
-    assert messages(tree) == ["kernel/src/blade/type.f90:3: blade -> blade/io (use "
-                              "udmap_blade_io_mmio): not allowed by docs/ARCHITECTURE.md"]
-
-
-def test_a_data_module_above_its_algorithms_fails(tree):
-    edit(tree / "kernel/src/mapping/layer.f90", "  use udmap_damper_type\n",
-         "  use udmap_damper_type\n  use udmap_mapping_harmonic_layer\n")
-    assert messages(tree) == ["kernel/src/mapping/layer.f90:4: mapping -> mapping/harmonic (use "
-                              "udmap_mapping_harmonic_layer): not allowed by docs/ARCHITECTURE.md"]
-
-
-def test_the_legacy_api_on_the_c_api_fails(tree):
-    edit(tree / "kernel/src/api/legacy/arrays.f90", "  use udmap_mapping_model\n",
-         "  use udmap_mapping_model\n  USE :: udmap_api_c_model\n")
-    assert messages(tree) == ["kernel/src/api/legacy/arrays.f90:3: api/legacy -> api/c (use "
-                              "udmap_api_c_model): not allowed by docs/ARCHITECTURE.md"]
-
-
-def test_a_module_off_its_path_fails(tree):
-    edit(tree / "kernel/src/mapping/layer.f90", "module udmap_mapping_layer\n",
-         "module udmap_layer\n")
-    edit(tree / "kernel/src/mapping/harmonic/layer.f90", "use udmap_mapping_layer", "use udmap_layer")
-    assert messages(tree) == ["kernel/src/mapping/layer.f90:1: module udmap_layer does not follow "
-                              "its path (expected udmap_mapping_layer)"]
-
-
 def test_a_file_outside_the_folders_of_the_page_fails(tree):
     (tree / "kernel/src/api_blade.f90").write_text("module udmap_api_blade\nend module\n")
     assert any(m.startswith("kernel/src/api_blade.f90:1: folder (kernel/src itself) has no row")
                for m in messages(tree))
-
-
-def test_a_face_with_procedures_fails(tree):
-    edit(tree / "kernel/src/udmap.f90", "  public\n", "  public\ncontains\n")
-    assert messages(tree) == ["kernel/src/udmap.f90:5: udmap.f90 is a face (re-exports only) but "
-                              "holds procedures"]
-
-
-def test_a_wrong_import_fails(tree):
-    edit(tree / "wrappers/python/udmap/blade.py", "from . import _capi\n",
-         "from . import _capi\nfrom .plots import plot\n")
-    assert messages(tree) == ["wrappers/python/udmap/blade.py:2: blade -> plots (udmap.plots.plot)"
-                              ": not allowed by docs/ARCHITECTURE.md"]
-
-
-def test_capi_above_the_objects_fails(tree):
-    edit(tree / "wrappers/python/udmap/doe/run.py", "from .. import version\n",
-         "from .. import version\nfrom .._capi import Point\n")
-    assert messages(tree) == ["wrappers/python/udmap/doe/run.py:3: doe -> _capi (udmap._capi.Point)"
-                              ": not allowed by docs/ARCHITECTURE.md"]
 
 
 def test_an_import_circle_fails_even_inside_a_function(tree):
@@ -224,45 +168,10 @@ def test_an_import_circle_fails_even_inside_a_function(tree):
     assert any("doe -> cli (udmap.cli.main): not allowed" in m for m in found)
 
 
-def test_a_circle_inside_one_package_fails(tree):
-    edit(tree / "wrappers/python/udmap/case/schema.py", "FIELDS = {}\n",
-         "from . import load\nFIELDS = {}\n")
-    assert messages(tree) == ["wrappers/python/udmap/case/load.py:3: import circle: "
-                              "udmap.case.load -> udmap.case.schema -> udmap.case.load"]
-
-
 def test_imports_for_type_checking_are_no_circle(tree):
     text = (tree / "wrappers/python/udmap/case/schema.py").read_text()
     assert "TYPE_CHECKING:\n    from .load import Case" in text     # load -> schema -> load
     assert messages(tree) == []
-
-
-def test_a_private_name_of_another_module_fails(tree):
-    edit(tree / "wrappers/python/udmap/cli/__init__.py", "from ..case.load import load_case\n",
-         "from ..case.load import load_case\nfrom ..case.schema import _PRIVATE\n")
-    assert messages(tree) == ["wrappers/python/udmap/cli/__init__.py:3: udmap.cli -> "
-                              "udmap.case.schema._PRIVATE: private name of another module"]
-
-
-def test_a_private_attribute_of_another_module_fails(tree):
-    edit(tree / "wrappers/python/udmap/doe/run.py", "    return load_case(p)\n",
-         "    import udmap.model\n    return load_case(p), udmap.model._helper\n")
-    assert messages(tree) == ["wrappers/python/udmap/doe/run.py:7: udmap.doe.run -> udmap.model."
-                              "_helper: private name of another module"]
-
-
-def test_a_private_attribute_of_an_object_fails(tree):
-    edit(tree / "wrappers/python/udmap/doe/run.py", "    return load_case(p)\n",
-         "    model, fields = load_case(p)\n    return model._err.ptr\n")
-    assert messages(tree) == ["wrappers/python/udmap/doe/run.py:7: udmap.doe.run uses model._err: "
-                              "private attribute not defined in this module"]
-
-
-def test_a_private_module_outside_its_package_fails(tree):
-    edit(tree / "wrappers/python/udmap/case/load.py", "from ..fe import read_text\n",
-         "from ..fe._text import read_text\n")
-    assert messages(tree) == ["wrappers/python/udmap/case/load.py:1: udmap.case.load -> "
-                              "udmap.fe._text: private module of udmap.fe"]
 
 
 def test_a_module_without_a_row_fails(tree):
@@ -316,3 +225,96 @@ def test_an_arrow_injected_into_the_real_tree_is_reported(tmp_path):
     n = len(blade.read_text().splitlines())
     new = set(messages(root)) - before
     assert any(m.startswith(f"wrappers/python/udmap/blade.py:{n}: blade -> cli") for m in new), new
+
+
+# Each defect injected alone: its name, the edits (file, old text, new text), the messages.
+INJECTED = [
+    ('a_folder_without_a_row_follows_the_folder_above',
+     [('kernel/src/damper/tracer/core.f90',
+       '  use udmap_core_kinds\n',
+       '  use udmap_core_kinds\n  use udmap_blade_type\n')],
+     ['kernel/src/damper/tracer/core.f90:3: damper -> blade (use udmap_blade_type): not '
+      'allowed by docs/ARCHITECTURE.md']),
+    ('blade_under_its_readers',
+     [('kernel/src/blade/type.f90',
+       '  use udmap_core_error\n',
+       '  use udmap_core_error\n  use udmap_blade_io_mmio\n')],
+     ['kernel/src/blade/type.f90:3: blade -> blade/io (use udmap_blade_io_mmio): not allowed '
+      'by docs/ARCHITECTURE.md']),
+    ('a_data_module_above_its_algorithms_fails',
+     [('kernel/src/mapping/layer.f90',
+       '  use udmap_damper_type\n',
+       '  use udmap_damper_type\n  use udmap_mapping_harmonic_layer\n')],
+     ['kernel/src/mapping/layer.f90:4: mapping -> mapping/harmonic (use '
+      'udmap_mapping_harmonic_layer): not allowed by docs/ARCHITECTURE.md']),
+    ('the_legacy_api_on_the_c_api_fails',
+     [('kernel/src/api/legacy/arrays.f90',
+       '  use udmap_mapping_model\n',
+       '  use udmap_mapping_model\n  USE :: udmap_api_c_model\n')],
+     ['kernel/src/api/legacy/arrays.f90:3: api/legacy -> api/c (use udmap_api_c_model): not '
+      'allowed by docs/ARCHITECTURE.md']),
+    ('a_module_off_its_path_fails',
+     [('kernel/src/mapping/layer.f90',
+       'module udmap_mapping_layer\n',
+       'module udmap_layer\n'),
+      ('kernel/src/mapping/harmonic/layer.f90',
+       'use udmap_mapping_layer',
+       'use udmap_layer')],
+     ['kernel/src/mapping/layer.f90:1: module udmap_layer does not follow its path (expected '
+      'udmap_mapping_layer)']),
+    ('a_face_with_procedures_fails',
+     [('kernel/src/udmap.f90',
+       '  public\n',
+       '  public\ncontains\n')],
+     ['kernel/src/udmap.f90:5: udmap.f90 is a face (re-exports only) but holds procedures']),
+    ('a_wrong_import_fails',
+     [('wrappers/python/udmap/blade.py',
+       'from . import _capi\n',
+       'from . import _capi\nfrom .plots import plot\n')],
+     ['wrappers/python/udmap/blade.py:2: blade -> plots (udmap.plots.plot): not allowed by '
+      'docs/ARCHITECTURE.md']),
+    ('capi_above_the_objects_fails',
+     [('wrappers/python/udmap/doe/run.py',
+       'from .. import version\n',
+       'from .. import version\nfrom .._capi import Point\n')],
+     ['wrappers/python/udmap/doe/run.py:3: doe -> _capi (udmap._capi.Point): not allowed by '
+      'docs/ARCHITECTURE.md']),
+    ('a_circle_inside_one_package_fails',
+     [('wrappers/python/udmap/case/schema.py',
+       'FIELDS = {}\n',
+       'from . import load\nFIELDS = {}\n')],
+     ['wrappers/python/udmap/case/load.py:3: import circle: udmap.case.load -> '
+      'udmap.case.schema -> udmap.case.load']),
+    ('a_private_name_of_another_module_fails',
+     [('wrappers/python/udmap/cli/__init__.py',
+       'from ..case.load import load_case\n',
+       'from ..case.load import load_case\nfrom ..case.schema import _PRIVATE\n')],
+     ['wrappers/python/udmap/cli/__init__.py:3: udmap.cli -> udmap.case.schema._PRIVATE: '
+      'private name of another module']),
+    ('a_private_attribute_of_another_module_fails',
+     [('wrappers/python/udmap/doe/run.py',
+       '    return load_case(p)\n',
+       '    import udmap.model\n    return load_case(p), udmap.model._helper\n')],
+     ['wrappers/python/udmap/doe/run.py:7: udmap.doe.run -> udmap.model._helper: private name '
+      'of another module']),
+    ('a_private_attribute_of_an_object_fails',
+     [('wrappers/python/udmap/doe/run.py',
+       '    return load_case(p)\n',
+       '    model, fields = load_case(p)\n    return model._err.ptr\n')],
+     ['wrappers/python/udmap/doe/run.py:7: udmap.doe.run uses model._err: private attribute '
+      'not defined in this module']),
+    ('a_private_module_outside_its_package_fails',
+     [('wrappers/python/udmap/case/load.py',
+       'from ..fe import read_text\n',
+       'from ..fe._text import read_text\n')],
+     ['wrappers/python/udmap/case/load.py:1: udmap.case.load -> udmap.fe._text: private module '
+      'of udmap.fe']),
+]
+
+
+@pytest.mark.parametrize("edits, expected", [c[1:] for c in INJECTED],
+                         ids=[c[0] for c in INJECTED])
+def test_an_injected_defect_fails_naming_file_and_line(tree, edits, expected):
+    for rel, old, new in edits:
+        edit(tree / rel, old, new)
+    assert messages(tree) == expected

@@ -145,6 +145,25 @@ static void print_real(double x) {
 
 static int max_status(int a, int b) { return a > b ? a : b; }
 
+/* One step of the script: its time, step size and input values (0, or 1 with a message). */
+static int read_step(FILE *f, const char *script, double *t, double *h, size_t n_in,
+                     double *in) {
+  if (fscanf(f, "%lf %lf", t, h) != 2) return fail("malformed step", script);
+  for (size_t i = 0; i < n_in; i++)
+    if (fscanf(f, "%lf", &in[i]) != 1) return fail("malformed input value", script);
+  return 0;
+}
+
+/* The step's line on stdout (booleans as 0/1, whichever FMI type held them). */
+static void print_step(size_t k, int st, size_t n_real, const double *real, size_t n_int,
+                       const int32_t *ints, size_t n_bool, const int *bools) {
+  printf("%u %d", (unsigned int)k, st);
+  for (size_t i = 0; i < n_real; i++) print_real(real[i]);
+  for (size_t i = 0; i < n_int; i++) printf(" %d", (int)ints[i]);
+  for (size_t i = 0; i < n_bool; i++) printf(" %d", bools[i] ? 1 : 0);
+  printf("\n");
+}
+
 int main(int argc, char **argv) {
   if (argc != 6 && argc != 7)
     return fail("usage: udmap-fmu-import <2|3> <binary> <token> <resource> <script> [cs|me]",
@@ -224,10 +243,7 @@ int main(int argc, char **argv) {
       if (st > 1) rc = fail("initialization failed", NULL);
       for (size_t k = 0; !rc && k < n_steps; k++) {
         double t, h;
-        if (fscanf(f, "%lf %lf", &t, &h) != 2) rc = fail("malformed step", argv[5]);
-        for (size_t i = 0; !rc && i < n_in; i++)
-          if (fscanf(f, "%lf", &in[i]) != 1) rc = fail("malformed input value", argv[5]);
-        if (rc) break;
+        if ((rc = read_step(f, argv[5], &t, &h, n_in, in))) break;
         st = me ? set_time(c, t + h) : 0;
         st = max_status(st, set_real(c, vr2_in, n_in, in));
         if (!me) st = max_status(st, do_step(c, t, h, 1));
@@ -239,11 +255,7 @@ int main(int argc, char **argv) {
           st = max_status(st, completed(c, 1, &enter_event, &terminate_sim));
           if (enter_event || terminate_sim) rc = fail("unexpected event or termination", NULL);
         }
-        printf("%u %d", (unsigned int)k, st);
-        for (size_t i = 0; i < n_real; i++) print_real(real[i]);
-        for (size_t i = 0; i < n_int; i++) printf(" %d", (int)ints[i]);
-        for (size_t i = 0; i < n_bool; i++) printf(" %d", bools2[i] ? 1 : 0);
-        printf("\n");
+        print_step(k, st, n_real, real, n_int, ints, n_bool, bools2);
       }
       terminate(c);
       free_instance(c);
@@ -294,10 +306,7 @@ int main(int argc, char **argv) {
       if (st > 1) rc = fail("initialization failed", NULL);
       for (size_t k = 0; !rc && k < n_steps; k++) {
         double t, h;
-        if (fscanf(f, "%lf %lf", &t, &h) != 2) rc = fail("malformed step", argv[5]);
-        for (size_t i = 0; !rc && i < n_in; i++)
-          if (fscanf(f, "%lf", &in[i]) != 1) rc = fail("malformed input value", argv[5]);
-        if (rc) break;
+        if ((rc = read_step(f, argv[5], &t, &h, n_in, in))) break;
         bool event = false, terminate_sim = false, early = false;
         double last = 0.0;
         st = me ? set_time(c, t + h) : 0;
@@ -311,11 +320,8 @@ int main(int argc, char **argv) {
           st = max_status(st, completed(c, true, &event, &terminate_sim));
           if (event || terminate_sim) rc = fail("unexpected event or termination", NULL);
         }
-        printf("%u %d", (unsigned int)k, st);
-        for (size_t i = 0; i < n_real; i++) print_real(real[i]);
-        for (size_t i = 0; i < n_int; i++) printf(" %d", (int)ints[i]);
-        for (size_t i = 0; i < n_bool; i++) printf(" %d", bools3[i] ? 1 : 0);
-        printf("\n");
+        for (size_t i = 0; i < n_bool; i++) bools2[i] = bools3[i];
+        print_step(k, st, n_real, real, n_int, ints, n_bool, bools2);
       }
       terminate(c);
       free_instance(c);
