@@ -144,13 +144,13 @@ def generate(n_dofs: int, element: str, tmp: Path):
     consistent mass) assembled by CalculiX itself (*FREQUENCY, SOLVER=MATRIXSTORAGE) and read
     back with the calculix reader. Returns (blade, model, platform nodes)."""
     from udmap.fe import read_fe
-    from udmap.fe.generator import generate_blade, hex20_mesh, write_hex20_deck
+    from udmap.fe.generator import generate_blade, quadratic_mesh, write_solid_deck
     if element == "C3D8":
         b = generate_blade(n_dofs)
         return b, b.fe, b.platform_nodes
     b = generate_blade(int(n_dofs / HEX20_DOFS_PER_CORNER_DOF))
-    mesh = hex20_mesh(b)
-    write_hex20_deck(b, mesh, tmp / "export.inp", element=element)
+    mesh = quadratic_mesh(b)
+    write_solid_deck(b, mesh, tmp / "export.inp", brick=element)
     subprocess.run(["ccx", "-i", "export"], cwd=tmp, check=True, capture_output=True)
     fe = read_fe({"format": "calculix", "files": {k: f"export.{k}" for k in
                                                   ("sti", "mas", "dof", "inp")}}, tmp)

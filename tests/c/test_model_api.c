@@ -242,8 +242,12 @@ int main(void) {
   }
   status = udmap_model_limit_force(err, none, &F_lim);
   check(status == UDMAP_EINPUT, "NULL model");
+  status = udmap_model_response(err, model, 1.0, 1, forces, points);
+  check(status == UDMAP_EINPUT, "f_exc beyond 3 f_max");
+  /* outside the band [0.127, 0.223] Hz but within 3 f_max: answered at that frequency */
   status = udmap_model_response(err, model, 0.5, 1, forces, points);
-  check(status == UDMAP_EINPUT, "f_exc outside the band");
+  check(status == UDMAP_OK && points[0].f_res == 0.5 && points[0].gamma_P > 0.0,
+        "f_exc outside the band, within 3 f_max, answered");
 
   udmap_delete_model(&model);
   check(model == NULL, "delete model");

@@ -100,3 +100,22 @@ def test_curves_plot_without_a_backbone_line(tmp_path, capsys):
                             tmp_path / "o", "--plot"], capsys)
     assert status == 0, err
     assert (tmp_path / "o" / "curves.png").stat().st_size > 10000
+
+
+def test_response_beyond_the_band_up_to_three_f_max(capsys):
+    # The band [150, 230] Hz is where the resonance is sought; a response is answered up to
+    # 3 f_max (690 Hz), where the blade's receptances hold: stuck at 2 N, linear, so gamma_P
+    # is F_E |H_gE / (1 + k H_gg)| of the blade at that frequency.
+    from udmap.case import build_blade, build_damper, load_case
+    status, out, _ = _main(["response", CASE, "--forces", "2", "--freq", "400", "--json"], capsys)
+    assert status == 0
+    p = json.loads(out)["points"][0]
+    case = load_case(str(CASE))
+    r = build_blade(case).receptances(400.0)
+    k = build_damper(case).k_stuck
+    want = 2.0 * abs(r["gE"]) / abs(1 + k * r["gg"])
+    assert p["f_res"] == 400.0 and p["regime"] == 0          # stuck
+    assert p["gamma_P"] == pytest.approx(want, rel=1e-10)
+    status, _, err = _main(["response", CASE, "--forces", "2", "--freq", "700"], capsys)
+    assert status == 2
+    assert "--freq 700.0 Hz is beyond the reach of the blade: (0, 690] Hz" in err

@@ -6,44 +6,22 @@ prints 7 digits), with the full model to 1e-6, and its H_gg, H_gE with a direct 
 1e-6. A truly indefinite M (eigenvalues below -1e-12 max|M|) is refused, rounding is not."""
 from __future__ import annotations
 
-import subprocess
-
 import numpy as np
 import pytest
 import scipy.sparse as sp
 import scipy.sparse.linalg as sla
 
 import fe_reference as ref
-from test_fe_calculix import ccx_frequencies
+from ccx_solids import K_SPRING, solid_blade
 from udmap import InputError
 from udmap.case.fe import semi_definite
-from udmap.fe import FEModel, read_fe
-from udmap.fe.generator import generate_blade, hex20_mesh, write_hex20_deck
+from udmap.fe import FEModel
 from udmap.reduction import platform_centred_reduction
-
-K_SPRING = 1.0e5         # N m/rad on gamma_P (the rotation about z: ROT NODE DOF 3)
 
 
 @pytest.fixture(scope="module")
 def blade(tmp_path_factory):
-    d = tmp_path_factory.mktemp("c3d20r")
-    b = generate_blade(2500)
-    mesh = hex20_mesh(b)
-    ref_node, rot_node = mesh.xyz.shape[0] + 1, mesh.xyz.shape[0] + 2
-    extra = [(ref_node, b.ref_point), (rot_node, b.ref_point)]
-    rigid = f"*RIGID BODY, NSET=PLATFORM, REF NODE={ref_node}, ROT NODE={rot_node}"
-    spring = (f"*ELEMENT, TYPE=SPRING1, ELSET=ESPRING\n900001, {rot_node}\n"
-              f"*SPRING, ELSET=ESPRING\n3\n{K_SPRING!r}")
-    freq = "*STEP\n*FREQUENCY\n2\n*END STEP"
-    write_hex20_deck(b, mesh, d / "export.inp")
-    write_hex20_deck(b, mesh, d / "bare.inp", step=freq, extra_nodes=extra, extra=rigid)
-    write_hex20_deck(b, mesh, d / "stuck.inp", step=freq, extra_nodes=extra,
-                     extra=rigid + "\n" + spring)
-    subprocess.run(["ccx", "-i", "export"], cwd=d, check=True, capture_output=True, timeout=100)
-    fe = read_fe({"format": "calculix", "files": {k: f"export.{k}" for k in
-                                                  ("sti", "mas", "dof", "inp")}}, d)
-    return {"blade": b, "mesh": mesh, "fe": fe, "bare": ccx_frequencies(d, "bare"),
-            "stuck": ccx_frequencies(d, "stuck")}
+    return solid_blade(tmp_path_factory.mktemp("c3d20r"), 2500)
 
 
 def _args(c, **kw):
@@ -95,6 +73,23 @@ def test_receptances_equal_direct_solve(blade, reduced):
             assert abs(got - want) <= 1e-6 * abs(want), (f, want, got)
             worst = max(worst, abs(got - want) / abs(want))
     print(f"C3D20R: largest relative error of H_gg, H_gE in the band {worst:.2e}")
+
+
+def test_receptances_up_to_three_f_max(blade, reduced):
+    # The reduction keeps the modes up to 3 f_max: beyond the band, where `response --freq`
+    # is answered, its H_gg and H_gE equal a direct sparse solve of the full model too.
+    b, fe = blade["blade"], blade["fe"]
+    rig = ref.rigid_platform(fe, blade["mesh"].platform_nodes, b.ref_point, b.axis, b.exc_node,
+                             b.exc_direction)
+    Q = np.zeros((rig.K.shape[0], 2))
+    Q[rig.gamma, 0] = Q[rig.exc, 1] = 1.0
+    Kr, Mr, g, e = reduced.K, reduced.M, reduced.gamma_dof - 1, reduced.exc_dof - 1
+    f_max = reduced.info["f_cut"] / 3
+    for f in (1.5 * f_max, 2.2 * f_max, 3.0 * f_max):
+        w = 2 * np.pi * f
+        x = sla.splu((rig.K - w * w * rig.M).tocsc()).solve(Q)
+        y = np.linalg.solve(Kr - w * w * Mr, np.eye(Kr.shape[0])[:, [g, e]])
+        np.testing.assert_allclose(y[g], x[rig.gamma], rtol=1e-6)
 
 
 def test_semi_definite_mass_accepted_indefinite_refused(blade):

@@ -288,8 +288,9 @@ int udmap_model_backbone(udmap_error error, udmap_model model, int n, const doub
 int udmap_model_backbone_jumps(udmap_error error, udmap_model model, int n, int *jump);
 
 /* Response at the excitation frequency f_exc [Hz] for n forces (PHYSICS.md 4, last paragraph).
- * f_exc must lie in the band. The response at a fixed frequency is finite even above F_lim, so
- * unbounded is never set here (regime is still 3). */
+ * f_exc must lie in (0, 3 f_max]: beyond the band [f_min, f_max], where the resonance is
+ * sought, up to the reach of a reduced FE blade (PHYSICS.md 1.3). The response at a fixed
+ * frequency is finite even above F_lim, so unbounded is never set here (regime is still 3). */
 int udmap_model_response(udmap_error error, udmap_model model, double f_exc, int n,
                          const double *F_E, udmap_point *points);
 

@@ -5,6 +5,7 @@
 module udmap_mapping_model_data
   use udmap_core_kinds, only: wp, pi
   use udmap_core_error, only: error_type, fatal_error, UDMAP_EINPUT
+  use udmap_core_strings, only: gtoa
   use udmap_blade_type, only: blade_type, receptances_type, layer_response
   use udmap_damper_type, only: damper_type
   use udmap_mapping_caches, only: bare_type, layer_peak_type, secular_type
@@ -14,9 +15,12 @@ module udmap_mapping_model_data
   public :: analysis_type, point_type, curve_type, model_type, backbone_table_type, &
     & backbone_eval_type
   public :: check_model_damper, set_damper, limit_force, limit_force_or_huge, regime_of, &
-    & fill_point, check_forces, &
-    & limit_force_backbone, damper_fingerprint
+    & fill_point, check_forces, check_response_frequency, &
+    & limit_force_backbone, damper_fingerprint, RESPONSE_REACH
   public :: EIGEN_AUTO, EIGEN_DIRECT, EIGEN_MODAL
+
+  !> The response at a fixed frequency reaches this many times f_max.
+  real(wp), parameter :: RESPONSE_REACH = 3
   public :: REGIME_STUCK, REGIME_PARTIAL_SLIP, REGIME_FULL_SLIP, REGIME_LIMIT
   public :: BRANCH_LOWER, BRANCH_UPPER, BRANCH_TURNING
 
@@ -327,4 +331,18 @@ contains
       end if
     end do
   end subroutine check_forces
+
+  !> The response at a fixed frequency is answered up to RESPONSE_REACH f_max: the reach of a
+  !> reduced FE blade (its modes go to 3 f_max, PHYSICS.md 1.3); the band is where the
+  !> resonance is sought, not a limit of the blade's receptances.
+  pure subroutine check_response_frequency(analysis, f_exc, error)
+    type(analysis_type), intent(in) :: analysis
+    real(wp), intent(in) :: f_exc
+    type(error_type), allocatable, intent(out) :: error
+    if (f_exc > 0 .and. f_exc <= RESPONSE_REACH*analysis%f_max) return
+    call fatal_error(error, "response: f_exc = "//gtoa(f_exc, 6)//" Hz must lie in (0, "// &
+      & "3 f_max] = (0, "//gtoa(RESPONSE_REACH*analysis%f_max, 6)//"] Hz (f_max = "// &
+      & gtoa(analysis%f_max, 6)//" Hz: a reduced blade holds its modes up to 3 f_max)", &
+      & UDMAP_EINPUT)
+  end subroutine check_response_frequency
 end module udmap_mapping_model_data

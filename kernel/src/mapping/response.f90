@@ -8,13 +8,12 @@
 !> evaluations are needed.
 module udmap_mapping_response
   use udmap_core_kinds, only: wp, pi
-  use udmap_core_strings, only: rtoa
   use udmap_core_error, only: error_type, fatal_error, UDMAP_EINPUT, UDMAP_EPHYSICS
   use udmap_blade_type, only: receptances_type
   use udmap_mapping_layer, only: bare_receptances
   use udmap_core_root_finding, only: brent_type, brent_start, brent_next, brent_update
   use udmap_mapping_model_data, only: model_type, point_type, limit_force_or_huge, fill_point, &
-    & check_forces, limit_force_backbone
+    & check_forces, check_response_frequency, limit_force_backbone
   use udmap_mapping_backbone_table, only: ensure_table, grid_gamma, max_decades, j_limit, j_rising
   implicit none
   private
@@ -22,7 +21,7 @@ module udmap_mapping_response
 
 contains
 
-  !> The response at the excitation frequency f_exc [Hz] (inside the band) to the forces
+  !> The response at the excitation frequency f_exc [Hz] (up to 3 f_max) to the forces
   !> F_E [N]: every amplitude root, the largest giving gamma_P and the outputs.
   !> The response at a fixed frequency is finite even above F_lim, so points are never
   !> flagged unbounded here (the regime still says REGIME_LIMIT).
@@ -37,12 +36,8 @@ contains
     real(wp) :: F_lim, omega
     integer :: i
     allocate(points(size(F_E)))
-    if (.not.(f_exc >= model%analysis%f_min .and. f_exc <= model%analysis%f_max)) then
-      call fatal_error(error, "response: f_exc = "//rtoa(f_exc, "(g0.6)")//" Hz must lie in "// &
-        & "the band ["//rtoa(model%analysis%f_min, "(g0.6)")//", "// &
-        & rtoa(model%analysis%f_max, "(g0.6)")//"] Hz", UDMAP_EINPUT)
-      return
-    end if
+    call check_response_frequency(model%analysis, f_exc, error)
+    if (allocated(error)) return
     call check_forces(F_E, "response", error)
     if (allocated(error)) return
     if (size(F_E) == 0) return

@@ -20,7 +20,7 @@ module udmap_mapping_traveling_backbone
   use udmap_damper_type, only: DAMPER_ASYMMETRIC
   use udmap_contact_element_wave, only: wave_aft, wave_settings_type
   use udmap_mapping_model_data, only: model_type, point_type, REGIME_STUCK, &
-    & REGIME_PARTIAL_SLIP, REGIME_FULL_SLIP, REGIME_LIMIT
+    & REGIME_PARTIAL_SLIP, REGIME_FULL_SLIP, REGIME_LIMIT, check_response_frequency
   use udmap_mapping_harmonic_mapping, only: inphase_backbone => backbone
   use udmap_mapping_harmonic_layer, only: largest_excursion
   use udmap_mapping_harmonic_table_points, only: table_usable, table_backbone_point, &
@@ -408,10 +408,8 @@ contains
     logical :: more
     integer :: i, k
     omega = 2*pi*f_exc
-    if (.not. (omega >= model%omega_lo .and. omega <= model%omega_hi)) then
-      call fatal_error(error, "response: f_exc must lie in [f_min, f_max]", UDMAP_EINPUT)
-      return
-    end if
+    call check_response_frequency(model%analysis, f_exc, error)
+    if (allocated(error)) return
     call new_model_traveling(model, tw, error)
     if (allocated(error)) return
     call wave_limit_force(model, F_lim, error)

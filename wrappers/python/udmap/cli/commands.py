@@ -166,13 +166,25 @@ def cmd_backbone(args) -> None:
     _finish(args, paths, data, print_points, POINT_COLUMNS, point_rows(data), plot)
 
 
+def response_reach(case) -> float:
+    """The highest excitation frequency [Hz] a response is answered at: 3 f_max, the reach of
+    the blade's reduction (its cut-off, lower only when fewer modes were asked for)."""
+    reach = 3.0 * case.analysis["f_max"]
+    f_cut = ((case.fe or {}).get("info") or {}).get("f_cut")
+    return min(reach, float(f_cut)) if f_cut else reach
+
+
 def cmd_response(args) -> None:
     paths = check_out(args, "response")
     case = _load(args)
     a = case.analysis
-    if not a["f_min"] <= args.freq <= a["f_max"]:
-        raise InputError(f"--freq {args.freq} Hz is outside the band [analysis.f_min, "
-                         f"analysis.f_max] = [{a['f_min']}, {a['f_max']}] Hz of the case")
+    reach = response_reach(case)
+    if not 0.0 < args.freq <= reach:
+        raise InputError(f"--freq {args.freq} Hz is beyond the reach of the blade: (0, "
+                         f"{rounded(reach)}] Hz, 3 analysis.f_max = 3 x {a['f_max']} Hz"
+                         + ("" if reach == 3 * a["f_max"] else
+                            ", and the cut-off of the blade's reduction")
+                         + " (the band [f_min, f_max] is where the resonance is sought)")
     blade, damper = build_blade(case), build_damper(case)
     model = _model(case, blade, damper)
     summary = _computed(case, blade, damper, model, lambda: _summary(model, blade, damper))

@@ -24,8 +24,8 @@ import scipy.sparse as sp
 
 from . import FEModel
 
-__all__ = ["GeneratedBlade", "generate_blade", "write_blade", "brick_matrices", "Hex20Mesh",
-           "hex20_mesh", "write_hex20_deck"]
+__all__ = ["GeneratedBlade", "generate_blade", "write_blade", "brick_matrices", "QuadraticMesh",
+           "quadratic_mesh", "write_solid_deck"]
 
 MM = 1e-3
 #: Part boxes [x0, x1], [y0, y1], [z0, z1] in mm.
@@ -330,33 +330,81 @@ def write_blade(blade: GeneratedBlade, directory, *, name: str = "generated_blad
     return case
 
 
-#: CalculiX's edges of a 20-node brick: nodes 9-20 are the midpoints of these corner pairs.
-HEX20_EDGES = ((0, 1), (1, 2), (2, 3), (3, 0), (4, 5), (5, 6), (6, 7), (7, 4),
-               (0, 4), (1, 5), (2, 6), (3, 7))
+#: The quadratic elements the generator writes: per CalculiX type, the corner count and the
+#: corner pairs whose midpoints are the midside nodes, in CalculiX's node order.
+QUADRATIC = {
+    "C3D20": (8, ((0, 1), (1, 2), (2, 3), (3, 0), (4, 5), (5, 6), (6, 7), (7, 4),
+                  (0, 4), (1, 5), (2, 6), (3, 7))),
+    "C3D10": (4, ((0, 1), (1, 2), (2, 0), (0, 3), (1, 3), (2, 3))),
+    "C3D15": (6, ((0, 1), (1, 2), (2, 0), (3, 4), (4, 5), (5, 3), (0, 3), (1, 4), (2, 5))),
+}
+QUADRATIC["C3D20R"] = QUADRATIC["C3D20"]
+#: Corners of a brick (C3D8 order) as lattice offsets.
+_BRICK = ((0, 0, 0), (1, 0, 0), (1, 1, 0), (0, 1, 0), (0, 0, 1), (1, 0, 1), (1, 1, 1), (0, 1, 1))
+#: A brick as six tetrahedra around its diagonal from corner 0 to corner 6, one per order of
+#: the axes (Kuhn's split: conforming on a grid where every brick is split alike); corners
+#: ordered for a positive volume.
+def _kuhn_tetrahedra() -> tuple:
+    corner = {c: k for k, c in enumerate(_BRICK)}
+    tets = []
+    for order in ((0, 1, 2), (0, 2, 1), (1, 0, 2), (1, 2, 0), (2, 0, 1), (2, 1, 0)):
+        path = [np.zeros(3, dtype=int)]
+        for axis in order:                       # along the axes in this order to (1, 1, 1)
+            path.append(path[-1] + np.eye(3, dtype=int)[axis])
+        if np.linalg.det(np.array(path[1:]) - path[0]) < 0:
+            path[1], path[2] = path[2], path[1]
+        tets.append(tuple(corner[tuple(int(v) for v in q)] for q in path))
+    return tuple(tets)
+
+
+_KUHN = _kuhn_tetrahedra()
+#: A brick as two wedges along z, split by its diagonal face 0-2-6-4 (triangles 0-1-2, 0-2-3
+#: at the bottom, counterclockwise seen from the top).
+_WEDGES = ((0, 1, 2, 4, 5, 6), (0, 2, 3, 4, 6, 7))
 
 
 @dataclass
-class Hex20Mesh:
-    """The generated blade's mesh with quadratic bricks (CalculiX C3D20 / C3D20R): the corner
-    nodes keep their ids 1..m (so the excitation and gauge nodes are the blade's), the midside
-    nodes follow; the platform and root sets include their midside nodes."""
+class QuadraticMesh:
+    """The generated blade meshed with quadratic solids: bricks (C3D20 or C3D20R), tetrahedra
+    (C3D10), or bricks with the airfoil in wedges (C3D15). The corner nodes keep their ids
+    1..m (so the excitation and gauge nodes are the blade's), the midside nodes follow; the
+    platform and root sets include their midside nodes."""
 
-    xyz: np.ndarray            # (m20, 3) every node, ids 1..m20
-    elements: np.ndarray       # (n_el, 20) node ids, CalculiX order
+    xyz: np.ndarray            # (n, 3) every node, ids 1..n
+    blocks: list               # [(CalculiX type, (n_el, nodes) node ids in its order)]
     platform_nodes: np.ndarray
     root_nodes: np.ndarray
 
 
-def hex20_mesh(blade: GeneratedBlade) -> Hex20Mesh:
-    """The 20-node bricks of the blade's mesh (one midside node per distinct edge)."""
+def quadratic_mesh(blade: GeneratedBlade, shape: str = "brick") -> QuadraticMesh:
+    """The blade's brick mesh with quadratic elements: ``shape`` "brick" (20-node bricks),
+    "tetra" (each brick as six 10-node tetrahedra) or "mixed" (20-node bricks, the airfoil's
+    bricks as two 15-node wedges each; the wedges meet the platform's bricks on whole faces).
+    One midside node per distinct edge."""
     el = blade.elements - 1
+    if shape == "brick":
+        corners = [("C3D20", el)]
+    elif shape == "tetra":
+        corners = [("C3D10", np.vstack([el[:, list(t)] for t in _KUHN]))]
+    elif shape == "mixed":
+        y_mid = blade.all_xyz[el, 1].mean(axis=1) / MM
+        foil = y_mid > PARTS["airfoil"][1][0]
+        corners = [("C3D20", el[~foil]),
+                   ("C3D15", np.vstack([el[foil][:, list(w)] for w in _WEDGES]))]
+    else:
+        raise ValueError("shape: brick, tetra or mixed")
     m = blade.all_xyz.shape[0]
-    pairs = np.stack([np.sort(el[:, list(e)], axis=1) for e in HEX20_EDGES], axis=1)
-    keys = pairs[..., 0].astype(np.int64) * m + pairs[..., 1]
-    uniq, inverse = np.unique(keys.ravel(), return_inverse=True)
+    keys = [np.stack([np.sort(c[:, list(e)], axis=1) for e in QUADRATIC[t][1]], axis=1)
+            for t, c in corners]
+    flat = np.concatenate([(k[..., 0].astype(np.int64) * m + k[..., 1]).ravel() for k in keys])
+    uniq, inverse = np.unique(flat, return_inverse=True)
     a, b = np.divmod(uniq, m)
     xyz = np.vstack([blade.all_xyz, 0.5 * (blade.all_xyz[a] + blade.all_xyz[b])])
-    elements = np.hstack([el, m + inverse.reshape(keys.shape)]) + 1
+    blocks, start = [], 0
+    for (t, c), k in zip(corners, keys):
+        mid = m + inverse[start:start + k.shape[0] * k.shape[1]].reshape(k.shape[:2])
+        start += k.shape[0] * k.shape[1]
+        blocks.append((t, np.hstack([c, mid]) + 1))
     ids = np.arange(1, xyz.shape[0] + 1)
     p = xyz / MM
     tol = 1e-9
@@ -364,27 +412,33 @@ def hex20_mesh(blade: GeneratedBlade) -> Hex20Mesh:
     on_platform = ((p[:, 0] >= px0 - tol) & (p[:, 0] <= px1 + tol) & (p[:, 1] >= py0 - tol)
                    & (p[:, 1] <= py1 + tol) & (p[:, 2] >= pz0 - tol) & (p[:, 2] <= pz1 + tol))
     root = np.abs(p[:, 1] - PARTS["root"][1][0]) < tol
-    return Hex20Mesh(xyz=xyz, elements=elements, platform_nodes=ids[on_platform],
-                     root_nodes=ids[root])
+    return QuadraticMesh(xyz=xyz, blocks=blocks, platform_nodes=ids[on_platform],
+                         root_nodes=ids[root])
 
 
-def write_hex20_deck(blade: GeneratedBlade, mesh: Hex20Mesh, path, *, element: str = "C3D20R",
+def write_solid_deck(blade: GeneratedBlade, mesh: QuadraticMesh, path, *,
+                     brick: str = "C3D20R",
                      step: str = "*STEP\n*FREQUENCY, SOLVER=MATRIXSTORAGE\n*END STEP",
                      extra_nodes=(), extra: str = "") -> None:
-    """A CalculiX deck of the quadratic mesh: *NODE (plus ``extra_nodes``, (id, xyz) pairs),
-    *ELEMENT of type ``element`` (C3D20 or C3D20R), node sets PLATFORM and ROOT, the
-    material, the root clamp, then ``extra`` and the ``step`` text."""
-    if element not in ("C3D20", "C3D20R"):
-        raise ValueError("element: C3D20 or C3D20R")
+    """A CalculiX deck of the quadratic mesh: *NODE (plus ``extra_nodes``, (id, xyz) pairs), an
+    *ELEMENT block per element type (the bricks as ``brick``, C3D20 or C3D20R), node sets
+    PLATFORM and ROOT, the material, the root clamp, then ``extra`` and the ``step`` text."""
+    if brick not in ("C3D20", "C3D20R"):
+        raise ValueError("brick: C3D20 or C3D20R")
+    types = [brick if t == "C3D20" else t for t, _ in mesh.blocks]
     with open(path, "w") as f:
-        f.write(f"** udmap generated blade, {element}, SI units\n*NODE, NSET=NALL\n")
+        f.write(f"** udmap generated blade, {', '.join(types)}, SI units\n*NODE, NSET=NALL\n")
         f.write(_node_lines(mesh.xyz))
         for node, x in extra_nodes:
             f.write(f"{int(node)}, " + ", ".join(map(_ccx_real, x)) + "\n")
-        f.write(f"*ELEMENT, TYPE={element}, ELSET=EALL\n")
-        for k, e in enumerate(mesh.elements, start=1):   # 21 numbers: two lines of a card
-            f.write(f"{k}, " + ", ".join(map(str, e[:15])) + ",\n"
-                    + ", ".join(map(str, e[15:])) + "\n")
+        k = 0
+        for etype, (_, conn) in zip(types, mesh.blocks):
+            f.write(f"*ELEMENT, TYPE={etype}, ELSET=EALL\n")
+            for e in conn:     # at most 15 numbers a line: the rest on a continuation line
+                k += 1
+                nums = [str(k)] + [str(v) for v in e]
+                f.write(", ".join(nums[:16]) + (",\n" + ", ".join(nums[16:]) if len(nums) > 16
+                                                 else "") + "\n")
         f.write("*NSET, NSET=PLATFORM\n" + _idlines(mesh.platform_nodes))
         f.write("*NSET, NSET=ROOT\n" + _idlines(mesh.root_nodes))
         f.write("*MATERIAL, NAME=BLADE\n*ELASTIC\n"
