@@ -3,13 +3,15 @@
  * udmap.so like an importer, and times communication steps the way a master runs them:
  * set the changed input, fmi2DoStep / fmi3DoStep, get every output.
  *
- *   udmap-fmu-bench SO TOKEN VERSION MODE CYCLES [HARMONICS [F_E_MIN F_E_MAX]]
+ *   udmap-fmu-bench SO TOKEN VERSION MODE CYCLES [HARMONICS [F_E_MIN F_E_MAX [BLADES EO]]]
  *     VERSION 2 or 3; MODE F_E (F_E = 1..10 N in turn, blade A's GG peaks), F_E_dense (F_E
  *     in [1, 10] N by the golden-ratio sequence: every step a new force, never repeated),
  *     F_E_random (F_E uniform in [F_E_MIN, F_E_MAX], a fixed pseudo-random sequence) or
  *     damper (mu alternates between 0.31 and 0.30, F_E = 5 N); HARMONICS the parameter
  *     harmonics (default 1; 0 = auto); F_E_MIN, F_E_MAX the parameters of the force range
- *     prepared at ExitInitializationMode (default: their start values, 1 and 10 N).
+ *     prepared at ExitInitializationMode (default: their start values, 1 and 10 N); BLADES,
+ *     EO the parameters blades and engine_order (default 24 and 0: in phase; at EO != 0 the
+ *     force table is built on demand, as the steps visit it).
  * Prints one JSON object: the median, min, max and mean time of a step [s], the time of
  * ExitInitializationMode [s] and the outputs of the last cycle (for the accuracy columns).
  */
@@ -118,9 +120,9 @@ static double uniform(unsigned long long *state) {
 }
 
 int main(int argc, char **argv) {
-  if (argc != 6 && argc != 7 && argc != 9) {
+  if (argc != 6 && argc != 7 && argc != 9 && argc != 11) {
     fprintf(stderr, "usage: %s SO TOKEN VERSION F_E|F_E_dense|F_E_random|damper CYCLES "
-            "[HARMONICS [F_E_MIN F_E_MAX]]\n", argv[0]);
+            "[HARMONICS [F_E_MIN F_E_MAX [BLADES EO]]]\n", argv[0]);
     return 2;
   }
   const char *token = argv[2];
@@ -129,8 +131,10 @@ int main(int argc, char **argv) {
   int dense = strcmp(argv[4], "F_E_dense") == 0;
   int random = strcmp(argv[4], "F_E_random") == 0;
   int harmonics = argc >= 7 ? atoi(argv[6]) : 1;
-  const double range[2] = {argc == 9 ? atof(argv[7]) : 1.0, argc == 9 ? atof(argv[8]) : 10.0};
+  const double range[2] = {argc >= 9 ? atof(argv[7]) : 1.0, argc >= 9 ? atof(argv[8]) : 10.0};
+  const int wave[2] = {argc == 11 ? atoi(argv[9]) : 24, argc == 11 ? atoi(argv[10]) : 0};
   const unsigned vr_h = vr_harmonics, vr_range[2] = {vr_F_E_min, vr_F_E_max};
+  const unsigned vr_wave[2] = {vr_blades, vr_engine_order};
   unsigned long long seed = 20230523ULL;
   double t_init = 0;
   int cycles = atoi(argv[5]);
@@ -151,10 +155,10 @@ int main(int argc, char **argv) {
     LOAD(f.h, fmi2SetInteger);
     fmi2CallbackFunctions cb = {logger2, NULL, NULL, NULL, NULL};
     f.inst = p_fmi2Instantiate("bench", fmi2CoSimulation, token, "", &cb, fmi2False, fmi2False);
-    const fmi2Integer hv = harmonics;
+    const fmi2Integer hv = harmonics, wv[2] = {wave[0], wave[1]};
     if (!f.inst || p_fmi2SetupExperiment(f.inst, fmi2False, 0, 0, fmi2False, 0) ||
         p_fmi2EnterInitializationMode(f.inst) || p_fmi2SetInteger(f.inst, &vr_h, 1, &hv) ||
-        f.set2(f.inst, vr_range, 2, range))
+        p_fmi2SetInteger(f.inst, vr_wave, 2, wv) || f.set2(f.inst, vr_range, 2, range))
       return 1;
     t_init = now();
     if (p_fmi2ExitInitializationMode(f.inst)) return 1;
@@ -166,9 +170,10 @@ int main(int argc, char **argv) {
     LOAD(f.h, fmi3SetInt32);
     f.inst = p_fmi3InstantiateCoSimulation("bench", token, "", false, false, false, false, NULL,
                                            0, NULL, logger3, NULL);
-    const fmi3Int32 hv = harmonics;
+    const fmi3Int32 hv = harmonics, wv[2] = {wave[0], wave[1]};
     if (!f.inst || p_fmi3EnterInitializationMode(f.inst, false, 0, 0, false, 0) ||
-        p_fmi3SetInt32(f.inst, &vr_h, 1, &hv, 1) || f.set3(f.inst, vr_range, 2, range, 2))
+        p_fmi3SetInt32(f.inst, &vr_h, 1, &hv, 1) || p_fmi3SetInt32(f.inst, vr_wave, 2, wv, 2) ||
+        f.set3(f.inst, vr_range, 2, range, 2))
       return 1;
     t_init = now();
     if (p_fmi3ExitInitializationMode(f.inst)) return 1;
@@ -230,11 +235,13 @@ int main(int argc, char **argv) {
     if (best > retimed_max) retimed_max = best;
   }
   qsort(times, (size_t)n, sizeof(double), cmp);
-  printf("{\"version\": %d, \"mode\": \"%s\", \"harmonics\": %d, \"steps\": %d, "
+  printf("{\"version\": %d, \"mode\": \"%s\", \"harmonics\": %d, \"blades\": %d, "
+         "\"engine_order\": %d, \"steps\": %d, "
          "\"F_E_min\": %.17g, \"F_E_max\": %.17g, \"init_seconds\": %.9e, "
          "\"seconds_median\": %.9e, \"seconds_min\": %.9e, \"seconds_max\": %.9e, "
          "\"seconds_p999\": %.9e, \"seconds_mean\": %.9e, \"steps_over_1ms\": %d, "
-         "\"seconds_max_retimed\": %.9e", version, argv[4], harmonics, n, range[0], range[1],
+         "\"seconds_max_retimed\": %.9e", version, argv[4], harmonics, wave[0], wave[1], n,
+         range[0], range[1],
          t_init, times[n / 2], times[0], times[n - 1], times[(size_t)(0.999 * (n - 1))],
          total / n, slow_total, retimed_max);
   printf(", \"points\": [");

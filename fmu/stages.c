@@ -251,12 +251,11 @@ static Status build_model(ModelInstance *m) {
   m->analysis = a;
   int stat = udmap_new_model(m->err, m->blade, m->damper, &a, &m->model);
   if (stat != UDMAP_OK) return kernel_failure(m, STAGE_MODEL, stat, "udmap_new_model");
-  /* after a change of F_E alone, points at harmonics != 1 come from the verified force table
-   * (exact points, interpolated to harmonic_tol/1000 where a panel of them holds F_E). Not for
-   * a traveling wave: each of its exact points is a root of layer solves (16 to 21 ms on
-   * blade A at EO = 1 of 24), and preparing the range would take some 10 to 20 s per decade
-   * of F_E; each step is solved exactly instead. */
-  if (!m->exact_points && a.ibpa_deg == 0.0) {
+  /* after a change of F_E alone, points come from the verified force table (exact points,
+   * interpolated to harmonic_tol/1000 where a panel of them holds F_E): in phase at harmonics
+   * != 1, for a traveling wave at every H (each exact point there is a root of layer solves,
+   * 16 to 37 ms on blade A at EO = 1 of 24). */
+  if (!m->exact_points) {
     stat = udmap_model_set_force_table(m->err, m->model, 1);
     if (stat != UDMAP_OK)
       return kernel_failure(m, STAGE_MODEL, stat, "udmap_model_set_force_table");
@@ -340,9 +339,17 @@ static Status compute_cover(ModelInstance *m) {
   if (!(lo < hi))
     return failure(m, STAGE_COVER, "F_E_min = %g N must be below F_E_max = %g N", lo, hi);
   if (m->exact_points) return OK;
+  m->outside_logged = false;
+  /* a traveling wave's table is built on demand, as a master's forces visit it: preparing the
+   * range would take some 10 to 20 s per decade of F_E (a few hundred exact points) */
+  if (m->analysis.ibpa_deg != 0.0) {
+    m->cover_lo = m->cover_hi = 0.0;
+    m->cover_points = m->cover_leaves = m->cover_exact = 0;
+    m->cover_seconds = 0.0;
+    return OK;
+  }
   m->cover_lo = lo > 0.0 ? lo : 1e-3 * hi;
   m->cover_hi = hi;
-  m->outside_logged = false;
   const double t0 = seconds();
   int stat = set_harmonics(m);
   if (stat != UDMAP_OK) return kernel_failure(m, STAGE_COVER, stat, "udmap_model_set_harmonics");
@@ -375,6 +382,13 @@ Status model_prepare(ModelInstance *m, const char *fn) {
   const double t = seconds() - t0;
   if (st >= Discard) return OK; /* the gets report it, as without a range */
   char h[16];
+  if (m->analysis.ibpa_deg != 0.0) {
+    model_log_category(m, LOG_EVENTS, OK, "%s: initialization took %.1f ms (blade, damper and "
+                       "model at an interblade phase of %g deg: its force table is built as the "
+                       "forces visit it, not over [%g, %g] N in advance)", fn, 1e3 * t,
+                       m->analysis.ibpa_deg, V(F_E_min), V(F_E_max));
+    return OK;
+  }
   model_log_category(m, LOG_EVENTS, OK, "%s: initialization took %.1f ms (blade, damper, model "
                      "and force range [%g, %g] N at harmonics %s in %.1f ms: %d exact points, "
                      "%d leaves, %d of them exact)", fn, 1e3 * t, m->cover_lo, m->cover_hi,
@@ -414,7 +428,8 @@ static Status compute_point(ModelInstance *m) {
   if (f_exc == 0.0) {
     /* a force outside the prepared range is answered as before (exact, the force table
      * built on demand), and said once per range */
-    if (!m->exact_points && !m->outside_logged && !(F_E >= m->cover_lo && F_E <= m->cover_hi)) {
+    if (!m->exact_points && !m->outside_logged && m->analysis.ibpa_deg == 0.0 &&
+        !(F_E >= m->cover_lo && F_E <= m->cover_hi)) {
       m->outside_logged = true;
       model_log_category(m, LOG_EVENTS, OK, "F_E = %g N is outside the prepared force range "
                          "[%g, %g] N: answered exactly, the force table built on demand (a "

@@ -62,3 +62,33 @@ def test_case_fmu_of_a_matrices_blade_at_an_engine_order(version, tmp_path):
                        start_values={"F_E": 5.0}, output=["gamma_P", "f_res", "sigma_a"])
     for key in ("gamma_P", "f_res", "sigma_a"):
         assert res[key][-1] == pytest.approx(ref[key], rel=1e-12), key
+
+
+def test_force_table_at_an_engine_order():
+    """At EO != 0 the force table is built as the forces visit it (no range prepared at the
+    initialization): the first force of a panel is the exact point; once its panels are
+    built the others come from the table, within harmonic_tol/1000 of the exact points."""
+    import numpy as np
+    case = load_case(str(CASE))
+    model = Model(build_blade(case), build_damper(case), 150.0, 230.0, ibpa_deg=15.0)
+    inst = Instance(2, logging_on=True)
+    assert inst.set(blades=24, engine_order=1) == OK
+    assert inst.setup() == OK
+    assert any("built as the forces visit it" in m for _, _, m in inst.logs)
+    forces = [5.0] + list(np.linspace(4.6, 5.4, 17))
+    exact = {F: p for F, p in zip(forces, model.backbone(forces))}
+    got = []
+    for F in forces:
+        assert inst.set(F_E=F) == OK and inst.step(1e-3) == OK
+        st, out = inst.outputs()
+        assert st == OK, inst.messages()
+        got.append(out)
+    for key in ("gamma_P", "f_res", "sigma_a"):
+        # (the FMU starts the peak search from the secular equation alone: the same roots to
+        # the solver's tolerance)
+        assert got[0][key] == pytest.approx(exact[5.0][key], rel=1e-9), key
+        for F, out in zip(forces, got):
+            assert out[key] == pytest.approx(exact[F][key], rel=1e-6), (F, key)
+    built = [m for _, _, m in inst.logs if m.startswith("force table:")]
+    assert built, "no panel was built"
+    inst.free()
