@@ -23,6 +23,8 @@ seconds per design = wall clock of the run / designs (pool or cluster start-up i
 extras designs, cores, designs_per_second_per_core, designs_per_cpu_second (designs over the
 CPU time of this process and its finished children: the per-core rate that other load on a
 shared machine does not distort; the Dask scheduler's and workers' housekeeping included),
+and a large run (``gg10_1e6_processes<K>``, --million designs, default 10^6, once, on all
+cores, Parquet alone) with its wall_seconds (goal: under 120 s on two workers),
 startup_seconds (the Dask cluster's start), designs_per_second_per_core_after_startup, traces
 (dampers traced by the first run) and outputs (the --outputs of the run, null: all), and,
 for the serial runs, the split of a
@@ -141,6 +143,8 @@ def main() -> int:
     ap.add_argument("--designs", type=int, default=2048, help="designs per serial run")
     ap.add_argument("--repeats", type=int, default=3)
     ap.add_argument("--no-dask", action="store_true", help="skip the Dask LocalCluster run")
+    ap.add_argument("--million", type=int, default=10**6,
+                    help="designs of the large run on all cores, Parquet alone (0: none)")
     args = ap.parse_args()
     case = load_case(ROOT / "cases" / "blade_a.json")
     cores = doe.default_workers()
@@ -203,8 +207,32 @@ def main() -> int:
                       f"{1 / (med * k):.0f} designs/s/core (best {1 / (min(samples) * k):.0f}; "
                       f"goal {GOAL:.0f}), {extra['designs_per_cpu_second']:.0f} designs per "
                       f"CPU second, {extra['traces']:.0f} tracings{start}{split}", flush=True)
+        if args.million:
+            records.append(large_run(case, args.million, cores, Path(tmp) / "large.parquet"))
     Path(args.json).write_text(json.dumps(records, indent=1, allow_nan=False) + "\n")
     return 0
+
+
+def large_run(case, designs: int, cores: int, out: Path) -> dict:
+    """One run of ``designs`` gg10 designs on all cores, written as Parquet alone (what a large
+    study writes: Dask and pandas read it directly): its wall time, rate and tracings."""
+    per_design, summary = run(case, SPACES["gg10"], designs, out, workers=cores,
+                              format="parquet")
+    wall = per_design * designs
+    rec = record("blade_a", "doe", f"gg10_{designs:.0e}_processes{cores}".replace("+0", ""),
+                 {"seconds_median": per_design, "seconds_min": per_design,
+                  "seconds_max": per_design, "repeats": 1},
+                 designs=designs, cores=cores, design_space=" ".join(SPACES["gg10"]),
+                 wall_seconds=wall, designs_per_second_per_core=1.0 / (per_design * cores),
+                 designs_per_cpu_second=designs / summary["cpu_seconds"],
+                 traces=summary["traces"], format="parquet",
+                 parquet_bytes=out.stat().st_size, goal_wall_seconds=120.0,
+                 goal_designs_per_second_per_core=GOAL, status=summary["status"])
+    print(f"bench_doe: gg10, {designs} designs on {cores} workers, Parquet alone: wall "
+          f"{wall:.1f} s (goal 120 s), {1.0 / (per_design * cores):.0f} designs/s/core, "
+          f"{rec['designs_per_cpu_second']:.0f} designs per CPU second, "
+          f"{summary['traces']} tracings, {out.stat().st_size / 1e6:.0f} MB", flush=True)
+    return rec
 
 
 if __name__ == "__main__":
