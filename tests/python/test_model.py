@@ -87,8 +87,8 @@ def test_oscillator_curves_and_response_on_the_equation(oscillator):
     for p in oscillator.response(1.05 / (2 * np.pi), forces):
         assert p["f_res"] == pytest.approx(1.05 / (2 * np.pi), rel=1e-15)
         assert np.max(np.abs(residual(np.array(p["roots"]), 1.05, p["F_E"]))) < 1e-11
-    with pytest.raises(InputError, match="f_exc"):
-        oscillator.response(0.5, [0.1])
+    with pytest.raises(InputError, match="f_exc"):     # beyond 3 f_max
+        oscillator.response(1.0, [0.1])
     with pytest.raises(InputError, match="F_E"):
         oscillator.backbone([0.1, -1.0])
 
@@ -180,7 +180,7 @@ def test_cli_unbounded_is_null_with_message(write_case):
 def test_cli_exit_statuses(write_case):
     assert run_cli("backbone", str(CASE), "--forces", "-1").returncode == 2
     assert run_cli("backbone", str(CASE)).returncode == 2
-    assert run_cli("response", str(CASE), "--forces", "1", "--freq", "400").returncode == 2
+    assert run_cli("response", str(CASE), "--forces", "1", "--freq", "700").returncode == 2
     path = write_case("band", analysis=dict(f_min=100.0, f_max=150.0))
     r = run_cli("backbone", str(path), "--forces", "1")
     assert r.returncode == 3 and "no resonance" in r.stderr
