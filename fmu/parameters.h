@@ -133,7 +133,8 @@
   X(F_E_min, REAL, PARAMETER, RANGE, "N", 1.0, 0.0, NOLIMIT, 0, \
     "Lowest F_E the master will use (with F_E_max; F_E_min < F_E_max): the initialization " \
     "prepares the force range so that no later step in it builds anything (0: from " \
-    "F_E_max/1000)") \
+    "F_E_max/1000; at an engine order other than 0 the range is built as the forces visit " \
+    "it)") \
   X(F_E_max, REAL, PARAMETER, RANGE, "N", 10.0, 0.0, NOLIMIT, 0, \
     "Highest F_E the master will use; a force outside [F_E_min, F_E_max] is still answered " \
     "exactly, possibly in a longer step")
