@@ -1,5 +1,5 @@
 """Every FE reader gives the same model as the plain Matrix Market form of the same blade:
-the real Abaqus and ANSYS exports in tests/data/fe (EXUDYN test data, LICENSE-EXUDYN.txt) and
+the real Abaqus and ANSYS exports in tests/data/fe/real (EXUDYN test data, LICENSE-EXUDYN.txt) and
 fresh CalculiX exports made here by running ccx."""
 from __future__ import annotations
 
@@ -18,7 +18,7 @@ from udmap.fe import nastran, read_fe
 from fe_compare import ccx_section, rel, same_model, via_matrix_market
 
 
-DATA = Path(__file__).resolve().parents[1] / "data" / "fe"
+DATA = Path(__file__).resolve().parents[1] / "data" / "fe" / "real"
 ROTOR_ABAQUS = {"format": "abaqus", "files": {"stiffness": "abaqus/rotorDiscTestSTIF1.mtx",
                                               "mass": "abaqus/rotorDiscTestMASS1.mtx",
                                               "inp": "abaqus/rotorDiscTest.inp"}}
