@@ -16,13 +16,13 @@ module udmap_mapping_model_data
     & backbone_eval_type
   public :: check_model_damper, set_damper, limit_force, limit_force_or_huge, regime_of, &
     & fill_point, check_forces, check_response_frequency, &
-    & limit_force_backbone, damper_fingerprint, RESPONSE_REACH
+    & limit_force_backbone, damper_fingerprint
   public :: EIGEN_AUTO, EIGEN_DIRECT, EIGEN_MODAL
+  public :: REGIME_STUCK, REGIME_PARTIAL_SLIP, REGIME_FULL_SLIP, REGIME_LIMIT
+  public :: BRANCH_LOWER, BRANCH_UPPER, BRANCH_TURNING
 
   !> The response at a fixed frequency reaches this many times f_max.
   real(wp), parameter :: RESPONSE_REACH = 3
-  public :: REGIME_STUCK, REGIME_PARTIAL_SLIP, REGIME_FULL_SLIP, REGIME_LIMIT
-  public :: BRANCH_LOWER, BRANCH_UPPER, BRANCH_TURNING
 
   !> Eigenvalue start: a direct solver once per model for the first layer, then the secular
   !> equation from layer to layer (default).
