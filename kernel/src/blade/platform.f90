@@ -17,10 +17,12 @@ module udmap_blade_platform
   use udmap_core_lapack, only: zgetrf, zgetrs
   use udmap_blade_type, only: blade_type
   use udmap_blade_band, only: band_to_dense
+  use udmap_blade_dd, only: dot_dd
   implicit none
   private
   public :: set_platform_translations, platform_translations_known
   public :: platform_receptances_type, platform_receptances, platform_rows
+  public :: platform_modal_type, platform_modal
   public :: platform_unknowns_type, platform_active, platform_count, platform_scales, &
     & platform_pack, platform_unpack, platform_balance
 
@@ -31,6 +33,17 @@ module udmap_blade_platform
     !> d/domega of pp and pE (on request): -Z_a^T D'(omega) Z_b, D' = -2 omega M + i C.
     complex(wp) :: dpp(3,3) = 0, dpE(3) = 0
   end type platform_receptances_type
+
+  !> The platform receptances as modal sums, for the inner loops of the traveling waves:
+  !> with C = beta K and every mode computed, D(omega)^-1 = sum_r phi_r phi_r^T/(w_r^2 f -
+  !> omega^2), f = 1 + i omega beta, exactly; an evaluation then costs O(ndof) instead of a
+  !> dense complex factorisation. Products per mode r, b(:, r): the rows u_P, v_P, gamma_P, the
+  !> excitation DOF, s_K and s_M with phi_r.
+  type :: platform_modal_type
+    logical :: active = .false.
+    real(wp) :: beta = 0
+    real(wp), allocatable :: w2(:), b(:, :)
+  end type platform_modal_type
 
   !> The unknowns of the platform's harmonic balance (PHYSICS.md 2.6): harmonics 1 (H = 1) or
   !> 0..H, coordinates c = 1 (u_P), 2 (v_P, when the blade has it), 3 (gamma_P); at h = 0 only
@@ -229,13 +242,50 @@ contains
     B(blade%gamma_dof, 3) = 1
   end subroutine platform_rows
 
-  !> Platform receptances at omega [rad/s] (omega = 0: static).
-  subroutine platform_receptances(blade, omega, r, error, derivatives)
+  !> The modal form of the blade's platform receptances (inactive, and the dense solve kept,
+  !> with an explicit C or when not every mode is computed).
+  subroutine platform_modal(blade, pm)
+    type(blade_type), intent(in) :: blade
+    type(platform_modal_type), intent(out) :: pm
+    real(wp), allocatable :: B(:, :)
+    real(wp) :: pg, pe
+    integer :: m
+    pm%active = platform_translations_known(blade) .and. .not. blade%explicit_C .and. &
+      & blade%nmodes == blade%ndof .and. allocated(blade%phi) .and. allocated(blade%w2)
+    if (.not. pm%active) return
+    allocate(B(blade%ndof, 6), source=0.0_wp)
+    call platform_rows(blade, B(:, 1:3))
+    B(blade%exc_dof, 4) = 1
+    pm%b = transpose(matmul(transpose(blade%phi), B))
+    if (blade%has_stress) then
+      ! s_K.phi_r as the blade took it, without the cancellation of the element stiffnesses
+      ! (blade%coef: (s_K.phi) phi_E, (s_K.phi) phi_g; s_M.phi in double-double)
+      do m = 1, blade%nmodes
+        pg = blade%phi(blade%gamma_dof, m)
+        pe = blade%phi(blade%exc_dof, m)
+        if (abs(pg) >= abs(pe) .and. pg /= 0) then
+          pm%b(5, m) = blade%coef(6, m)/pg
+        else if (pe /= 0) then
+          pm%b(5, m) = blade%coef(4, m)/pe
+        else
+          pm%b(5, m) = dot_dd(blade%s_K, blade%phi(:, m))
+        end if
+        pm%b(6, m) = dot_dd(blade%s_M, blade%phi(:, m))
+      end do
+    end if
+    pm%w2 = blade%w2(1:blade%nmodes)
+    pm%beta = blade%beta
+  end subroutine platform_modal
+
+  !> Platform receptances at omega [rad/s] (omega = 0: static); from the modal sums where
+  !> `modal` is given and active, else by a dense solve.
+  subroutine platform_receptances(blade, omega, r, error, derivatives, modal)
     type(blade_type), intent(in) :: blade
     real(wp), intent(in) :: omega
     type(platform_receptances_type), intent(out) :: r
     type(error_type), allocatable, intent(out) :: error
     logical, intent(in), optional :: derivatives
+    type(platform_modal_type), intent(in), optional :: modal
     complex(wp), allocatable :: D(:, :), Z(:, :), dD(:, :), Y(:, :)
     real(wp), allocatable :: B(:, :), K(:, :), M(:, :), s(:), Cd(:, :)
     integer, allocatable :: ipiv(:)
@@ -246,6 +296,12 @@ contains
         & "waves need u_P: blade.u_dof on a matrices blade, platform.tangent on an fe blade)", &
         & UDMAP_EINPUT)
       return
+    end if
+    if (present(modal)) then
+      if (modal%active) then
+        call modal_sums(modal)
+        return
+      end if
     end if
     if (allocated(blade%K)) then
       K = blade%K
@@ -302,5 +358,45 @@ contains
       end do
       r%sE = sum(s*Z(:, 4))
     end if
+
+  contains
+
+    !> The receptances as sums over every mode (the same equations as the dense solve).
+    subroutine modal_sums(pm)
+      type(platform_modal_type), intent(in) :: pm
+      complex(wp) :: g(size(pm%w2)), dg(size(pm%w2)), gs(size(pm%w2))
+      integer :: ia, ic
+      g = 1/(pm%w2*cmplx(1.0_wp, omega*pm%beta, wp) - omega**2)
+      if (.not. all(g == g .and. abs(g) <= huge(1.0_wp))) then
+        call fatal_error(error, "blade: the dynamic stiffness is singular at this frequency "// &
+          & "(an undamped natural frequency)", UDMAP_ENUMERIC)
+        return
+      end if
+      do ic = 1, 3
+        do ia = 1, 3
+          r%pp(ia, ic) = sum(pm%b(ia, :)*pm%b(ic, :)*g)
+        end do
+        r%pE(ic) = sum(pm%b(ic, :)*pm%b(4, :)*g)
+      end do
+      r%EE = sum(pm%b(4, :)**2*g)
+      if (present(derivatives)) then
+        if (derivatives) then
+          dg = -cmplx(-2*omega, pm%beta*pm%w2, wp)*g*g
+          do ic = 1, 3
+            do ia = 1, 3
+              r%dpp(ia, ic) = sum(pm%b(ia, :)*pm%b(ic, :)*dg)
+            end do
+            r%dpE(ic) = sum(pm%b(ic, :)*pm%b(4, :)*dg)
+          end do
+        end if
+      end if
+      if (blade%has_stress) then
+        gs = (pm%b(5, :) - omega**2*pm%b(6, :))*g
+        do ic = 1, 3
+          r%sp(ic) = sum(pm%b(ic, :)*gs)
+        end do
+        r%sE = sum(pm%b(4, :)*gs)
+      end if
+    end subroutine modal_sums
   end subroutine platform_receptances
 end module udmap_blade_platform

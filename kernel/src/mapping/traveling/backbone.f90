@@ -27,6 +27,7 @@ module udmap_mapping_traveling_backbone
     & cover_table, reset_table
   use udmap_mapping_traveling_layer, only: traveling_type, wave_layer_type, new_traveling, &
     & wave_peak, wave_layer_solve, wave_layer_slope
+  use udmap_mapping_traveling_point, only: wave_point
   implicit none
   private
   public :: wave_backbone, wave_response, wave_limit_force, interblade_phase, new_model_traveling, &
@@ -252,8 +253,15 @@ contains
       type(error_type), allocatable, intent(out) :: err
       type(brent_type) :: bs
       real(wp) :: lo, hi, glo, ghi, g, x, slope, step
-      logical :: more
+      logical :: more, ok
       integer :: k
+      ! the whole point at once; the nested search below where that does not converge
+      call wave_point(tw, F, gamma0, omega0, L, ok)
+      if (ok) then
+        call fill_point(tw, L, L%gamma, F, F_lim, model%analysis%sigma_all, pt)
+        return
+      end if
+      L = wave_layer_type()
       w = omega0
       F_cur = F
       lo = log(gamma0)

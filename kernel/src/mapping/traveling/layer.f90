@@ -19,6 +19,7 @@ module udmap_mapping_traveling_layer
   use udmap_core_root_finding, only: brent_type, brent_start, brent_next, brent_update
   use udmap_blade_type, only: blade_type
   use udmap_blade_platform, only: platform_receptances_type, platform_receptances, &
+    & platform_modal_type, platform_modal, &
     & platform_unknowns_type, platform_active, platform_count, platform_scales, platform_pack, &
     & platform_unpack, platform_balance
   use udmap_damper_tracer_core, only: damper_geometry_type
@@ -27,7 +28,7 @@ module udmap_mapping_traveling_layer
   implicit none
   private
   public :: traveling_type, wave_layer_type, new_traveling, wave_layer_solve, wave_peak, &
-    & wave_layer_slope
+    & wave_layer_slope, wave_balance_omega
 
   !> Relative finite-difference step, Newton tolerance (to the layer's scale) and cap.
   real(wp), parameter :: fd_step = 1.0e-7_wp, newton_tol = 1.0e-13_wp
@@ -46,8 +47,9 @@ module udmap_mapping_traveling_layer
     type(platform_unknowns_type) :: u
     !> Static action of the loaded damper on blade 0 (the blade's reference state).
     real(wp) :: A_ref(3) = 0
-    !> Static platform receptances (for Gamma_0).
+    !> Static platform receptances (for Gamma_0); the modal form of the receptances.
     type(platform_receptances_type) :: r0
+    type(platform_modal_type) :: modal
     type(wave_settings_type) :: settings
     !> Band [rad/s].
     real(wp) :: omega_lo = 0, omega_hi = 0
@@ -106,7 +108,8 @@ contains
       & gamma1_fixed=.true., lever=max(maxval(abs(geo%cn)), maxval(abs(geo%ct)), tiny(1.0_wp)))
     call wave_static_action(geo, CF, tw%A_ref, error)
     if (allocated(error)) return
-    if (H > 1) call platform_receptances(blade, 0.0_wp, tw%r0, error)
+    call platform_modal(blade, tw%modal)
+    if (H > 1) call platform_receptances(blade, 0.0_wp, tw%r0, error, modal=tw%modal)
   end subroutine new_traveling
 
   !> Solves the layer (gamma, omega), starting from what L holds (a neighbouring solution;
@@ -147,7 +150,8 @@ contains
     L%omega = omega
     allocate(r(tw%H))
     do h = 1, tw%H
-      call platform_receptances(tw%blade, h*omega, r(h), error, derivatives=.true.)
+      call platform_receptances(tw%blade, h*omega, r(h), error, derivatives=.true., &
+        & modal=tw%modal)
       if (allocated(error)) return
     end do
     allocate(x(n), R0(n), Rt(n), dx(n), xt(n), sc(n), ipiv(n), Rw(n))
@@ -227,7 +231,7 @@ contains
     end if
     ! psi: the receptances' part at fixed x (no trace), from their exact derivatives
     call balance(r, x, R0, F0)
-    call balance_omega(r, Rw, dF)
+    call wave_balance_omega(tw%u, r, tw%H, gamma, L%A, Rw, dF)
     dx = -Rw
     call dgetrs('N', n, 1, L%LU, n, L%ipiv, dx, n, info)
     dF = dF + sum(L%Fx*dx)
@@ -306,40 +310,47 @@ contains
       L%P(3, 1) = cmplx(gamma, 0.0_wp, wp)
     end subroutine unpack_x
 
-    !> d/domega at fixed x of the balance (Rw) and of the force (Fw), with the action in L
-    !> and F in L%F... from the receptances rr and their derivatives (harmonic h: h H'(h omega)).
-    subroutine balance_omega(rr, Rw_, Fw)
-      type(platform_receptances_type), intent(in) :: rr(:)
-      real(wp), intent(out) :: Rw_(:)
-      complex(wp), intent(out) :: Fw
-      complex(wp) :: z, dHA(3), Fv
-      integer :: i, hh, c
-      Fv = (gamma + sum(rr(1)%pp(3, :)*L%A(:, 1)))/rr(1)%pE(3)
-      Fw = (sum(rr(1)%dpp(3, :)*L%A(:, 1)) - Fv*rr(1)%dpE(3))/rr(1)%pE(3)
-      i = 0
-      do hh = merge(1, 0, tw%H == 1), tw%H
-        if (hh > 0) dHA = hh*matmul(rr(hh)%dpp, L%A(:, hh))
-        do c = 1, 3
-          if (.not. platform_active(tw%u, hh, c)) cycle
-          i = i + 1
-          if (hh == 0) then
-            Rw_(i) = 0
-          else
-            z = dHA(c)
-            if (hh == 1) z = z - rr(1)%dpE(c)*Fv - rr(1)%pE(c)*Fw
-            Rw_(i) = real(z, wp)
-            i = i + 1
-            Rw_(i) = aimag(z)
-          end if
-        end do
-      end do
-    end subroutine balance_omega
 
     pure real(wp) function wnorm(Rv)
       real(wp), intent(in) :: Rv(:)
       wnorm = norm2(Rv/sc)
     end function wnorm
   end subroutine wave_layer_solve
+
+  !> d/domega at fixed platform harmonics of the balance (Rw) and of the force (Fw), the
+  !> layer gamma with the damper's action A, from the receptances rr and their derivatives
+  !> (harmonic h: h H'(h omega)).
+  pure subroutine wave_balance_omega(u, rr, H, gamma, A, Rw, Fw)
+    type(platform_unknowns_type), intent(in) :: u
+    type(platform_receptances_type), intent(in) :: rr(:)
+    integer, intent(in) :: H
+    real(wp), intent(in) :: gamma
+    complex(wp), intent(in) :: A(:, :)
+    real(wp), intent(out) :: Rw(:)
+    complex(wp), intent(out) :: Fw
+    complex(wp) :: z, dHA(3), Fv
+    integer :: i, hh, c
+    Fv = (gamma + sum(rr(1)%pp(3, :)*A(:, 1)))/rr(1)%pE(3)
+    Fw = (sum(rr(1)%dpp(3, :)*A(:, 1)) - Fv*rr(1)%dpE(3))/rr(1)%pE(3)
+    dHA = 0
+    i = 0
+    do hh = merge(1, 0, H == 1), H
+      if (hh > 0) dHA = hh*matmul(rr(hh)%dpp, A(:, hh))
+      do c = 1, 3
+        if (.not. platform_active(u, hh, c)) cycle
+        i = i + 1
+        if (hh == 0) then
+          Rw(i) = 0
+        else
+          z = dHA(c)
+          if (hh == 1) z = z - rr(1)%dpE(c)*Fv - rr(1)%pE(c)*Fw
+          Rw(i) = real(z, wp)
+          i = i + 1
+          Rw(i) = aimag(z)
+        end if
+      end do
+    end do
+  end subroutine wave_balance_omega
 
   !> The peak of the layer gamma: the minimum of |F(omega)| over the band, the root of
   !> psi = d|F|^2/domega bracketed outward from omega_guess (0: the band's middle) and refined by
@@ -428,7 +439,7 @@ contains
     n = platform_count(tw%u)
     allocate(r(tw%H), x(n), R0(n), Rp(n), dx(n), Ap(3, tw%H))
     do h = 1, tw%H
-      call platform_receptances(tw%blade, h*L%omega, r(h), error)
+      call platform_receptances(tw%blade, h*L%omega, r(h), error, modal=tw%modal)
       if (allocated(error)) return
     end do
     call platform_pack(tw%u, L%P0(3), L%P, x)

@@ -1,0 +1,351 @@
+!> A traveling-wave peak at a given force in one Newton iteration on the whole point
+!> (PHYSICS.md 2.6): the unknowns are the platform's harmonics x (as in a layer), the
+!> amplitude gamma and omega; the equations are the layer's balance R = 0, the peak
+!> psi = d|F|^2/domega = 0 and |F| = F_E.
+!>
+!! Why: the nested search (the root in gamma of layer peaks, each a root in omega of layer
+!! solves, each a Newton iteration with a Jacobian of its own) traces the damper some 140
+!! times per peak. Only the damper's action A(x, gamma) needs a trace, and it does not depend
+!! on omega. So A is linearised once, A ~ A_b + D (y - y_b), y = (x, gamma); with the linear
+!! action the whole point is solved without a trace: at each omega the balance is linear in
+!! y, |F|^2 = F_E^2 is a quadratic in gamma, and psi(omega) = 0 is a scalar root (Brent). The
+!! point found is traced again and the action re-linearised there (Broyden's update; the
+!! differences again after a large step or a poor contraction), until the step is at the
+!! rounding floor. The point is then that of the same equations as the layers', exactly: the
+!! balance holds with the traced action, and psi takes D from differences within 1e-4 of the
+!! point, as the layer's solve does. Some 10 to 20 traces per peak.
+module udmap_mapping_traveling_point
+  use udmap_core_kinds, only: wp
+  use udmap_core_error, only: error_type
+  use udmap_core_lapack, only: dgetrf, dgetrs
+  use udmap_core_root_finding, only: brent_type, brent_start, brent_next, brent_update
+  use udmap_blade_platform, only: platform_receptances_type, platform_receptances, &
+    & platform_count, platform_scales, platform_pack, platform_unpack, platform_balance
+  use udmap_contact_element_wave, only: wave_aft, wave_result_type
+  use udmap_mapping_traveling_layer, only: traveling_type, wave_layer_type, &
+    & wave_layer_solve, wave_balance_omega
+  implicit none
+  private
+  public :: wave_point
+
+  !> Relative difference step of D, the step at which the point is converged, the largest
+  !> distance (scaled) of D's differences from the point for psi, and the iteration cap.
+  real(wp), parameter :: fd_step = 1.0e-7_wp, step_tol = 1.0e-10_wp, d_reach = 1.0e-4_wp
+  real(wp), parameter :: newton_accept = 1.0e-6_wp
+  integer, parameter :: max_outer = 30
+  !> Relative tolerance of the root of psi in omega (at fixed action: no trace).
+  real(wp), parameter :: omega_rtol = 1.0e-13_wp
+
+  !> The action linearised about y_b: A(y) = A_b + sum_k dA(:, :, k) (y_k - y_b(k)).
+  type :: linear_action_type
+    real(wp), allocatable :: yb(:), dA0(:, :)
+    real(wp) :: Ab0(3) = 0
+    complex(wp), allocatable :: Ab(:, :), dA(:, :, :)
+  end type linear_action_type
+
+contains
+
+  !> The peak of force F_E [N], started from gamma0 [rad], omega0 [rad/s] and the platform's
+  !> harmonics in L (scaled to gamma0; none: a cold start). On success (ok) L holds the point
+  !> as wave_peak leaves it. ok = .false. when the iteration does not converge (the caller
+  !> then takes the nested search, which names the reason).
+  subroutine wave_point(tw, F_E, gamma0, omega0, L, ok)
+    type(traveling_type), intent(inout) :: tw
+    real(wp), intent(in) :: F_E, gamma0, omega0
+    type(wave_layer_type), intent(inout) :: L
+    logical, intent(out) :: ok
+    type(linear_action_type) :: lin
+    type(wave_result_type) :: res
+    type(error_type), allocatable :: err
+    real(wp), allocatable :: y(:), y1(:), sc(:), yD(:), s(:)
+    real(wp) :: w, w1, step, step_prev, dist, A0c(3), A0p(3), bracket
+    complex(wp), allocatable :: Ac(:, :), Ap(:, :)
+    integer :: n, ny, it, k
+    logical :: fresh
+
+    ok = .false.
+    n = platform_count(tw%u)
+    ny = n + 1
+    w = omega0
+    if (.not. (w > tw%omega_lo .and. w < tw%omega_hi)) w = 0.5_wp*(tw%omega_lo + tw%omega_hi)
+    if (L%gamma > 0) then
+      L%P = L%P*(gamma0/L%gamma)
+      L%P0 = L%P0*(gamma0/L%gamma)
+    else
+      ! a cold start: the platform's harmonics of the layer gamma0 at omega0 (the linear
+      ! action about zero translations can be far off)
+      call wave_layer_solve(tw, gamma0, w, L, err)
+      if (allocated(err)) return
+    end if
+    allocate(y(ny), y1(ny), sc(ny), yD(ny), s(ny), Ac(3, tw%H), Ap(3, tw%H))
+    allocate(lin%yb(ny), lin%dA0(3, ny), lin%Ab(3, tw%H), lin%dA(3, tw%H, ny))
+    L%P(3, 1) = gamma0
+    call platform_pack(tw%u, L%P0(3), L%P, y(1:n))
+    y(ny) = gamma0
+    bracket = 1e-3_wp*w
+    fresh = .true.
+    step_prev = huge(1.0_wp)
+    do it = 1, max_outer
+      call scales(y(ny))
+      if (.not. trace(y, A0c, Ac, res)) return
+      if (fresh) then
+        do k = 1, ny
+          s = y
+          s(k) = y(k) + fd_step*sc(k)
+          if (.not. trace(s, A0p, Ap)) return
+          lin%dA0(:, k) = (A0p - A0c)/(fd_step*sc(k))
+          lin%dA(:, :, k) = (Ap - Ac)/(fd_step*sc(k))
+        end do
+        yD = y
+      else
+        call broyden(lin, y, A0c, Ac, sc)
+      end if
+      lin%yb = y
+      lin%Ab0 = A0c
+      lin%Ab = Ac
+      call peak(lin, w, bracket, w1, y1, L, ok)
+      if (.not. ok) return
+      ok = .false.
+      step = maxval(abs(y1 - y)/sc)
+      bracket = max(4*abs(w1 - w), 1e-9_wp*w1)
+      y = y1
+      w = w1
+      call scales(y(ny))
+      dist = maxval(abs(y - yD)/sc)
+      ! converged: a step at the rounding floor, or a Newton step (D from differences at the
+      ! base) so small that the linear action's error, O(step^2), is below it
+      if ((step <= step_tol .and. dist <= d_reach) .or. (fresh .and. step <= newton_accept)) then
+        ok = .true.
+        exit
+      end if
+      ! Newton (new differences) while far or not contracting, Broyden when close
+      fresh = step > d_reach .or. step > 0.25_wp*step_prev .or. dist > d_reach
+      step_prev = step
+    end do
+    if (.not. ok) return
+    L%trace = res
+    L%gamma = y(ny)
+    L%solved = .true.
+    L%J_valid = .false.
+    L%bracket = bracket
+
+  contains
+
+    !> Scales of y at the amplitude g: the layer's, and g itself for gamma.
+    subroutine scales(g)
+      real(wp), intent(in) :: g
+      call platform_scales(tw%u, g, sc(1:n))
+      sc(ny) = g
+    end subroutine scales
+
+    !> The damper's action at y (a trace); .false. when the trace fails.
+    logical function trace(yv, A0v, Av, r)
+      real(wp), intent(in) :: yv(:)
+      real(wp), intent(out) :: A0v(3)
+      complex(wp), intent(out) :: Av(:, :)
+      type(wave_result_type), intent(out), optional :: r
+      type(error_type), allocatable :: err
+      real(wp) :: P0(3)
+      complex(wp) :: P(3, tw%H)
+      call unpack_y(yv, P0, P)
+      call wave_aft(tw%geo, tw%CF, tw%phi, P0, P, tw%settings, A0v, Av, err, r)
+      tw%traces = tw%traces + 1
+      trace = .not. allocated(err)
+    end function trace
+
+    subroutine unpack_y(yv, P0, P)
+      real(wp), intent(in) :: yv(:)
+      real(wp), intent(out) :: P0(3)
+      complex(wp), intent(out) :: P(:, :)
+      P = 0
+      P0 = 0
+      call platform_unpack(tw%u, yv(1:n), P0(3), P)
+      P(3, 1) = cmplx(yv(ny), 0.0_wp, wp)
+    end subroutine unpack_y
+
+    !> The peak of the linear action: the root of psi(omega) on |F| = F_E, bracketed outward
+    !> from w0 by steps from d and refined by Brent's method; y_out and L at the root.
+    subroutine peak(la, w0, d0, w_out, y_out, Lo, good)
+      type(linear_action_type), intent(in) :: la
+      real(wp), intent(in) :: w0, d0
+      real(wp), intent(out) :: w_out, y_out(:)
+      type(wave_layer_type), intent(inout) :: Lo
+      logical, intent(out) :: good
+      type(brent_type) :: bs
+      real(wp) :: a, b, fa, fb, d, x, fx
+      logical :: more
+      integer :: kk
+      w_out = w0
+      a = w0
+      call at_omega(la, a, y_out, Lo, fa, good)
+      if (.not. good) return
+      d = d0
+      b = a
+      fb = fa
+      do kk = 1, 60
+        if (fa*fb <= 0 .and. a /= b) exit
+        a = b
+        fa = fb
+        b = a - sign(d, fa)
+        good = b > tw%omega_lo .and. b < tw%omega_hi
+        if (.not. good) return
+        call at_omega(la, b, y_out, Lo, fb, good)
+        if (.not. good) return
+        d = 2*d
+      end do
+      good = fa*fb <= 0
+      if (.not. good) return
+      call brent_start(bs, a, fa, b, fb, omega_rtol*a)
+      do
+        call brent_next(bs, x, more)
+        if (.not. more) exit
+        call at_omega(la, x, y_out, Lo, fx, good)
+        if (.not. good) return
+        call brent_update(bs, fx)
+      end do
+      if (Lo%omega /= x) call at_omega(la, x, y_out, Lo, fx, good)
+      w_out = x
+    end subroutine peak
+
+    !> At omega wv with the linear action la: y_out on |F| = F_E (the balance is linear in y,
+    !> |F|^2 a quadratic in gamma: its larger root), psi there, and Lo filled as the layer's
+    !> solve fills it. good = .false. when |F| does not reach F_E at wv.
+    subroutine at_omega(la, wv, y_out, Lo, psi, good)
+      type(linear_action_type), intent(in) :: la
+      real(wp), intent(in) :: wv
+      real(wp), intent(out) :: y_out(:), psi
+      type(wave_layer_type), intent(inout) :: Lo
+      logical, intent(out) :: good
+      type(platform_receptances_type) :: r(tw%H)
+      type(error_type), allocatable :: err
+      real(wp) :: Jy(n, ny), Rb(n), Rk(n), ax(n), bx(n), Rw(n), xw(n), yk(ny), A0v(3), sk
+      real(wp) :: qa, qb, qc, disc, q, t
+      complex(wp) :: Fy(ny), Fb_, Fk, Fa_, Fg, F, Fw
+      complex(wp) :: Av(3, tw%H)
+      integer :: ipiv(n), info, h, kk
+      psi = 0
+      good = .false.
+      do h = 1, tw%H
+        call platform_receptances(tw%blade, h*wv, r(h), err, derivatives=.true., &
+          & modal=tw%modal)
+        if (allocated(err)) return
+      end do
+      ! the balance and the force are affine in y: their columns by unit differences
+      call balance_at(r, la, la%yb, Rb, Fb_)
+      do kk = 1, ny
+        sk = max(abs(la%yb(kk)), sc(kk))
+        yk = la%yb
+        yk(kk) = la%yb(kk) + sk
+        call balance_at(r, la, yk, Rk, Fk)
+        Jy(:, kk) = (Rk - Rb)/sk
+        Fy(kk) = (Fk - Fb_)/sk
+      end do
+      call dgetrf(n, n, Jy, n, ipiv, info)
+      if (info /= 0) return
+      ax = -Rb
+      bx = -Jy(:, ny)
+      call dgetrs('N', n, 1, Jy, n, ipiv, ax, n, info)
+      call dgetrs('N', n, 1, Jy, n, ipiv, bx, n, info)
+      ! F(t) = Fa + t Fg along the layers gamma = gamma_b + t; |F(t)|^2 = F_E^2
+      Fa_ = Fb_ + sum(Fy(1:n)*ax)
+      Fg = sum(Fy(1:n)*bx) + Fy(ny)
+      qa = abs(Fg)**2
+      qb = real(conjg(Fa_)*Fg, wp)
+      qc = abs(Fa_)**2 - F_E**2
+      disc = qb*qb - qa*qc
+      if (.not. (qa > 0)) return
+      if (disc >= 0) then
+        q = -(qb + sign(sqrt(disc), qb))
+        if (q == 0) return
+        t = max(q/qa, qc/q)
+      else
+        ! the line F(t) passes F_E's circle by (a start far from the point): its closest
+        ! approach; the next linearisation, nearer, crosses the circle
+        t = -qb/qa
+      end if
+      y_out(1:n) = la%yb(1:n) + ax + t*bx
+      y_out(ny) = la%yb(ny) + t
+      if (.not. (y_out(ny) > 0)) return
+      ! psi at fixed gamma: the platform's harmonics follow omega through the balance
+      call action(la, y_out, A0v, Av)
+      F = Fa_ + t*Fg
+      call wave_balance_omega(tw%u, r, tw%H, y_out(ny), Av, Rw, Fw)
+      xw = -Rw
+      call dgetrs('N', n, 1, Jy, n, ipiv, xw, n, info)
+      Fw = Fw + sum(Fy(1:n)*xw)
+      psi = 2*real(conjg(F)*Fw, wp)
+      Lo%omega = wv
+      Lo%F = F
+      Lo%psi = psi
+      Lo%A = Av
+      Lo%A0 = A0v
+      call unpack_y(y_out, Lo%P0, Lo%P)
+      do h = 1, tw%H
+        Lo%sigma(h) = -sum(r(h)%sp*Av(:, h))
+        Lo%uE(h) = -sum(r(h)%pE*Av(:, h))
+      end do
+      Lo%sigma(1) = Lo%sigma(1) + r(1)%sE*F
+      Lo%uE(1) = Lo%uE(1) + r(1)%EE*F
+      good = ieee_finite(psi)
+
+    end subroutine at_omega
+
+    !> The residual of the balance and the force at yv with the linear action lb and the
+    !> receptances rr.
+    subroutine balance_at(rr, lb, yv, Rv, Fv)
+      type(platform_receptances_type), intent(in) :: rr(:)
+      type(linear_action_type), intent(in) :: lb
+      real(wp), intent(in) :: yv(:)
+      real(wp), intent(out) :: Rv(:)
+      complex(wp), intent(out) :: Fv
+      real(wp) :: P0(3), A0l(3)
+      complex(wp) :: P(3, tw%H), Al(3, tw%H)
+      call unpack_y(yv, P0, P)
+      call action(lb, yv, A0l, Al)
+      Fv = (yv(ny) + sum(rr(1)%pp(3, :)*Al(:, 1)))/rr(1)%pE(3)
+      call platform_balance(tw%u, rr, tw%r0, P0(3), P, A0l, Al, tw%A_ref, Fv, Rv)
+    end subroutine balance_at
+
+    pure logical function ieee_finite(v)
+      real(wp), intent(in) :: v
+      ieee_finite = v == v .and. abs(v) <= huge(v)
+    end function ieee_finite
+  end subroutine wave_point
+
+  !> The linear action at y.
+  pure subroutine action(la, y, A0, A)
+    type(linear_action_type), intent(in) :: la
+    real(wp), intent(in) :: y(:)
+    real(wp), intent(out) :: A0(3)
+    complex(wp), intent(out) :: A(:, :)
+    integer :: k
+    A0 = la%Ab0
+    A = la%Ab
+    do k = 1, size(y)
+      if (y(k) == la%yb(k)) cycle
+      A0 = A0 + la%dA0(:, k)*(y(k) - la%yb(k))
+      A = A + la%dA(:, :, k)*(y(k) - la%yb(k))
+    end do
+  end subroutine action
+
+  !> Broyden's update of D with the trace (A0c, Ac) at y: the rank-one change, in the scaled
+  !> coordinates, that makes the linear action exact along the last step.
+  pure subroutine broyden(la, y, A0c, Ac, sc)
+    type(linear_action_type), intent(inout) :: la
+    real(wp), intent(in) :: y(:), A0c(3), sc(:)
+    complex(wp), intent(in) :: Ac(:, :)
+    real(wp) :: e0(3), s(size(y)), ss
+    complex(wp) :: e(size(Ac, 1), size(Ac, 2))
+    integer :: k
+    call action(la, y, e0, e)
+    e0 = A0c - e0
+    e = Ac - e
+    s = (y - la%yb)/sc
+    ss = sum(s*s)
+    if (.not. (ss > 0)) return
+    do k = 1, size(y)
+      la%dA0(:, k) = la%dA0(:, k) + e0*(s(k)/(ss*sc(k)))
+      la%dA(:, :, k) = la%dA(:, :, k) + e*(s(k)/(ss*sc(k)))
+    end do
+  end subroutine broyden
+end module udmap_mapping_traveling_point
