@@ -94,9 +94,9 @@ contains
     type(damper_state_type) :: st, start
     type(path_events_type) :: ev
     real(wp), allocatable :: X(:, :), AL(:, :), AR(:, :)
-    complex(wp), allocatable :: e(:, :), CL(:, :), CR(:, :)
-    real(wp) :: tau, Ak(3,2), energy, F_scale, theta
-    complex(wp), allocatable :: Pr(:, :)
+    complex(wp), allocatable :: e(:, :), CL(:, :), CR(:, :), root(:)
+    real(wp) :: Ak(3,2), energy, F_scale, theta
+    complex(wp), allocatable :: Pr(:, :), Pphi(:, :)
     integer :: ns, j, k, per, H
     logical :: closed, slipped, lifted, cs(3)
 
@@ -108,7 +108,8 @@ contains
       call fatal_error(error, "wave_aft: too few samples for the harmonics", UDMAP_EINPUT)
       return
     end if
-    allocate(X(6, 0:ns-1), AL(3, ns), AR(3, ns), e(H, ns), Pr(3, H), CL(3, 0:H), CR(3, 0:H))
+    allocate(X(6, 0:ns-1), AL(3, ns), AR(3, ns), e(H, ns), Pr(3, H), Pphi(3, H), CL(3, 0:H), &
+      & CR(3, 0:H), root(0:ns-1))
     ! time origin where gamma_P's first harmonic is real: the sampled trace then depends on
     ! the motion alone, not on its phase against the force (every caller solves the same
     ! equations whatever it holds fixed)
@@ -116,11 +117,16 @@ contains
     if (P(3, 1) /= 0) theta = atan2(aimag(P(3, 1)), real(P(3, 1), wp))
     do k = 1, H
       Pr(:, k) = P(:, k)*exp(cmplx(0.0_wp, -k*theta, wp))
+      Pphi(:, k) = Pr(:, k)*exp(cmplx(0.0_wp, k*phi, wp))
+    end do
+    ! e^{-i m tau_j} = root(m j mod ns): ns exponentials instead of H ns (and H ns more for
+    ! the transform), which dominated the trace at high H
+    do j = 0, ns - 1
+      root(j) = exp(cmplx(0.0_wp, -2*pi*j/ns, wp))
     end do
     do j = 0, ns - 1
-      tau = 2*pi*j/ns
-      X(1:3, j) = motion(tau)
-      X(4:6, j) = motion(tau + phi)
+      X(1:3, j) = sampled(Pr, j)
+      X(4:6, j) = sampled(Pphi, j)
     end do
     call virgin_state(geo, st)
     call ramp_CF(geo, st, CF, error)
@@ -164,13 +170,13 @@ contains
     ! harmonics of the action on blade 0 (instants tau_j = 2 pi j/ns, j = 1..ns)
     do j = 1, ns
       do k = 1, H
-        e(k, j) = exp(cmplx(0.0_wp, -k*2*pi*j/ns, wp))
+        e(k, j) = root(mod(k*j, ns))
       end do
     end do
     A0 = (sum(AL, dim=2) + sum(AR, dim=2))/ns + real(CL(:, 0) + CR(:, 0), wp)/(2*pi)
     do k = 1, H
-      A(:, k) = (matmul(cmplx(AL, 0.0_wp, wp), e(k, :)) + &
-        & exp(cmplx(0.0_wp, -k*phi, wp))*matmul(cmplx(AR, 0.0_wp, wp), e(k, :)))*(2.0_wp/ns) &
+      A(:, k) = (matmul(AL, e(k, :)) + &
+        & exp(cmplx(0.0_wp, -k*phi, wp))*matmul(AR, e(k, :)))*(2.0_wp/ns) &
         & + (CL(:, k) + exp(cmplx(0.0_wp, -k*phi, wp))*CR(:, k))/pi
       if (theta /= 0) A(:, k) = A(:, k)*exp(cmplx(0.0_wp, k*theta, wp))
     end do
@@ -195,10 +201,17 @@ contains
       type(damper_geometry_type) :: arc
       type(rates_type) :: r0, r1
       real(wp) :: V(6), dA(3, 2), c
+      complex(wp) :: z(0:H)
       logical :: ok0, ok1
       integer :: i, kk
-      V(1:3) = motion_rate(t_e)
-      V(4:6) = motion_rate(t_e + phi)
+      ! z(m) = e^{-i m t_e} by powers (their rounding, m eps, is far below the kink's size)
+      z(0) = 1
+      if (H >= 1) z(1) = exp(cmplx(0.0_wp, -t_e, wp))
+      do kk = 2, H
+        z(kk) = z(kk - 1)*z(1)
+      end do
+      V(1:3) = motion_rate(Pr, z)
+      V(4:6) = motion_rate(Pphi, z)
       arc = along(geo, V)
       call compute_rates(arc, m_before, 1.0_wp, 0.0_wp, r0, ok0)
       call compute_rates(arc, m_after, 1.0_wp, 0.0_wp, r1, ok1)
@@ -210,30 +223,33 @@ contains
       end do
       c = 0.5_wp*(2*pi/ns)**2*(delta*delta - delta + 1/6.0_wp)
       do kk = 0, H
-        CL(:, kk) = CL(:, kk) + c*dA(:, 1)*exp(cmplx(0.0_wp, -kk*t_e, wp))
-        CR(:, kk) = CR(:, kk) + c*dA(:, 2)*exp(cmplx(0.0_wp, -kk*t_e, wp))
+        CL(:, kk) = CL(:, kk) + c*dA(:, 1)*z(kk)
+        CR(:, kk) = CR(:, kk) + c*dA(:, 2)*z(kk)
       end do
       energy = energy + c*(dot_product(dA(:, 1), V(1:3)) + dot_product(dA(:, 2), V(4:6)))
     end subroutine correct_kink
 
-    pure function motion_rate(t) result(v_t)
-      real(wp), intent(in) :: t
+    !> The platform's velocity for the harmonics Q at the time t with z(m) = e^{-i m t}.
+    pure function motion_rate(Q, z) result(v_t)
+      complex(wp), intent(in) :: Q(:, :), z(0:)
       real(wp) :: v_t(3)
       integer :: m
       v_t = 0
       do m = 1, H
-        v_t = v_t + real(cmplx(0.0_wp, real(m, wp), wp)*Pr(:, m)*exp(cmplx(0.0_wp, m*t, wp)), wp)
+        v_t = v_t + real(cmplx(0.0_wp, real(m, wp), wp)*Q(:, m)*conjg(z(m)), wp)
       end do
     end function motion_rate
 
-    pure function motion(t) result(x_t)
-      real(wp), intent(in) :: t
+    !> The platform's coordinates for the harmonics Q at the instant tau_j = 2 pi j/ns.
+    pure function sampled(Q, jj) result(x_t)
+      complex(wp), intent(in) :: Q(:, :)
+      integer, intent(in) :: jj
       real(wp) :: x_t(3)
       integer :: m
       x_t = P0
       do m = 1, H
-        x_t = x_t + real(Pr(:, m)*exp(cmplx(0.0_wp, m*t, wp)), wp)
+        x_t = x_t + real(Q(:, m)*conjg(root(mod(m*jj, ns))), wp)
       end do
-    end function motion
+    end function sampled
   end subroutine wave_aft
 end module udmap_contact_element_wave

@@ -32,6 +32,10 @@ module udmap_mapping_traveling_layer
 
   !> Relative finite-difference step, Newton tolerance (to the layer's scale) and cap.
   real(wp), parameter :: fd_step = 1.0e-7_wp, newton_tol = 1.0e-13_wp
+  !> The residual's rounding floor: at tiny amplitudes the action's harmonics are the small
+  !> difference of samples of the preloaded contact forces, noisy to some 1e-12 of the layer's
+  !> scale. A Newton step below this that no longer descends ends the solve.
+  real(wp), parameter :: floor_tol = 1.0e-9_wp
   integer, parameter :: newton_max = 40
   !> Relative frequency tolerance of the peak.
   real(wp), parameter :: peak_rtol = 1.0e-11_wp
@@ -198,8 +202,12 @@ contains
           t = t/2
         end do
         if (.not. (rnt < rn .or. rnt == 0)) then
-          ! no descent along a stale Jacobian: renew it; along a fresh one: give up
-          if (fresh) exit
+          ! no descent along a stale Jacobian: renew it; along a fresh one: at the rounding
+          ! floor (a step below floor_tol) the solve is done, else it fails
+          if (fresh) then
+            done = maxval(abs(dx)/sc) <= floor_tol
+            exit
+          end if
           L%J_valid = .false.
           call residual(x, R0, F0, error)
           if (allocated(error)) return

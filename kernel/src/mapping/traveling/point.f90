@@ -119,7 +119,7 @@ contains
         exit
       end if
       ! Newton (new differences) while far or not contracting, Broyden when close
-      fresh = step > d_reach .or. step > 0.25_wp*step_prev .or. dist > d_reach
+      fresh = step > 0.5_wp*step_prev .or. (step <= 1e-5_wp .and. dist > d_reach)
       step_prev = step
     end do
     if (.not. ok) return
