@@ -80,6 +80,10 @@ module udmap_mapping_traveling_layer
     complex(wp), allocatable :: Fx(:)
     integer, allocatable :: ipiv(:)
     logical :: J_valid = .false.
+    !> The damper action's derivatives by the unknowns of a whole point (x, gamma) at its
+    !> solution (udmap_mapping_traveling_point), which start the next force's point.
+    real(wp), allocatable :: dA0(:, :)
+    complex(wp), allocatable :: dA(:, :, :)
     !> Where the Jacobian was taken; the bracket width of the last peak search [rad/s].
     real(wp), allocatable :: x_J(:)
     real(wp) :: bracket = 0

@@ -83,7 +83,14 @@ contains
     call platform_pack(tw%u, L%P0(3), L%P, y(1:n))
     y(ny) = gamma0
     bracket = 1e-3_wp*w
-    fresh = .true.
+    ! the previous force's derivatives, while they contract; new differences at the end
+    fresh = .not. allocated(L%dA)
+    if (.not. fresh) fresh = size(L%dA, 3) /= ny
+    yD = huge(1.0_wp)
+    if (.not. fresh) then
+      lin%dA0 = L%dA0
+      lin%dA = L%dA
+    end if
     step_prev = huge(1.0_wp)
     do it = 1, max_outer
       call scales(y(ny))
@@ -97,7 +104,7 @@ contains
           lin%dA(:, :, k) = (Ap - Ac)/(fd_step*sc(k))
         end do
         yD = y
-      else
+      else if (it > 1) then
         call broyden(lin, y, A0c, Ac, sc)
       end if
       lin%yb = y
@@ -123,6 +130,8 @@ contains
       step_prev = step
     end do
     if (.not. ok) return
+    L%dA0 = lin%dA0
+    L%dA = lin%dA
     L%trace = res
     L%gamma = y(ny)
     L%solved = .true.
