@@ -15,8 +15,10 @@ import pytest
 
 from udmap.case import build_blade, build_damper, build_model, load_case
 from udmap.damper import Damper
-from udmap.doe import (OUTPUTS, ChunkRows, columns, format_chunk, format_rows, make_spec,
-                       parse_vary, read_csv, run_doe, with_values)
+from udmap.doe import (OUTPUTS, ChunkRows, Output, columns, design_values, format_chunk,
+                       format_rows, make_spec, parse_forces, parse_vary, read_csv, run_chunk,
+                       run_doe, unit_sample, with_values)
+from udmap.errors import InputError
 from udmap.doe.worker import _AsymmetricBlocks
 from udmap.model import DesignBatch
 
@@ -145,6 +147,47 @@ def test_parquet_alone_holds_the_csvs_values(default_run, tmp_path):
     assert meta["traces"] == 32
 
 
+def test_parquet_alone_resumes_from_its_staged_batches(tmp_path):
+    """Parquet alone stages every finished chunk at once, whatever its order: a run cut after
+    chunks 3, 5, 6 and 0 of 8 (and in the middle of a frame) resumes from them and writes the
+    file of the uninterrupted run; staged batches of another run are refused."""
+    import pyarrow.parquet as pq  # installed by make deps (PY_PACKAGES)
+    full = tmp_path / "full.parquet"
+    run_doe(CASE, VARY, 40, full, forces=FORCES, workers=1, chunk=5, progress=False,
+            format="parquet")
+    params = parse_vary(CASE, VARY)
+    values = design_values(params, unit_sample("sobol", 40, len(params), 0))
+    spec = make_spec(CASE, params, *parse_forces(FORCES), 40, "sobol", 0, None)
+    spec["rows"] = "arrow"
+    cut = tmp_path / "cut.parquet"
+    staged = tmp_path / "cut.parquet.rows.arrow"
+    o = Output(cut, spec, values, format="parquet")
+    assert o.open() == 0
+    for k in (3, 5, 6, 0):
+        start, n, payload, _ = run_chunk(spec, 5 * k, values[5 * k:5 * k + 5])
+        o.put(start, n, payload)
+    o.close()  # the interruption
+    assert o.written == 20 and staged.exists() and not cut.exists()
+    with open(staged, "ab") as f:
+        f.write(b"#batch 35 5 999\n\xff\xfe")
+    summary = run_doe(CASE, VARY, 40, cut, forces=FORCES, workers=1, chunk=5, progress=False,
+                      format="parquet", resume=True)
+    assert (summary["resumed_at"], summary["recovered"], summary["computed"]) == (5, 15, 20)
+    assert pq.read_table(cut).equals(pq.read_table(full))
+    assert pq.read_table(cut).schema.equals(pq.read_table(full).schema, check_metadata=True)
+    assert sorted(p.name for p in tmp_path.iterdir()) == [
+        "cut.parquet", "cut.parquet.meta.json", "full.parquet", "full.parquet.meta.json"]
+    # a staged batch whose designs have other parameter values belongs to another run
+    o = Output(cut, spec, values, format="parquet")
+    o.open(overwrite=True)
+    _, n, payload, _ = run_chunk(spec, 10, values[:5])  # designs 10..14 with 0..4's values
+    o.put(10, n, payload)
+    o.close()
+    with pytest.raises(InputError, match="holds designs 10..14 of another run"):
+        run_doe(CASE, VARY, 40, cut, forces=FORCES, workers=1, chunk=5, progress=False,
+                format="parquet", resume=True)
+
+
 def _blocks(vary, values):
     params = parse_vary(CASE, vary)
     return _AsymmetricBlocks(CASE.damper, [p.path for p in params]).blocks(values)
@@ -248,7 +291,6 @@ def test_runs_count_their_tracings(tmp_path):
 ])
 def test_options_that_cannot_go_together_stop_before_anything_is_written(tmp_path, options,
                                                                          needle):
-    from udmap.errors import InputError
     options.setdefault("plot", "format" not in options or options["format"] == "parquet")
     with pytest.raises(InputError, match=needle.replace("(", r"\(")):
         run_doe(CASE, ["mu=0.2:0.3"], 4, tmp_path / "x.csv", forces="2", workers=1,

@@ -11,6 +11,7 @@ from scipy.stats import qmc
 from udmap import InputError
 from udmap.case import load_case, validate
 from udmap import doe
+from udmap.doe import layout as doe_layout
 from udmap.doe import io as doe_io
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -183,7 +184,7 @@ def _spec(labels=("1", "2.5")):
 
 
 def test_columns_follow_the_interface():
-    assert doe_io.columns(_spec()) == [
+    assert doe_layout.columns(_spec()) == [
         "design", "mu", "neck_elements", "F_lim", "F_lim_backbone", "gamma_b", "M_max",
         "M_min", "lift_off", "gamma_P@1", "f_res@1", "sigma_a@1", "hcf_ok@1", "jump@1",
         "gamma_P@2.5", "f_res@2.5", "sigma_a@2.5", "hcf_ok@2.5", "jump@2.5", "F_adm",
@@ -197,11 +198,11 @@ def test_columns_follow_the_interface():
 
 def test_cells_round_trip_exactly():
     x = 0.1 + 0.2
-    assert float(doe_io.cell(x)) == x and doe_io.cell(x) == "0.30000000000000004"
-    assert doe_io.cell(True) == "true" and doe_io.cell(np.bool_(False)) == "false"
-    assert doe_io.cell(float("nan")) == "" and doe_io.cell(None) == ""
-    assert doe_io.cell(np.float64(2.5)) == "2.5" and doe_io.cell(7) == "7"
-    assert doe_io.cell("two\nlines") == "two lines"
+    assert float(doe_layout.cell(x)) == x and doe_layout.cell(x) == "0.30000000000000004"
+    assert doe_layout.cell(True) == "true" and doe_layout.cell(np.bool_(False)) == "false"
+    assert doe_layout.cell(float("nan")) == "" and doe_layout.cell(None) == ""
+    assert doe_layout.cell(np.float64(2.5)) == "2.5" and doe_layout.cell(7) == "7"
+    assert doe_layout.cell("two\nlines") == "two lines"
 
 
 def _fake_rows(spec, values, start):
@@ -246,7 +247,7 @@ def test_chunks_written_in_design_order_whatever_the_completion_order(tmp_path):
     _write(tmp_path / "b.csv", spec, values, 6, order=lambda n: list(range(n))[::-1])
     assert (tmp_path / "a.csv").read_bytes() == (tmp_path / "b.csv").read_bytes()
     header, rows = doe_io.read_csv(tmp_path / "a.csv")
-    assert header == doe_io.columns(spec) and len(rows) == 40
+    assert header == doe_layout.columns(spec) and len(rows) == 40
     assert [int(r[0]) for r in rows] == list(range(40))
     assert rows[3][-2:] == ["physics", 'jammed, design 3, "quoted"']
     assert float(rows[0][1]) == values[0][0] and int(rows[0][2]) == values[0][1]
@@ -330,7 +331,7 @@ def test_resume_refuses_another_run_and_overwrite_needs_force(tmp_path):
         doe_io.Output(out, other, values).open(resume=True)
     # a line that does not belong to the run (values of another seed) is detected
     text = out.read_text().splitlines(keepends=True)
-    text[5] = text[5].replace(doe_io.cell(values[4][0]), "0.25", 1)
+    text[5] = text[5].replace(doe_layout.cell(values[4][0]), "0.25", 1)
     out.write_text("".join(text))
     with pytest.raises(InputError, match="line 6 of .* does not belong to this run"):
         doe_io.Output(out, spec, values).open(resume=True)

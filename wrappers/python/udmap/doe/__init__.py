@@ -22,8 +22,8 @@ kt_curved (1: the case's values). Integer parameters (element counts) are rounde
 ``NAME=LO:HI:log`` samples ``ln(value)`` uniformly (stiffnesses spanning decades).
 """
 from .executors import chunk_ranges, default_chunk, default_workers, make_executor
-from .io import (FORMATS, OUTPUTS, Output, cell, columns, format_chunk, format_rows,
-                 parse_outputs, read_csv)
+from .layout import OUTPUTS, cell, columns, parse_outputs
+from .io import FORMATS, Output, format_chunk, format_rows, read_csv
 from .parameters import (SECTIONS, STIFFNESS_SCALE, Parameter, parameter_names, parse_vary,
                          resolve_name, validation_dict, with_values)
 from .plot import pareto_front, plot_doe

@@ -1,4 +1,4 @@
-"""Design-of-experiments output: columns, row text, ordered chunked streaming, resume, Parquet.
+"""Design-of-experiments output: row text, ordered chunked streaming, resume, the Parquet copy.
 
 The CSV has one line per design in design order (a leading ``design`` index, then the columns of
 INTERFACES.md "Design of experiments output"). Floats are written with ``repr`` (shortest text that
@@ -16,20 +16,15 @@ from __future__ import annotations
 import csv
 import io
 import json
-import math
 import os
-import re
 from pathlib import Path
 
 import numpy as np
 
 from ..errors import InputError
-from ..parameters import FIELDS
+from .arrow import Staging
+from .layout import FORCE_FIELDS, SUMMARY_COLUMNS, cell, column_units, columns, output_names
 
-SUMMARY_COLUMNS = ("F_lim", "F_lim_backbone", "gamma_b", "M_max", "M_min", "lift_off")
-FORCE_FIELDS = ("gamma_P", "f_res", "sigma_a", "hcf_ok", "jump")
-#: The outputs ``--outputs`` chooses from (per-force fields for every force), in column order.
-OUTPUTS = SUMMARY_COLUMNS + FORCE_FIELDS + ("F_adm",)
 FORMATS = ("csv", "parquet")
 META_FORMAT = "udmap-doe-1"
 # Record header of the journal of chunks waiting for an earlier one: "#chunk START COUNT BYTES".
@@ -37,100 +32,6 @@ _JOURNAL_TAG = b"#chunk"
 # What a resumed run must share with the one that wrote the file.
 _RUN_KEYS = ("name", "blade", "damper", "analysis", "params", "forces", "labels", "samples",
              "method", "seed", "outputs")
-
-
-def parse_outputs(text) -> list[str] | None:
-    """``--outputs F_adm,sigma_a,...`` (or a list) into the chosen output names, None for the
-    default (all of :data:`OUTPUTS`); an unknown name is an InputError naming it and the valid
-    ones."""
-    if text is None:
-        return None
-    items = [s.strip() for s in text.split(",")] if isinstance(text, str) else list(text)
-    items = [s for s in items if s != ""]
-    if not items:
-        raise InputError(f"--outputs: expected at least one of {', '.join(OUTPUTS)}")
-    for name in items:
-        if name not in OUTPUTS:
-            raise InputError(f"--outputs: unknown output {name!r} (valid: {', '.join(OUTPUTS)})")
-    chosen = [name for name in OUTPUTS if name in items]
-    return None if chosen == list(OUTPUTS) else chosen
-
-
-def output_names(spec: dict) -> tuple:
-    """The outputs of a run, in column order (all of them by default)."""
-    return tuple(spec.get("outputs") or OUTPUTS)
-
-
-def columns(spec: dict) -> list[str]:
-    """The header: design, the varied parameters by name, F_lim, F_lim_backbone, gamma_b,
-    M_max, M_min, lift_off, per force F gamma_P@F, f_res@F, sigma_a@F, hcf_ok@F, jump@F (gamma_P
-    at a jump of k, PHYSICS.md 2.5), then F_adm, status, message; of the outputs only the
-    chosen ones (``--outputs``)."""
-    out = output_names(spec)
-    cols = ["design"] + [p["name"] for p in spec["params"]] + \
-        [c for c in SUMMARY_COLUMNS if c in out]
-    for label in spec["labels"]:
-        cols += [f"{field}@{label}" for field in FORCE_FIELDS if field in out]
-    return cols + (["F_adm"] if "F_adm" in out else []) + ["status", "message"]
-
-
-#: SI units of the computed columns (docs/outputs.md); per-force columns take their field's.
-COLUMN_UNITS = {"F_lim": "N", "F_lim_backbone": "N", "gamma_b": "rad", "M_max": "N m",
-                "M_min": "N m", "gamma_P": "rad", "f_res": "Hz", "sigma_a": "Pa", "F_adm": "N"}
-
-
-def _si(unit: str) -> str:
-    """A unit of the parameter table in the outputs' spelling: ``N.m/rad`` -> ``N m/rad``,
-    ``kg.m2`` -> ``kg m^2``."""
-    return re.sub(r"([a-zA-Z])(\d)", r"\1^\2", unit.replace(".", " "))
-
-
-def parameter_unit(spec: dict, path) -> str:
-    """The unit of a varied parameter (``1`` for a dimensionless one), from the parameter
-    table (kernel/parameters.toml)."""
-    section = path[0]
-    kind = spec[section].get("kind") if section != "analysis" else None
-    name = ".".join(str(k) for k in path[1:] if not isinstance(k, int))
-    for sec, knd, field, kw in FIELDS:
-        if sec == section and knd == kind and field == name:
-            return _si(kw["unit"]) if kw.get("unit") else "1"
-    return "1"
-
-
-def column_units(spec: dict) -> dict:
-    """Column -> unit of the CSV (``.meta.json`` ``units``, the Parquet field metadata);
-    columns without a unit (design, flags, status, message) are left out."""
-    units = {p["name"]: parameter_unit(spec, path)
-             for p, path in zip(spec["params"], spec["paths"])}
-    out = output_names(spec)
-    units.update({c: COLUMN_UNITS[c] for c in SUMMARY_COLUMNS if c in COLUMN_UNITS and c in out})
-    for label in spec["labels"]:
-        units.update({f"{f}@{label}": COLUMN_UNITS[f] for f in FORCE_FIELDS
-                      if f in COLUMN_UNITS and f in out})
-    if "F_adm" in out:
-        units["F_adm"] = COLUMN_UNITS["F_adm"]
-    return units
-
-
-def cell(value) -> str:
-    """One CSV cell: repr for floats (exact round trip), true/false, '' for missing/non-finite."""
-    t = type(value)
-    if t is float:  # the common case first
-        return repr(value) if value - value == 0.0 else ""
-    if value is None:
-        return ""
-    if isinstance(value, bool):
-        return "true" if value else "false"
-    if isinstance(value, int):
-        return str(value)
-    if isinstance(value, float):
-        return repr(float(value)) if math.isfinite(value) else ""
-    if isinstance(value, str):
-        return " ".join(value.splitlines())
-    try:  # numpy scalars
-        return cell(value.item())
-    except AttributeError:
-        return cell(str(value))
 
 
 def _csv_line(cells: list[str]) -> str:
@@ -287,10 +188,11 @@ class Output:
         if format not in FORMATS:
             raise InputError(f"--format must be one of {', '.join(FORMATS)}, got {format!r}")
         self.format = format
+        #: Parquet alone: the chunks as Arrow batches, staged in FILE.rows.arrow (what
+        #: --resume continues) and written to FILE when the run completes (udmap.doe.arrow).
+        self.staging = None
         if format == "parquet":
-            # Parquet alone: the rows are staged in FILE.rows.csv (what --resume continues)
-            # and converted when the run completes; the staging file then goes
-            self.path, self.parquet_path = out.with_name(out.name + ".rows.csv"), out
+            self.path, self.parquet_path = out.with_name(out.name + ".rows.arrow"), out
         elif out.suffix == ".parquet":
             self.path, self.parquet_path = out.with_suffix(".csv"), out
         else:
@@ -313,6 +215,8 @@ class Output:
         self._pending: dict = {}
         #: (start, count) of the chunks a resumed run found in the journal (not to compute).
         self.held: list[tuple[int, int]] = []
+        if format == "parquet":
+            self.staging = Staging(self.path, spec, values)
 
     # -- opening
     def open(self, resume: bool = False, overwrite: bool = False) -> int:
@@ -320,12 +224,17 @@ class Output:
         its last complete line. Returns the first design still to compute. Raises InputError
         (before writing anything) when the file exists without ``resume``/``overwrite`` or
         belongs to another run."""
-        if self.format == "parquet":
-            try:
-                import pyarrow.parquet  # noqa: F401
-            except ImportError:
-                raise InputError("--format parquet needs the Python package pyarrow "
-                                 "(pip install pyarrow)") from None
+        if self.staging is not None and self.path.exists() and resume:
+            self._check_meta()
+            covered = self.staging.scan(self.counts)
+            first = 0
+            for start, count in covered:
+                if start == first:
+                    first += count
+            self.held = [(s, c) for s, c in covered if s > first]
+            self.written = self.staging.written()
+            self.staging.open()
+            return first
         if self.path.exists() and resume:
             first = self._scan()
             self._recover(first)
@@ -345,13 +254,19 @@ class Output:
                 tmp = self.meta_path.with_name(self.meta_path.name + ".tmp")
                 tmp.write_text(json.dumps(meta, indent=1))
                 os.replace(tmp, self.meta_path)
-                with open(self.path, "w", newline="") as f:
-                    f.write(_csv_line(self.header))
+                if self.staging is not None:
+                    self.staging.create()
+                else:
+                    with open(self.path, "w", newline="") as f:
+                        f.write(_csv_line(self.header))
                 if self.journal_path.exists():
                     self.journal_path.unlink()
             except OSError as exc:
                 raise InputError(f"--out {self.path}: {exc.strerror}") from None
             first = 0
+            if self.staging is not None:
+                self.staging.open()
+                return first
         self.written = first
         self._file = open(self.path, "a", newline="")
         self._journal = open(self.journal_path, "ab")
@@ -375,16 +290,7 @@ class Output:
 
     def _scan(self) -> int:
         """Checks an existing file against this run; truncates a partial last line."""
-        try:
-            meta = json.loads(self.meta_path.read_text())
-        except (OSError, ValueError):
-            raise InputError(f"--resume: {self.meta_path} is missing or unreadable, so "
-                             f"{self.path} cannot be continued safely (use --force)") from None
-        mine = _jsonable(self.spec)
-        diff = [k for k in _RUN_KEYS if meta.get(k) != mine[k]]
-        if meta.get("format") != META_FORMAT or diff:
-            raise InputError(f"--resume: {self.path} was written by a different run (differs in: "
-                             f"{', '.join(diff) or 'format'}); use --force to start again")
+        self._check_meta()
         header = _csv_line(self.header).encode()
         design = 0
         with open(self.path, "r+b") as f:
@@ -405,6 +311,19 @@ class Output:
                 design += 1
             f.truncate(offset)
         return design
+
+    def _check_meta(self) -> None:
+        """A resumed run: FILE.meta.json must describe this run."""
+        try:
+            meta = json.loads(self.meta_path.read_text())
+        except (OSError, ValueError):
+            raise InputError(f"--resume: {self.meta_path} is missing or unreadable, so "
+                             f"{self.path} cannot be continued safely (use --force)") from None
+        mine = _jsonable(self.spec)
+        diff = [k for k in _RUN_KEYS if meta.get(k) != mine[k]]
+        if meta.get("format") != META_FORMAT or diff:
+            raise InputError(f"--resume: {self.path} was written by a different run (differs in: "
+                             f"{', '.join(diff) or 'format'}); use --force to start again")
 
     def _recover(self, first: int) -> None:
         """Loads the journal's lines of designs ``first`` and beyond that belong to this run
@@ -461,7 +380,12 @@ class Output:
 
     def put(self, start: int, count: int, text: str) -> None:
         """Accepts a finished chunk; appends every chunk that is next in design order (a chunk
-        that must wait for an earlier one goes to the journal meanwhile)."""
+        that must wait for an earlier one goes to the journal meanwhile); with Parquet alone
+        ``text`` is the chunk's Arrow stream, staged at once whatever its order."""
+        if self.staging is not None:
+            self.staging.put(start, count, text)
+            self.written = self.staging.written()
+            return
         self._pending[start] = (count, text)
         if start != self.written:
             self._journal_append(start, count, text)
@@ -483,6 +407,9 @@ class Output:
 
     def close(self) -> None:
         """Closes the files; the journal goes once every design is in FILE."""
+        if self.staging is not None:
+            self.staging.close()
+            return
         if self._file is not None:
             self._file.close()
             self._file = None
@@ -513,9 +440,9 @@ class Output:
     def finish(self) -> str | None:
         """After a complete run: the Parquet copy when pyarrow is installed (its path); with
         --format parquet the Parquet file, and the staged rows removed."""
+        if self.staging is not None:
+            return self.staging.finish(self.parquet_path)
         path = self._parquet()
-        if self.format == "parquet":
-            self.path.unlink()
         return path
 
     def _parquet(self) -> str | None:

@@ -12,6 +12,7 @@ from ..case import Case, load_case
 from ..errors import InputError
 from ..progress import Progress
 from . import executors, io
+from .layout import parse_outputs
 from .parameters import Parameter, parse_vary
 from .plot import plot_doe
 from .sampling import METHODS, design_values, unit_sample
@@ -74,7 +75,7 @@ def run_doe(case, vary, samples: int, out, *, method: str = "sobol", forces=None
     per-force columns); ``workers``: processes (default all cores; 1 runs in this process),
     ``threads=True`` for threads instead; ``dask``: 'local:K' or 'tcp://HOST:PORT';
     ``chunk``: designs per task and per write; ``resume``: continue ``out``; ``outputs``:
-    'F_adm,sigma_a' or a list of names of :data:`udmap.doe.io.OUTPUTS` (default all; the
+    'F_adm,sigma_a' or a list of names of :data:`udmap.doe.layout.OUTPUTS` (default all; the
     kernel computes only what they need); ``format``: 'csv' (default, with a Parquet copy
     when pyarrow is installed) or 'parquet' (Parquet alone).
     """
@@ -84,7 +85,7 @@ def run_doe(case, vary, samples: int, out, *, method: str = "sobol", forces=None
         raise InputError(f"--samples must be a positive integer, got {samples!r}")
     if method not in METHODS:
         raise InputError(f"--method must be one of {', '.join(METHODS)}, got {method!r}")
-    chosen = io.parse_outputs(outputs)
+    chosen = parse_outputs(outputs)
     if plot and format == "parquet":
         raise InputError("--plot reads the CSV: use it with --format csv")
     if plot and chosen and not {"F_adm", "hcf_ok"} <= set(chosen):
@@ -93,6 +94,8 @@ def run_doe(case, vary, samples: int, out, *, method: str = "sobol", forces=None
     force_values, labels = parse_forces(forces) if forces not in (None, "", []) else ([], [])
     values = design_values(params, unit_sample(method, samples, len(params), seed))
     spec = make_spec(case, params, force_values, labels, samples, method, seed, chosen)
+    if format == "parquet":
+        spec["rows"] = "arrow"  # the workers return Arrow batches, not row text (not in token)
     executor = executors.make_executor(workers=workers, threads=threads, dask=dask)
     if chunk is None:
         chunk = executors.default_chunk(samples, executor.workers)

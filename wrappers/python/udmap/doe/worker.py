@@ -18,7 +18,9 @@ from ..errors import InputError, PhysicsError, UdmapError
 from ..model import (DESIGN_ADMISSIBLE, DESIGN_FAILED_ADMISSIBLE, DESIGN_FAILED_DAMPER,
                      DESIGN_FAILED_LIMIT, DESIGN_FAILED_PEAKS, DESIGN_JUMPS, DESIGN_LIMIT,
                      DESIGN_LIMIT_BACKBONE, DESIGN_PEAKS, DesignBatch)
-from .io import format_chunk, output_names
+from .arrow import chunk_payload
+from .layout import output_names
+from .io import format_chunk
 from .parameters import STIFFNESS_SCALE_PATH, with_values
 
 #: Per-design status values of the ``status`` column.
@@ -417,13 +419,17 @@ def context_for(spec: dict) -> DesignContext:
 def run_chunk(spec: dict, start: int, values: Sequence[tuple], refs=None) -> tuple:
     """Evaluates designs ``start, start + 1, ...`` with the given parameter values (``refs``:
     per design the values of its reference design or None, see :func:`design_references`) and
-    returns ``(start, count, csv_text, counts)`` (counts: see :func:`udmap.doe.io.tally`, plus
+    returns ``(start, count, csv_text, counts)`` (with Parquet alone the chunk's Arrow stream
+    instead of the text; counts: see :func:`udmap.doe.io.tally`, plus
     ``traces``, the dampers traced, and ``warnings``, the plausibility warnings per kind): the chunk's rows already formatted, so that the writer
     only appends text and the result is independent of where it was computed."""
     ctx = context_for(spec)
     traces = ctx.traces
     rows = ctx.evaluate_chunk(values, refs)
-    text, counts = format_chunk(spec, start, values, rows)
+    if spec.get("rows") == "arrow":  # --format parquet: the columns as an Arrow batch
+        text, counts = chunk_payload(spec, start, values, rows)
+    else:
+        text, counts = format_chunk(spec, start, values, rows)
     counts["traces"] = ctx.traces - traces
     counts["warnings"] = rows.warnings
     return start, rows.n, text, counts
