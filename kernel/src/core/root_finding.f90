@@ -15,6 +15,7 @@ module udmap_core_root_finding
   private
   public :: brent_type, brent_start, brent_next, brent_update, brent_bracket, &
     & brent_step
+  public :: outward_type, outward_start, outward_next, outward_update
 
   !> State of one bracketed root search; b is always the best estimate so far.
   type :: brent_type
@@ -27,7 +28,51 @@ module udmap_core_root_finding
     logical :: converged = .false.
   end type brent_type
 
+  !> An outward search for a bracket, by reverse communication like Brent's: from x0 with
+  !> f(x0), steps towards the root of an increasing f (x - sign(d, f)), doubling from d, inside
+  !> (lo, hi). Ends with found ([a, b] holds a sign change, a /= b), or left (the next step
+  !> would leave (lo, hi)), or neither after max_steps.
+  type :: outward_type
+    real(wp) :: a = 0, fa = 0, b = 0, fb = 0, d = 0, lo = 0, hi = 0
+    integer :: steps = 0, max_steps = 60
+    logical :: found = .false., left = .false.
+  end type outward_type
+
 contains
+
+  pure subroutine outward_start(state, x0, f0, d, lo, hi)
+    type(outward_type), intent(out) :: state
+    real(wp), intent(in) :: x0, f0, d, lo, hi
+    state%a = x0; state%fa = f0
+    state%b = x0; state%fb = f0
+    state%d = d; state%lo = lo; state%hi = hi
+  end subroutine outward_start
+
+  !> more = .true. with the next abscissa x to evaluate; .false. when the search has ended.
+  pure subroutine outward_next(state, x, more)
+    type(outward_type), intent(inout) :: state
+    real(wp), intent(out) :: x
+    logical, intent(out) :: more
+    more = .false.
+    x = state%b
+    state%found = state%fa*state%fb <= 0 .and. state%a /= state%b
+    if (state%found .or. state%steps >= state%max_steps) return
+    state%a = state%b
+    state%fa = state%fb
+    x = state%a - sign(state%d, state%fa)
+    state%left = .not. (x > state%lo .and. x < state%hi)
+    if (state%left) return
+    state%b = x
+    state%d = 2*state%d
+    state%steps = state%steps + 1
+    more = .true.
+  end subroutine outward_next
+
+  pure subroutine outward_update(state, fx)
+    type(outward_type), intent(inout) :: state
+    real(wp), intent(in) :: fx
+    state%fb = fx
+  end subroutine outward_update
 
   !> Starts a search on the bracket [a, b] with function values fa, fb of opposite sign
   !> (or one of them zero); tol is the absolute tolerance on the root.

@@ -16,7 +16,8 @@ module udmap_mapping_traveling_layer
   use udmap_core_error, only: error_type, fatal_error, UDMAP_EINPUT, UDMAP_ENUMERIC, UDMAP_EPHYSICS
   use udmap_core_strings, only: ftoa
   use udmap_core_lapack, only: dgetrf, dgetrs
-  use udmap_core_root_finding, only: brent_type, brent_start, brent_next, brent_update
+  use udmap_core_root_finding, only: brent_type, brent_start, brent_next, brent_update, &
+    & outward_type, outward_start, outward_next, outward_update
   use udmap_blade_type, only: blade_type
   use udmap_blade_platform, only: platform_receptances_type, platform_receptances, &
     & platform_modal_type, platform_modal, &
@@ -374,9 +375,9 @@ contains
     real(wp), intent(out) :: F_bb
     type(error_type), allocatable, intent(out) :: error
     type(brent_type) :: bs
-    real(wp) :: a, b, fa, fb, d, x, fx
+    type(outward_type) :: out
+    real(wp) :: a, fa, d, x, fx
     logical :: more
-    integer :: k
     F_bb = 0
     a = omega_guess
     if (.not. (a > tw%omega_lo .and. a < tw%omega_hi)) a = 0.5_wp*(tw%omega_lo + tw%omega_hi)
@@ -384,25 +385,22 @@ contains
     if (allocated(error)) return
     d = 1e-3_wp*a
     if (L%bracket > 0) d = min(d, L%bracket)
-    b = a
-    fb = fa
-    do k = 1, 60
-      if (fa*fb <= 0 .and. a /= b) exit
-      a = b
-      fa = fb
-      b = a - sign(d, fa)
-      if (b <= tw%omega_lo .or. b >= tw%omega_hi) then
-        call fatal_error(error, "traveling wave: the layer gamma = "//ftoa(gamma)// &
-          & " rad peaks at the band's edge (no resonance in [f_min, f_max] at phi = "// &
-          & ftoa(tw%phi)//" rad)", UDMAP_EPHYSICS)
-        return
-      end if
-      fb = psi(b)
+    call outward_start(out, a, fa, d, tw%omega_lo, tw%omega_hi)
+    do
+      call outward_next(out, x, more)
+      if (.not. more) exit
+      fx = psi(x)
       if (allocated(error)) return
-      d = 2*d
+      call outward_update(out, fx)
     end do
-    L%bracket = max(abs(b - a), 1e-6_wp*a)
-    call brent_start(bs, a, fa, b, fb, peak_rtol*a)
+    if (out%left) then
+      call fatal_error(error, "traveling wave: the layer gamma = "//ftoa(gamma)// &
+        & " rad peaks at the band's edge (no resonance in [f_min, f_max] at phi = "// &
+        & ftoa(tw%phi)//" rad)", UDMAP_EPHYSICS)
+      return
+    end if
+    L%bracket = max(abs(out%b - out%a), 1e-6_wp*out%a)
+    call brent_start(bs, out%a, out%fa, out%b, out%fb, peak_rtol*out%a)
     do
       call brent_next(bs, x, more)
       if (.not. more) exit

@@ -18,7 +18,8 @@ module udmap_mapping_traveling_point
   use udmap_core_kinds, only: wp
   use udmap_core_error, only: error_type
   use udmap_core_lapack, only: dgetrf, dgetrs
-  use udmap_core_root_finding, only: brent_type, brent_start, brent_next, brent_update
+  use udmap_core_root_finding, only: brent_type, brent_start, brent_next, brent_update, &
+    & outward_type, outward_start, outward_next, outward_update
   use udmap_blade_platform, only: platform_receptances_type, platform_receptances, &
     & platform_count, platform_scales, platform_pack, platform_unpack, platform_balance
   use udmap_contact_element_wave, only: wave_aft, wave_result_type
@@ -181,30 +182,23 @@ contains
       type(wave_layer_type), intent(inout) :: Lo
       logical, intent(out) :: good
       type(brent_type) :: bs
-      real(wp) :: a, b, fa, fb, d, x, fx
+      type(outward_type) :: out
+      real(wp) :: fa, x, fx
       logical :: more
-      integer :: kk
       w_out = w0
-      a = w0
-      call at_omega(la, a, y_out, Lo, fa, good)
+      call at_omega(la, w0, y_out, Lo, fa, good)
       if (.not. good) return
-      d = d0
-      b = a
-      fb = fa
-      do kk = 1, 60
-        if (fa*fb <= 0 .and. a /= b) exit
-        a = b
-        fa = fb
-        b = a - sign(d, fa)
-        good = b > tw%omega_lo .and. b < tw%omega_hi
+      call outward_start(out, w0, fa, d0, tw%omega_lo, tw%omega_hi)
+      do
+        call outward_next(out, x, more)
+        if (.not. more) exit
+        call at_omega(la, x, y_out, Lo, fx, good)
         if (.not. good) return
-        call at_omega(la, b, y_out, Lo, fb, good)
-        if (.not. good) return
-        d = 2*d
+        call outward_update(out, fx)
       end do
-      good = fa*fb <= 0
+      good = out%found
       if (.not. good) return
-      call brent_start(bs, a, fa, b, fb, omega_rtol*a)
+      call brent_start(bs, out%a, out%fa, out%b, out%fb, omega_rtol*out%a)
       do
         call brent_next(bs, x, more)
         if (.not. more) exit

@@ -21,7 +21,8 @@ from pathlib import Path
 import numpy as np
 
 from ..errors import InputError
-from .layout import FORCE_FIELDS, SUMMARY_COLUMNS, cell, column_units, columns, output_names
+from .layout import (FORCE_FIELDS, SUMMARY_COLUMNS, cell, column_units, columns, frames,
+                     output_names)
 
 _TAG = b"#batch"
 #: Rows per Parquet row group (the chunks are at most 256 designs).
@@ -136,32 +137,21 @@ class Staging:
         """A resumed run: keeps the complete frames of this run (their counts added to
         ``counts``), truncates the file after the last one and returns their (start, count)."""
         pa = _pa()
-        data = self.path.read_bytes()
-        pos = end_ok = 0
-        while True:
-            end = data.find(b"\n", pos)
-            if end < 0:
-                break
-            head = data[pos:end].split()
-            try:
-                tag, start, count, size = head[0], int(head[1]), int(head[2]), int(head[3])
-            except (IndexError, ValueError):
-                break
-            body = data[end + 1:end + 1 + size]
-            if tag != _TAG or len(body) != size:
-                break
+        end_ok = 0
+        for start, count, offset, body in frames(self.path.read_bytes(), _TAG):
             try:
                 batch = pa.ipc.open_stream(body).read_next_batch()
             except (pa.ArrowInvalid, StopIteration):
                 break
             if not self._belongs(batch, start, count):
-                raise InputError(f"--resume: {self.path} holds designs {start}..{start + count - 1} "
-                                 "of another run; use --force to start again")
+                raise InputError(f"--resume: {self.path} holds designs {start}.."
+                                 f"{start + count - 1} of another run; use --force to start "
+                                 "again")
             if start not in self.frames:
-                self.frames[start] = (count, end + 1, size)
+                self.frames[start] = (count, offset, len(body))
                 for k, v in _counts(self.spec, batch).items():
                     counts[k] = counts.get(k, 0) + v
-            pos = end_ok = end + 1 + size
+            end_ok = offset + len(body)
         with open(self.path, "r+b") as f:
             f.truncate(end_ok)
         return sorted((s, c) for s, (c, _, _) in self.frames.items())

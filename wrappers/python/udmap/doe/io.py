@@ -23,7 +23,8 @@ import numpy as np
 
 from ..errors import InputError
 from .arrow import Staging
-from .layout import FORCE_FIELDS, SUMMARY_COLUMNS, cell, column_units, columns, output_names
+from .layout import (FORCE_FIELDS, SUMMARY_COLUMNS, cell, column_units, columns, frames,
+                     output_names)
 
 FORMATS = ("csv", "parquet")
 META_FORMAT = "udmap-doe-1"
@@ -334,26 +335,13 @@ class Output:
         except OSError:
             return
         found: dict[int, bytes] = {}
-        pos = 0
-        while True:
-            end = data.find(b"\n", pos)
-            if end < 0:
-                break
-            head = data[pos:end].split()
-            try:
-                tag, start, count, size = head[0], int(head[1]), int(head[2]), int(head[3])
-            except (IndexError, ValueError):
-                break
-            body = data[end + 1:end + 1 + size]
-            if tag != _JOURNAL_TAG or len(body) != size:
-                break
+        for start, count, _, body in frames(data, _JOURNAL_TAG):
             lines = body.split(b"\n")
             if len(lines) != count + 1 or lines[-1] != b"":
                 break
             for i, raw in enumerate(lines[:-1]):
                 if start + i >= first and self._line_cells(raw, start + i) is not None:
                     found[start + i] = raw + b"\n"
-            pos = end + 1 + size
         runs: list[tuple[int, list[bytes]]] = []
         for d in sorted(found):
             if runs and d == runs[-1][0] + len(runs[-1][1]):

@@ -107,3 +107,24 @@ def cell(value) -> str:
         return cell(value.item())
     except AttributeError:
         return cell(str(value))
+
+
+def frames(data: bytes, tag: bytes):
+    """The complete frames ``TAG START COUNT BYTES\\n`` + body of a staged file (the CSV's
+    journal, the Parquet-alone staging), in file order: ``(start, count, offset of the body,
+    body)``; the first frame that is cut or malformed ends them."""
+    pos = 0
+    while True:
+        end = data.find(b"\n", pos)
+        if end < 0:
+            return
+        head = data[pos:end].split()
+        try:
+            name, start, count, size = head[0], int(head[1]), int(head[2]), int(head[3])
+        except (IndexError, ValueError):
+            return
+        body = data[end + 1:end + 1 + size]
+        if name != tag or len(body) != size:
+            return
+        yield start, count, end + 1, body
+        pos = end + 1 + size
