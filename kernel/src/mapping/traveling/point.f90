@@ -9,11 +9,12 @@
 !! on omega. So A is linearised once, A ~ A_b + D (y - y_b), y = (x, gamma); with the linear
 !! action the whole point is solved without a trace: at each omega the balance is linear in
 !! y, |F|^2 = F_E^2 is a quadratic in gamma, and psi(omega) = 0 is a scalar root (Brent). The
-!! point found is traced again and the action re-linearised there (Broyden's update; the
-!! differences again after a large step or a poor contraction), until the step is at the
-!! rounding floor. The point is then that of the same equations as the layers', exactly: the
-!! balance holds with the traced action, and psi takes D from differences within 1e-4 of the
-!! point, as the layer's solve does. Some 10 to 20 traces per peak.
+!! point found is traced again and the action re-linearised there (Broyden's update, from the
+!! previous force's D; the differences again after a poor contraction and at the end), until
+!! the step is at the rounding floor, or a Newton step with fresh differences is so small that
+!! the linear action's error, O(step^2), is below it. The point is then that of the same
+!! equations as the layers', exactly: the balance holds with the traced action, and psi takes
+!! D from differences at the point, as the layer's solve does. Some 10 traces per peak.
 module udmap_mapping_traveling_point
   use udmap_core_kinds, only: wp
   use udmap_core_error, only: error_type
@@ -30,7 +31,8 @@ module udmap_mapping_traveling_point
   public :: wave_point
 
   !> Relative difference step of D, the step at which the point is converged, the largest
-  !> distance (scaled) of D's differences from the point for psi, and the iteration cap.
+  !> distance (scaled) of D's differences from the point for psi, the Newton step (fresh D)
+  !> that ends the iteration, and the iteration cap.
   real(wp), parameter :: fd_step = 1.0e-7_wp, step_tol = 1.0e-10_wp, d_reach = 1.0e-4_wp
   real(wp), parameter :: newton_accept = 1.0e-6_wp
   integer, parameter :: max_outer = 30
