@@ -11,6 +11,7 @@ import sys
 from pathlib import Path
 
 import numpy as np
+import pyarrow.parquet as pq  # installed by make deps (PY_PACKAGES)
 import pytest
 
 from udmap.case import build_blade, build_damper, build_model, load_case
@@ -126,7 +127,6 @@ def test_vectorised_writer_writes_the_row_writers_bytes():
 
 
 def test_parquet_alone_holds_the_csvs_values(default_run, tmp_path):
-    pq = pytest.importorskip("pyarrow.parquet")
     out = tmp_path / "run.parquet"
     run_doe(CASE, VARY, 32, out, forces=FORCES, workers=2, chunk=5, progress=False,
             format="parquet")
@@ -151,7 +151,6 @@ def test_parquet_alone_resumes_from_its_staged_batches(tmp_path):
     """Parquet alone stages every finished chunk at once, whatever its order: a run cut after
     chunks 3, 5, 6 and 0 of 8 (and in the middle of a frame) resumes from them and writes the
     file of the uninterrupted run; staged batches of another run are refused."""
-    import pyarrow.parquet as pq  # installed by make deps (PY_PACKAGES)
     full = tmp_path / "full.parquet"
     run_doe(CASE, VARY, 40, full, forces=FORCES, workers=1, chunk=5, progress=False,
             format="parquet")
