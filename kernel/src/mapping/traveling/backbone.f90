@@ -13,7 +13,8 @@
 !> F_lim = W'/(pi |psi_E/psi_g|) (at phi = 0: 2 Delta_M/(pi |phi_E/phi_g|), section 5).
 module udmap_mapping_traveling_backbone
   use udmap_core_kinds, only: wp, pi
-  use udmap_core_error, only: error_type, fatal_error, UDMAP_EINPUT, UDMAP_EPHYSICS
+  use udmap_core_error, only: error_type, fatal_error, UDMAP_EINPUT, UDMAP_EPHYSICS, &
+    & UDMAP_ENUMERIC
   use udmap_core_strings, only: ftoa
   use udmap_core_root_finding, only: brent_type, brent_start, brent_next, brent_update
   use udmap_blade_platform, only: platform_rows
@@ -27,7 +28,7 @@ module udmap_mapping_traveling_backbone
     & cover_table, reset_table
   use udmap_mapping_traveling_layer, only: traveling_type, wave_layer_type, new_traveling, &
     & wave_peak, wave_layer_solve, wave_layer_slope
-  use udmap_mapping_traveling_point, only: wave_point
+  use udmap_mapping_traveling_point, only: wave_point, wave_jump_point
   implicit none
   private
   public :: wave_backbone, wave_response, wave_limit_force, interblade_phase, new_model_traveling, &
@@ -35,6 +36,8 @@ module udmap_mapping_traveling_backbone
 
   !> Relative tolerance of the backbone roots in gamma (the layers are solved to ~1e-11).
   real(wp), parameter :: root_rtol = 1.0e-10_wp
+  !> A bracket that closes with ln F_bb off the force by more than this holds a jump of F_bb.
+  real(wp), parameter :: jump_misfit = 1.0e-6_wp
 
 contains
 
@@ -266,7 +269,10 @@ contains
       F_cur = F
       lo = log(gamma0)
       glo = excess(lo, err)
-      if (allocated(err)) return
+      if (allocated(err)) then
+        call jump_point(lo, pt, err)
+        return
+      end if
       ! Newton in (ln gamma, ln F_bb) with the layer's own slope (one trace more per step);
       ! a step that does not reduce the misfit hands over to the bracketing below
       x = lo
@@ -285,7 +291,11 @@ contains
         glo = g
         x = x + step
         g = excess(x, err)
-        if (allocated(err)) return
+        if (allocated(err)) then
+          ! a layer without a solution: next to a jump of F_bb
+          call jump_point(x, pt, err)
+          return
+        end if
         if (abs(g) >= abs(glo)) exit
       end do
       ! the bracket starts from the last two points of Newton (or the first alone)
@@ -308,7 +318,10 @@ contains
         if (abs(step) < 1e-6_wp) step = sign(1e-6_wp, step)
         x = hi + step
         g = excess(x, err)
-        if (allocated(err)) return
+        if (allocated(err)) then
+          call jump_point(x, pt, err)
+          return
+        end if
         if (x /= hi .and. g /= ghi) slope = (g - ghi)/(x - hi)
         lo = hi
         glo = ghi
@@ -333,13 +346,40 @@ contains
         call brent_next(bs, x, more)
         if (.not. more) exit
         g = excess(x, err)
-        if (allocated(err)) return
+        if (allocated(err)) then
+          call jump_point(x, pt, err)
+          return
+        end if
         call brent_update(bs, g)
       end do
       g = excess(x, err)
       if (allocated(err)) return
+      if (abs(g) > jump_misfit) then
+        ! the bracket closed without a root: F_bb jumps across F there (PHYSICS.md 2.5)
+        call jump_point(x, pt, err)
+        return
+      end if
       call fill_point(tw, L, exp(x), F, F_lim, model%analysis%sigma_all, pt)
     end subroutine peak_of_force
+
+    !> The set-valued point of a jump of F_bb at about e^xg (udmap_mapping_traveling_point's
+    !> wave_jump_point); else the error err (kept, or a new one).
+    subroutine jump_point(xg, pt, err)
+      real(wp), intent(in) :: xg
+      type(point_type), intent(inout) :: pt
+      type(error_type), allocatable, intent(inout) :: err
+      logical :: ok
+      call wave_jump_point(tw, F_cur, exp(xg), w, L, ok)
+      if (.not. ok) then
+        if (.not. allocated(err)) call fatal_error(err, "traveling wave: F_bb jumps across "// &
+          & "F_E = "//ftoa(F_cur)//" N at gamma = "//ftoa(exp(xg))//" rad, phi = "// &
+          & ftoa(tw%phi)//" rad, and no one-sided layer was found next to it", UDMAP_ENUMERIC)
+        return
+      end if
+      if (allocated(err)) deallocate(err)
+      call fill_point(tw, L, L%gamma, F_cur, F_lim, model%analysis%sigma_all, pt)
+      pt%jump = .true.
+    end subroutine jump_point
 
     !> ln F_bb(e^x) - ln F_cur at the layer e^x (leaves L at its peak, w at its frequency).
     real(wp) function excess(xg, err)

@@ -1,0 +1,70 @@
+"""The lift-off jump of PHYSICS.md 2.5 in a traveling wave: blade A's damper with mu = 0.5,
+whose F_bb jumps by half at gamma_c ~ 1.42e-3 rad in phase (a contact starts to lift off).
+
+At a phase the action is set-valued on the jump: every blend of its two one-sided values, each
+a linear function of the platform's harmonics (kernel/src/mapping/traveling/point.f90,
+wave_jump_point). As phi -> 0 the translations drop out and this must become 2.5's
+interpolation of k, which the in-phase code computes independently (on the exact describing
+function, not on the traveling wave's trace)."""
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from udmap.case import build_blade, build_damper, load_case
+from udmap.errors import UdmapError
+from udmap.model import Model
+
+from conftest import CASE
+
+FORCES = [float(F) for F in np.round(np.arange(4.2, 5.85, 0.1), 6)]
+
+
+@pytest.fixture(scope="module")
+def liftoff():
+    case = load_case(CASE)
+    case.damper = dict(case.damper, mu=0.5)
+    blade, damper = build_blade(case), build_damper(case)
+    a = case.analysis
+
+    def model(ibpa_deg):
+        return Model(blade, damper, a["f_min"], a["f_max"], harmonics=1, ibpa_deg=ibpa_deg)
+    return model
+
+
+def test_a_jump_at_a_tiny_phase_is_the_in_phase_jump(liftoff):
+    """Over forces below, inside and above the jump: the same points flagged, gamma_P = gamma_c
+    to 1e-6, f_res to 2e-6 and sigma_a to 1e-4 (the bounds of the phi -> 0 check of the smooth
+    backbone: the wave's trace against the exact describing function)."""
+    ref = liftoff(0.0).backbone(FORCES)
+    wave = liftoff(1e-4).backbone(FORCES)
+    assert [p["jump"] for p in wave] == [p["jump"] for p in ref]
+    assert sum(p["jump"] for p in ref) >= 10  # most of the forces lie in the jump
+    for p, r in zip(wave, ref):
+        tol = 1e-6 if r["jump"] else 1e-4
+        assert abs(p["gamma_P"] / r["gamma_P"] - 1) < tol, (p["F_E"], p["gamma_P"], r["gamma_P"])
+        assert abs(p["f_res"] / r["f_res"] - 1) < 2e-6, (p["F_E"], p["f_res"], r["f_res"])
+        assert abs(p["sigma_a"] / r["sigma_a"] - 1) < 1e-4, (p["F_E"], p["sigma_a"], r["sigma_a"])
+
+
+def test_the_backbone_crosses_the_jump_continuously(liftoff):
+    """gamma_P does not fall and sigma_a rises with the force; f_res moves by less than 0.05 Hz
+    between neighbouring forces 0.1 N apart, into, across and out of the jump."""
+    points = liftoff(1e-4).backbone(FORCES)
+    gamma = np.array([p["gamma_P"] for p in points])
+    sigma = np.array([p["sigma_a"] for p in points])
+    f = np.array([p["f_res"] for p in points])
+    assert np.all(np.diff(gamma) >= 0) and np.all(np.diff(sigma) > 0)
+    assert np.max(np.abs(np.diff(f))) < 0.05
+    # every one of them at gamma_c (located within the span where no layer has a solution:
+    # here 1e-9 of gamma, the points agree to rounding)
+    inside = np.array([p["gamma_P"] for p in points if p["jump"]])
+    assert np.ptp(inside) <= 1e-12 * inside[0]
+
+
+def test_a_wider_jump_is_a_clear_error(liftoff):
+    """At 1 deg no layer near the jump has a solution over 1e-4 of gamma: the set-valued point
+    is not formed there, and the force inside the jump fails with status 4 naming phi."""
+    with pytest.raises(UdmapError, match="phi = 0.1745329252E-1 rad") as info:
+        liftoff(1.0).backbone([5.0])
+    assert info.value.status == 4
