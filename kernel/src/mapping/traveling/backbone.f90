@@ -187,7 +187,8 @@ contains
     type(point_type), allocatable, intent(out) :: points(:)
     type(error_type), allocatable, intent(out) :: error
     type(traveling_type) :: tw
-    type(wave_layer_type) :: L
+    !> The layer of the search; the latest solved below and above the force (nested search).
+    type(wave_layer_type) :: L, below, above
     type(point_type), allocatable :: guess(:)
     real(wp) :: F_lim, omega_g, F_cur, w, change, ratio, shift
     integer :: i, H_saved, ih, nH
@@ -265,14 +266,22 @@ contains
         return
       end if
       L = wave_layer_type()
+      below = wave_layer_type()
+      above = wave_layer_type()
       w = omega0
       F_cur = F
       lo = log(gamma0)
       glo = excess(lo, err)
-      if (allocated(err)) then
-        call jump_point(lo, pt, err)
-        return
-      end if
+      ! a start next to a jump (the previous force's gamma_c) may have no layer: a little
+      ! below or above it has
+      do k = 1, 4
+        if (.not. allocated(err)) exit
+        deallocate(err)
+        lo = log(gamma0) + merge(-1, 1, mod(k, 2) == 1)*1e-5_wp*4**((k - 1)/2)
+        L = wave_layer_type()
+        glo = excess(lo, err)
+      end do
+      if (allocated(err)) return
       ! Newton in (ln gamma, ln F_bb) with the layer's own slope (one trace more per step);
       ! a step that does not reduce the misfit hands over to the bracketing below
       x = lo
@@ -369,7 +378,8 @@ contains
       type(point_type), intent(inout) :: pt
       type(error_type), allocatable, intent(inout) :: err
       logical :: ok
-      call wave_jump_point(tw, F_cur, exp(xg), w, L, ok)
+      ok = below%solved .and. above%solved
+      if (ok) call wave_jump_point(tw, F_cur, exp(xg), below, above, L, ok)
       if (.not. ok) then
         if (.not. allocated(err)) call fatal_error(err, "traveling wave: F_bb jumps across "// &
           & "F_E = "//ftoa(F_cur)//" N at gamma = "//ftoa(exp(xg))//" rad, phi = "// &
@@ -391,6 +401,12 @@ contains
       if (allocated(err)) return
       w = L%omega
       excess = log(Fbb) - log(F_cur)
+      ! the latest layers on either side of the force (the sides of a jump, if one is met)
+      if (excess < 0) then
+        below = L
+      else
+        above = L
+      end if
     end function excess
 
   end subroutine wave_backbone_exact

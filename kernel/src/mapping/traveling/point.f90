@@ -41,6 +41,9 @@ module udmap_mapping_traveling_point
   !> A jump's one-sided layers: the nearest below and above gamma_c that have a solution,
   !> from jump_gap_min (relative) doubling up to jump_gap_max (beyond: not one jump).
   real(wp), parameter :: jump_gap_min = 1.0e-9_wp, jump_gap_max = 1.0e-6_wp
+  !> How far (relative) the lower branch is followed up past the jump's first sign, and the
+  !> change of a layer's peak frequency that means another branch.
+  real(wp), parameter :: jump_follow_max = 0.1_wp, jump_branch = 1.0e-3_wp
 
   !> The action linearised about y_b: A(y) = A_b + sum_k dA(:, :, k) (y_k - y_b(k)).
   type :: linear_action_type
@@ -159,9 +162,12 @@ contains
   !> s = 0 and 1 this is the one-sided layer's peak; at phi = 0 the actions depend on gamma
   !> alone and it is 2.5's interpolation of k. ok = .false. when F_E is not inside the jump
   !> or no one-sided layer is found near gamma0.
-  subroutine wave_jump_point(tw, F_E, gamma0, omega0, L, ok)
+  subroutine wave_jump_point(tw, F_E, gamma0, below, above, L, ok)
     type(traveling_type), intent(inout) :: tw
-    real(wp), intent(in) :: F_E, gamma0, omega0
+    real(wp), intent(in) :: F_E, gamma0
+    !> Solved layers below and above the jump (their peaks: each side starts from its own, a
+    !> layer next to the jump can peak on either branch); L: the point.
+    type(wave_layer_type), intent(in) :: below, above
     type(wave_layer_type), intent(inout) :: L
     logical, intent(out) :: ok
     type(point_work_type) :: pw
@@ -171,31 +177,82 @@ contains
     type(error_type), allocatable :: err
     type(brent_type) :: bs
     real(wp), allocatable :: y(:), yb(:), y1(:)
-    real(wp) :: gk, F_bb, w, w1, s, g0, g1, gs, gap, edge(2), gamma_c
+    real(wp) :: gk, F_bb, w, w1, s, g0, g1, gs, gap, edge(2), gamma_c, ghi
     integer :: k
     logical :: more
 
     ok = .false.
     call new_work(tw, F_E, pw)
     allocate(y(pw%ny), yb(pw%ny), y1(pw%ny))
-    w = omega0
     ! the one-sided layers' peaks nearest to gamma0: next to the jump a layer's balance may
-    ! have no solution; the gap doubles from jump_gap_min until one does, on either side
+    ! have no solution, and a layer below it may peak on the upper branch; the gap doubles from
+    ! jump_gap_min until a layer solves below F_E (k = 1, down to jump_follow_max) or above it
+    ! (k = 2, up to jump_gap_max)
     do k = 1, 2
       gap = jump_gap_min
       do
         gk = gamma0*(1 + merge(-gap, gap, k == 1))
-        Lk = L
-        call wave_peak(tw, gk, w, Lk, F_bb, err)
+        if (k == 1) Lk = below
+        if (k == 2) Lk = above
+        call wave_peak(tw, gk, Lk%omega, Lk, F_bb, err)
+        if (.not. allocated(err)) then
+          if ((F_bb < F_E) .eqv. (k == 1)) exit
+          if (k == 2) return
+        else
+          deallocate(err)
+        end if
+        gap = 2*gap
+        if (gap > merge(jump_follow_max, jump_gap_max, k == 1)) return
+      end do
+      edge(k) = gk
+      Ls(k) = Lk
+    end do
+    ! the branches below and above may overlap (the upper one already solves where the lower
+    ! one still does): F_bb is the least of them, so the jump is where the lower branch ends.
+    ! It is followed upwards in steps that double, then the end is bisected to jump_gap_min.
+    ghi = 0
+    gap = jump_gap_min
+    do while (gap <= jump_follow_max)
+      gk = edge(1)*(1 + gap)
+      Lk = Ls(1)
+      call wave_peak(tw, gk, Lk%omega, Lk, F_bb, err)
+      if (.not. lower_branch()) then
+        ghi = gk
+        exit
+      end if
+      edge(1) = gk
+      Ls(1) = Lk
+      gap = 2*gap
+    end do
+    if (ghi == 0) return
+    do while (ghi/edge(1) - 1 > jump_gap_min)
+      gk = sqrt(edge(1)*ghi)
+      Lk = Ls(1)
+      call wave_peak(tw, gk, Lk%omega, Lk, F_bb, err)
+      if (lower_branch()) then
+        edge(1) = gk
+        Ls(1) = Lk
+      else
+        ghi = gk
+      end if
+    end do
+    gamma_c = sqrt(edge(1)*ghi)
+    ! the upper side at or above gamma_c
+    if (edge(2) < gamma_c*(1 + jump_gap_min)) then
+      gap = jump_gap_min
+      do
+        gk = gamma_c*(1 + gap)
+        Lk = Ls(2)
+        call wave_peak(tw, gk, Lk%omega, Lk, F_bb, err)
         if (.not. allocated(err)) exit
         deallocate(err)
         gap = 2*gap
         if (gap > jump_gap_max) return
       end do
-      edge(k) = gk
-      Ls(k) = Lk
-    end do
-    gamma_c = sqrt(edge(1)*edge(2))
+      if (.not. (F_bb > F_E)) return
+      edge(2) = gk
+      Ls(2) = Lk
+    end if
     do k = 1, 2
       L = Ls(k)
       w = L%omega
@@ -236,6 +293,15 @@ contains
     L%J_valid = .false.
 
   contains
+
+    !> Whether the layer just solved (Lk, error err, dropped) continues the lower branch Ls(1):
+    !> solved, below F_E, at a nearby frequency.
+    logical function lower_branch()
+      lower_branch = .not. allocated(err)
+      if (allocated(err)) deallocate(err)
+      if (lower_branch) lower_branch = F_bb < F_E .and. &
+        & abs(Lk%omega/Ls(1)%omega - 1) < jump_branch
+    end function lower_branch
 
     !> ln F_bb(s) - ln F_E: the peak of the layer gamma_c with the blend s (L left there).
     real(wp) function excess(sv)
