@@ -2,8 +2,11 @@
 !> at the interblade phase phi).
 !>
 !> F_bb(gamma) is the minimum over omega of the force of the layer gamma
-!> (udmap_mapping_traveling_layer); a requested F_E is the root of F_bb(gamma) = F_E, found by
-!> bracketing outward from the in-phase answer and Brent's method on ln gamma. The outputs
+!> (udmap_mapping_traveling_layer); a requested F_E is the root of F_bb(gamma) = F_E. It is
+!> solved first as one point (udmap_mapping_traveling_point: wave_point), and where that does
+!> not converge by bracketing outward from the in-phase answer and Brent's method on ln gamma.
+!> A force inside a jump of F_bb (a contact that starts to lift off) takes the set-valued
+!> point of PHYSICS.md 2.5 (wave_jump_point), flagged jump. The outputs
 !> follow from the solved layer at its peak: gamma_P (first harmonic), f_res, sigma_a and u_E
 !> (first-harmonic amplitudes), k = A_gamma,1/gamma_P, the largest excursions at H > 1.
 !>
