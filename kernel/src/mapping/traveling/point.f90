@@ -184,29 +184,10 @@ contains
     ok = .false.
     call new_work(tw, F_E, pw)
     allocate(y(pw%ny), yb(pw%ny), y1(pw%ny))
-    ! the one-sided layers' peaks nearest to gamma0: next to the jump a layer's balance may
-    ! have no solution, and a layer below it may peak on the upper branch; the gap doubles from
-    ! jump_gap_min until a layer solves below F_E (k = 1, down to jump_follow_max) or above it
-    ! (k = 2, up to jump_gap_max)
-    do k = 1, 2
-      gap = jump_gap_min
-      do
-        gk = gamma0*(1 + merge(-gap, gap, k == 1))
-        if (k == 1) Lk = below
-        if (k == 2) Lk = above
-        call wave_peak(tw, gk, Lk%omega, Lk, F_bb, err)
-        if (.not. allocated(err)) then
-          if ((F_bb < F_E) .eqv. (k == 1)) exit
-          if (k == 2) return
-        else
-          deallocate(err)
-        end if
-        gap = 2*gap
-        if (gap > merge(jump_follow_max, jump_gap_max, k == 1)) return
-      end do
-      edge(k) = gk
-      Ls(k) = Lk
-    end do
+    ! the one-sided layers' peaks nearest to gamma0 (a layer below it may peak on the upper
+    ! branch: the lower side is sought down to jump_follow_max)
+    if (.not. one_side(1, gamma0, below, jump_follow_max)) return
+    if (.not. one_side(2, gamma0, above, jump_gap_max)) return
     ! the branches below and above may overlap (the upper one already solves where the lower
     ! one still does): F_bb is the least of them, so the jump is where the lower branch ends.
     ! It is followed upwards in steps that double, then the end is bisected to jump_gap_min.
@@ -239,19 +220,7 @@ contains
     gamma_c = sqrt(edge(1)*ghi)
     ! the upper side at or above gamma_c
     if (edge(2) < gamma_c*(1 + jump_gap_min)) then
-      gap = jump_gap_min
-      do
-        gk = gamma_c*(1 + gap)
-        Lk = Ls(2)
-        call wave_peak(tw, gk, Lk%omega, Lk, F_bb, err)
-        if (.not. allocated(err)) exit
-        deallocate(err)
-        gap = 2*gap
-        if (gap > jump_gap_max) return
-      end do
-      if (.not. (F_bb > F_E)) return
-      edge(2) = gk
-      Ls(2) = Lk
+      if (.not. one_side(2, gamma_c, Ls(2), jump_gap_max)) return
     end if
     do k = 1, 2
       L = Ls(k)
@@ -293,6 +262,34 @@ contains
     L%J_valid = .false.
 
   contains
+
+    !> The one-sided layer's peak nearest to g_ref on side k (1: below it and below F_E; 2:
+    !> above both), from the layer `start`: next to the jump a layer's balance may have no
+    !> solution, so the gap doubles from jump_gap_min up to gap_max until one does on that
+    !> side. Sets edge(k) and Ls(k).
+    logical function one_side(k, g_ref, start, gap_max)
+      integer, intent(in) :: k
+      real(wp), intent(in) :: g_ref, gap_max
+      type(wave_layer_type), intent(in) :: start
+      real(wp) :: gp
+      one_side = .false.
+      gp = jump_gap_min
+      do while (gp <= gap_max)
+        gk = g_ref*(1 + merge(-gp, gp, k == 1))
+        Lk = start
+        call wave_peak(tw, gk, Lk%omega, Lk, F_bb, err)
+        if (.not. allocated(err)) then
+          one_side = (F_bb < F_E) .eqv. (k == 1)
+          if (one_side .or. k == 2) exit
+        else
+          deallocate(err)
+        end if
+        gp = 2*gp
+      end do
+      if (.not. one_side) return
+      edge(k) = gk
+      Ls(k) = Lk
+    end function one_side
 
     !> Whether the layer just solved (Lk, error err, dropped) continues the lower branch Ls(1):
     !> solved, below F_E, at a nearby frequency.
