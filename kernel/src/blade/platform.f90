@@ -365,29 +365,19 @@ contains
     subroutine modal_sums(pm)
       type(platform_modal_type), intent(in) :: pm
       complex(wp) :: g(size(pm%w2)), dg(size(pm%w2)), gs(size(pm%w2))
-      integer :: ia, ic
+      integer :: ic
       g = 1/(pm%w2*cmplx(1.0_wp, omega*pm%beta, wp) - omega**2)
       if (.not. all(g == g .and. abs(g) <= huge(1.0_wp))) then
         call fatal_error(error, "blade: the dynamic stiffness is singular at this frequency "// &
           & "(an undamped natural frequency)", UDMAP_ENUMERIC)
         return
       end if
-      do ic = 1, 3
-        do ia = 1, 3
-          r%pp(ia, ic) = sum(pm%b(ia, :)*pm%b(ic, :)*g)
-        end do
-        r%pE(ic) = sum(pm%b(ic, :)*pm%b(4, :)*g)
-      end do
+      call weighted(pm, g, r%pp, r%pE)
       r%EE = sum(pm%b(4, :)**2*g)
       if (present(derivatives)) then
         if (derivatives) then
           dg = -cmplx(-2*omega, pm%beta*pm%w2, wp)*g*g
-          do ic = 1, 3
-            do ia = 1, 3
-              r%dpp(ia, ic) = sum(pm%b(ia, :)*pm%b(ic, :)*dg)
-            end do
-            r%dpE(ic) = sum(pm%b(ic, :)*pm%b(4, :)*dg)
-          end do
+          call weighted(pm, dg, r%dpp, r%dpE)
         end if
       end if
       if (blade%has_stress) then
@@ -398,5 +388,20 @@ contains
         r%sE = sum(pm%b(4, :)*gs)
       end if
     end subroutine modal_sums
+
+    !> The platform rows' and the excitation's products with the modes, summed with the modal
+    !> weights wt (the receptances, or their derivatives).
+    pure subroutine weighted(pm, wt, pp, pE)
+      type(platform_modal_type), intent(in) :: pm
+      complex(wp), intent(in) :: wt(:)
+      complex(wp), intent(out) :: pp(3, 3), pE(3)
+      integer :: ja, jc
+      do jc = 1, 3
+        do ja = 1, 3
+          pp(ja, jc) = sum(pm%b(ja, :)*pm%b(jc, :)*wt)
+        end do
+        pE(jc) = sum(pm%b(jc, :)*pm%b(4, :)*wt)
+      end do
+    end subroutine weighted
   end subroutine platform_receptances
 end module udmap_blade_platform
