@@ -36,7 +36,7 @@ module udmap
     & new_jenkins_damper, new_table_damper, stiffness_table
   use udmap_mapping_model, only: analysis_type, point_type, curve_type, model_type, new_model, &
     & limit_force, backbone_curve, backbone, response, response_curves, set_harmonics, &
-    & admissible_force, REGIME_STUCK, REGIME_PARTIAL_SLIP, REGIME_FULL_SLIP, REGIME_LIMIT, &
+    & set_ibpa, admissible_force, REGIME_STUCK, REGIME_PARTIAL_SLIP, REGIME_FULL_SLIP, REGIME_LIMIT, &
     & BRANCH_LOWER, BRANCH_UPPER, BRANCH_TURNING
   use udmap_mapping_plausibility, only: warning_type, plausibility_warnings, model_warnings, &
     & WARNING_PLATFORM_MASS, WARNING_PLATFORM_INERTIA, WARNING_GAMMA_B_LARGE, &
@@ -56,7 +56,8 @@ module udmap
     & new_table_damper, stiffness_table
   ! mapping (PHYSICS.md 3-5)
   public :: analysis_type, point_type, curve_type, model_type, new_model, limit_force, &
-    & backbone_curve, backbone, response, response_curves, set_harmonics, admissible_force
+    & backbone_curve, backbone, response, response_curves, set_harmonics, set_ibpa, &
+    & admissible_force
   public :: REGIME_STUCK, REGIME_PARTIAL_SLIP, REGIME_FULL_SLIP, REGIME_LIMIT
   public :: BRANCH_LOWER, BRANCH_UPPER, BRANCH_TURNING
   ! plausibility warnings (docs/case-files.md, "Plausibility")

@@ -249,6 +249,11 @@ int udmap_model_classify(udmap_error error, udmap_model model, double F_lim, int
 int udmap_model_set_harmonics(udmap_error error, udmap_model model, int harmonics,
                               double harmonic_tol);
 
+/* The interblade phase angle [deg] for the next calls (as udmap_analysis.ibpa_deg: 0 in
+ * phase, else a traveling wave, PHYSICS.md 2.6), keeping every cache of the model (a sweep
+ * over engine orders builds the bare blade and the single-harmonic backbone table once). */
+int udmap_model_set_ibpa(udmap_error error, udmap_model model, double ibpa_deg);
+
 /* With on != 0, backbone points at harmonics != 1 come from the force table (what the FMU
  * uses after a change of F_E alone, PHYSICS.md 4.1): interpolated in ln F_E to
  * harmonic_tol/1000 where a verified panel of exact points holds F_E, solved exactly

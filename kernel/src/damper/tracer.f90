@@ -175,7 +175,8 @@ contains
     seg%rate_scale = max(maxval(geo%kn*abs(seg%cn)), maxval(geo%kt*abs(seg%ct)))
     if (present(events)) events%n = 0
     if (seg%rate_scale > 0) then
-      call set_offsets(state%X)
+      ! state%off holds the offsets of state%X already (set where state%X was: at the end of
+      ! the last segment, or zero in the virgin state)
       state%gamma = 0
       state%direction = 1
       if (present(events)) then

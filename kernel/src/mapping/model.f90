@@ -41,7 +41,7 @@ module udmap_mapping_model
   public :: analysis_type, point_type, curve_type, model_type
   public :: limit_force_backbone, admissible_force, is_traveling, cover_forces
   public :: new_model, set_damper, limit_force, backbone_curve, backbone, response, &
-    & response_curves, harmonics_near_modes, set_harmonics
+    & response_curves, harmonics_near_modes, set_harmonics, set_ibpa
   public :: EIGEN_AUTO, EIGEN_DIRECT, EIGEN_MODAL
   public :: REGIME_STUCK, REGIME_PARTIAL_SLIP, REGIME_FULL_SLIP, REGIME_LIMIT
   public :: BRANCH_LOWER, BRANCH_UPPER, BRANCH_TURNING
@@ -143,6 +143,19 @@ contains
     if (analysis%band_interpolation) &
       & call new_band_receptances(model%bare%band, blade, model%omega_lo, model%omega_hi)
   end subroutine new_model
+
+  !> The interblade phase angle [deg] of the next calls (analysis%ibpa_deg: 0 in phase, else a
+  !> traveling wave, PHYSICS.md 2.6), keeping every cache of the model: a sweep over engine
+  !> orders builds the bare blade and the in-phase backbone table once.
+  subroutine set_ibpa(model, ibpa_deg, error)
+    type(model_type), intent(inout) :: model
+    real(wp), intent(in) :: ibpa_deg
+    type(error_type), allocatable, intent(out) :: error
+    call require(abs(ibpa_deg) < huge(1.0_wp), &
+      & "analysis.ibpa_deg must be a finite angle [deg]", error)
+    if (allocated(error)) return
+    model%analysis%ibpa_deg = ibpa_deg
+  end subroutine set_ibpa
 
   !> The response at the excitation frequency f_exc [Hz] for the forces F_E [N].
   subroutine response(model, f_exc, F_E, points, error)

@@ -177,6 +177,7 @@ model_curve_size = declare("udmap_model_curve_size", [vp, vp, _ci, c_int_p])
 model_curve_get = declare("udmap_model_curve_get", [vp, vp, _ci, _ci, c_double_p, c_double_p,
                                                     c_double_p, c_int_p, c_int_p])
 model_set_harmonics = declare("udmap_model_set_harmonics", [vp, vp, _ci, _cd])
+model_set_ibpa = declare("udmap_model_set_ibpa", [vp, vp, _cd])
 # plausibility warnings (docs/case-files.md, "Plausibility"): kinds UDMAP_WARNING_* of udmap.h
 WARNING_KINDS = {1: "platform_mass", 2: "platform_inertia", 3: "gamma_b_large",
                  4: "stuck_shift", 5: "band_misses_mode"}

@@ -120,6 +120,16 @@ class Model:
                                                   harmonics_code(harmonics),
                                                   float(harmonic_tol)))
 
+    def set_ibpa(self, ibpa_deg: float) -> None:
+        """The interblade phase angle [deg] for the next calls (as ``ibpa_deg`` of the
+        constructor), keeping every cache: a sweep over engine orders builds the bare-blade data
+        and the in-phase backbone table once."""
+        ibpa_deg = float(ibpa_deg)
+        if not math.isfinite(ibpa_deg):
+            raise InputError(f"ibpa_deg must be a finite angle [deg], got {ibpa_deg!r}")
+        self._err.check(_capi.model_set_ibpa(self._err.ptr, self._ptr, ibpa_deg))
+        self.ibpa_deg = ibpa_deg
+
     def set_force_table(self, on: bool = True) -> None:
         """Backbone points at harmonics != 1 from the force table (as the FMU after a change of
         F_E alone): interpolated to harmonic_tol/1000 where a verified panel of exact points

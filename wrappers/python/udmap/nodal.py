@@ -6,6 +6,7 @@ family. Used by ``udmap nodal`` and the demo."""
 from __future__ import annotations
 
 import os
+import threading
 from concurrent.futures import ThreadPoolExecutor
 
 from .model import Model
@@ -24,14 +25,10 @@ def nodal_diameter(engine_order: int, blades: int) -> int:
     return min(eo, blades - eo)
 
 
-def _engine_order(blade, damper, analysis: dict, blades: int, forces, eo: int) -> list[dict]:
-    """The points of one engine order (its own model over the shared blade and damper)."""
+def _engine_order(model: Model, blades: int, forces, eo: int) -> list[dict]:
+    """The points of one engine order, on a model of the wheel's blade and damper."""
     ibpa = ibpa_of(eo, blades)
-    model = Model(blade, damper, analysis["f_min"], analysis["f_max"],
-                  sigma_all=analysis["sigma_all"], rtol=analysis["rtol"],
-                  grid_per_decade=analysis["grid_per_decade"],
-                  harmonics=analysis["harmonics"], harmonic_tol=analysis["harmonic_tol"],
-                  ibpa_deg=ibpa)
+    model.set_ibpa(ibpa)
     F_lim = model.limit_force()
     out = []
     for p in model.backbone(forces):
@@ -51,12 +48,24 @@ def sweep(blade, damper, analysis: dict, blades: int, forces, progress=None,
           workers: int | None = None) -> dict:
     """The sweep's points (one per engine order and force, engine order first) and the worst
     engine order of each force. The engine orders run on ``workers`` threads (default: the
-    CPUs): the kernel keeps no global state and releases Python's lock in its calls, each
-    engine order has its own model, and the blade and damper are only read."""
+    CPUs): the kernel keeps no global state and releases Python's lock in its calls, and the
+    blade and damper are only read. Each thread has one model, moved from engine order to
+    engine order (set_ibpa): the bare-blade data and the in-phase backbone table that starts
+    every traveling peak are built once a thread, not once an engine order."""
     workers = max(1, min(workers or os.cpu_count() or 1, blades))
+    local = threading.local()
+
+    def task(eo: int) -> list[dict]:
+        if not hasattr(local, "model"):
+            local.model = Model(blade, damper, analysis["f_min"], analysis["f_max"],
+                                sigma_all=analysis["sigma_all"], rtol=analysis["rtol"],
+                                grid_per_decade=analysis["grid_per_decade"],
+                                harmonics=analysis["harmonics"],
+                                harmonic_tol=analysis["harmonic_tol"])
+        return _engine_order(local.model, blades, forces, eo)
+
     with ThreadPoolExecutor(max_workers=workers) as pool:
-        futures = [pool.submit(_engine_order, blade, damper, analysis, blades, forces, eo)
-                   for eo in range(blades)]
+        futures = [pool.submit(task, eo) for eo in range(blades)]
         points = []
         for future in futures:  # in engine-order order, whatever finishes first
             points += future.result()

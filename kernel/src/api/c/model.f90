@@ -16,7 +16,7 @@ module udmap_api_c_model
   use udmap_mapping_model, only: is_traveling, cover_forces
   use udmap_mapping_model, only: model_type, analysis_type, point_type, curve_type, new_model, &
     & set_damper, limit_force, backbone_curve, backbone, response, response_curves, &
-    & limit_force_backbone, set_harmonics, admissible_force
+    & limit_force_backbone, set_harmonics, set_ibpa, admissible_force
   use udmap_mapping_model_data, only: regime_of, check_forces, REGIME_LIMIT
   use udmap_mapping_harmonic_mapping, only: force_table_count
   implicit none
@@ -386,6 +386,20 @@ contains
     end if
     stat = set_error(errh, error)
   end function udmap_model_set_harmonics
+
+  !> int udmap_model_set_ibpa(error, model, ibpa_deg): the interblade phase angle [deg] of the
+  !> next calls (as udmap_analysis.ibpa_deg), keeping everything the model has cached.
+  function udmap_model_set_ibpa(errh, modelh, ibpa_deg) result(stat) &
+      & bind(C, name="udmap_model_set_ibpa")
+    type(c_ptr), value :: errh, modelh
+    real(c_double), value :: ibpa_deg
+    integer(c_int) :: stat
+    type(error_type), allocatable :: error
+    type(c_model_type), pointer :: m
+    call model_from_handle(errh, modelh, m, error)
+    if (.not.allocated(error)) call set_ibpa(m%model, real(ibpa_deg, wp), error)
+    stat = set_error(errh, error)
+  end function udmap_model_set_ibpa
 
   !> int udmap_model_set_force_table(error, model, on): with on /= 0, backbone points at
   !> harmonics /= 1 come from the force table (udmap_mapping_harmonic_force_table; what the FMU uses

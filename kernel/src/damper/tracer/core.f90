@@ -165,6 +165,7 @@ contains
     real(wp) :: dgam, dcf, tc(10), tcp(10), rate_of(10), g(3), s(3), N(3), T(3), gp(3), sp(3), Np(3), Tp(3)
     real(wp) :: f(3), df(3), fp(3), remaining, step, step_p, cur, scale
     character(len=60) :: buf
+    logical :: with_p
 
     travel = 0
     dM = 0
@@ -176,6 +177,8 @@ contains
       dgam = 0
       dcf = real(dir, wp)
     end if
+    ! p-derivatives that start at zero with a target independent of p stay zero: not computed
+    with_p = target_p /= 0 .or. st%gamma_p /= 0 .or. any(st%q_p /= 0) .or. any(st%w_p /= 0)
     pred = st%mode
     if (var == 1 .and. st%direction /= dir) then
       where (pred == CONTACT_SLIP_POS .or. pred == CONTACT_SLIP_NEG) pred = CONTACT_STICK
@@ -188,12 +191,19 @@ contains
         if (var == 1) st%direction = dir
         return
       end if
-      call snap_sliders(geo, st)
+      call snap_sliders(geo, st, with_p)
       call resolve_mode(geo, st, dgam, dcf, pred, rt, error)
       if (allocated(error)) return
 
       call contact_forces(geo, st%mode, st%q, st%gamma, st%w, g, s, N, T, st%off)
-      call contact_forces(geo, st%mode, st%q_p, st%gamma_p, st%w_p, gp, sp, Np, Tp)
+      if (with_p) then
+        call contact_forces(geo, st%mode, st%q_p, st%gamma_p, st%w_p, gp, sp, Np, Tp)
+      else
+        gp = 0
+        sp = 0
+        Np = 0
+        Tp = 0
+      end if
       ! Candidate events: travel to each boundary the states move towards.
       nc = 0
       do i = 1, 3
@@ -346,18 +356,20 @@ contains
 
   !> Keeps the sliders of slipping and open contacts on their forces (T = -kt (s - w)),
   !> with their p-derivatives, so that a change to stick continues the force.
-  pure subroutine snap_sliders(geo, st)
+  pure subroutine snap_sliders(geo, st, with_p)
     type(damper_geometry_type), intent(in) :: geo
     type(damper_state_type), intent(inout) :: st
+    !> The p-derivatives are not all zero.
+    logical, intent(in) :: with_p
     real(wp) :: g(3), s(3), N(3), T(3), gp(3), sp(3), Np(3), Tp(3)
     integer :: i
     if (all(st%mode == CONTACT_STICK)) return
     call contact_forces(geo, st%mode, st%q, st%gamma, st%w, g, s, N, T, st%off)
-    call contact_forces(geo, st%mode, st%q_p, st%gamma_p, st%w_p, gp, sp, Np, Tp)
+    if (with_p) call contact_forces(geo, st%mode, st%q_p, st%gamma_p, st%w_p, gp, sp, Np, Tp)
     do i = 1, 3
       if (st%mode(i) /= CONTACT_STICK) then
         st%w(i) = s(i) + T(i)/geo%kt(i)
-        st%w_p(i) = sp(i) + Tp(i)/geo%kt(i)
+        if (with_p) st%w_p(i) = sp(i) + Tp(i)/geo%kt(i)
       end if
     end do
   end subroutine snap_sliders
@@ -379,7 +391,8 @@ contains
     character(len=120) :: buf
 
     call contact_forces(geo, st%mode, st%q, st%gamma, st%w, g, s, N, T, st%off)
-    tolF = force_tolerance(geo, st)
+    ! forces within this of a boundary count as on it: the resolution of the force sums
+    tolF = TOL_FORCE*max(abs(st%CF), maxval(abs(N)), maxval(abs(T)))
     tolR = TOL_RATE*(geo%rate_scale*abs(dgam) + abs(dcf))
     sig0 = 0
     do i = 1, 3
@@ -478,15 +491,6 @@ contains
     end subroutine snap_new_states
   end subroutine resolve_mode
 
-  !> Forces within this of a boundary count as on it: the resolution of the force sums.
-  pure real(wp) function force_tolerance(geo, st)
-    type(damper_geometry_type), intent(in) :: geo
-    type(damper_state_type), intent(in) :: st
-    real(wp) :: g(3), s(3), N(3), T(3)
-    call contact_forces(geo, st%mode, st%q, st%gamma, st%w, g, s, N, T, st%off)
-    force_tolerance = TOL_FORCE*max(abs(st%CF), maxval(abs(N)), maxval(abs(T)))
-  end function force_tolerance
-
   !> Moves `first` to the front of the candidate list (if it is in it).
   pure subroutine put_first(list, first)
     integer, intent(inout) :: list(:)
@@ -510,19 +514,30 @@ contains
     type(rates_type), intent(out) :: rt
     logical, intent(out) :: ok
     real(wp) :: K(3,3), h(3), v(3)
-    integer :: i, sg
+    integer :: i, sg, r, c
 
+    ! K += kn bn bn^T + kt bt bt^T (stick), kn v bn^T (slip), element by element: the tracer's
+    ! most frequent call, without the temporaries of whole-array products
     K = 0
     h = 0
     do i = 1, 3
       select case (mode(i))
       case (CONTACT_STICK)
-        K = K + geo%kn(i)*outer(geo%bn(:,i), geo%bn(:,i)) + geo%kt(i)*outer(geo%bt(:,i), geo%bt(:,i))
+        do c = 1, 3
+          do r = 1, 3
+            K(r,c) = K(r,c) + geo%kn(i)*(geo%bn(r,i)*geo%bn(c,i)) + &
+              & geo%kt(i)*(geo%bt(r,i)*geo%bt(c,i))
+          end do
+        end do
         h = h + geo%kn(i)*geo%cn(i)*geo%bn(:,i) + geo%kt(i)*geo%ct(i)*geo%bt(:,i)
       case (CONTACT_SLIP_POS, CONTACT_SLIP_NEG)
         sg = merge(1, -1, mode(i) == CONTACT_SLIP_POS)
         v = geo%bn(:,i) + sg*geo%mu*geo%bt(:,i)
-        K = K + geo%kn(i)*outer(v, geo%bn(:,i))
+        do c = 1, 3
+          do r = 1, 3
+            K(r,c) = K(r,c) + geo%kn(i)*(v(r)*geo%bn(c,i))
+          end do
+        end do
         h = h + geo%kn(i)*geo%cn(i)*v
       end select
     end do
@@ -549,15 +564,6 @@ contains
     end do
     rt%dM = sum(geo%cn*rt%dN + geo%ct*rt%dT)
   end subroutine compute_rates
-
-  pure function outer(a, b) result(c)
-    real(wp), intent(in) :: a(3), b(3)
-    real(wp) :: c(3,3)
-    integer :: j
-    do j = 1, 3
-      c(:,j) = a*b(j)
-    end do
-  end function outer
 
   !> Solves the 3x3 system A x = b by cofactors; ok is false if A is numerically singular.
   pure subroutine solve3(A, b, x, ok)
