@@ -26,6 +26,7 @@ contains
     type(unittest_type), allocatable, intent(out) :: testsuite(:)
     testsuite = [new_unittest("wave_aft_in_phase", run_wave_aft_in_phase), &
       & new_unittest("wave_energy", run_wave_energy), &
+      & new_unittest("wave_derivatives", run_wave_derivatives), &
       & new_unittest("stuck_hermitian", run_stuck_hermitian), &
       & new_unittest("phi_to_zero", run_phi_to_zero), &
       & new_unittest("inputs", run_inputs), &
@@ -91,6 +92,109 @@ contains
       call check_close(suite, "loop area = first-harmonic work", res%energy, W1, rtol=1e-4_wp)
     end do
   end subroutine run_wave_energy
+
+  !> The derivatives of the traced action with respect to the platform's harmonics (the
+  !> tracer's forward mode, udmap_damper_tracer_tangent) equal central differences of the
+  !> traced action itself: H = 1 and 3, stuck, slipping and lifting off (relative to the
+  !> action's size over gamma_1).
+  subroutine run_wave_derivatives(suite)
+    type(test_suite), intent(inout) :: suite
+    type(damper_type) :: damper
+    type(asymmetric_params_type) :: prm
+    type(error_type), allocatable :: error
+    type(wave_settings_type) :: settings
+    type(wave_result_type) :: res
+    real(wp) :: A0(3), A0p(3), A0m(3), P0(3), dP0(3, 14), dA0(3, 14), y(14), scale, dy, err, big
+    complex(wp) :: P(3, 3), Ap(3, 3), Am(3, 3), A(3, 3), dP(3, 3, 14), dA(3, 3, 14)
+    integer :: ic, H, k, ny
+    real(wp), parameter :: phis(3) = [0.6_wp, pi/2, 0.05_wp]
+    ! (mu, gamma_1 [rad]): stuck, slipping, lifting off (blade A's damper)
+    real(wp), parameter :: cases(2, 3) = reshape([1.5_wp, 2e-4_wp, 0.3_wp, 1.5e-3_wp, &
+      & 0.5_wp, 4e-3_wp], [2, 3])
+    do ic = 1, 3
+      prm = blade_a_damper_params()
+      prm%mu = cases(1, ic)
+      call new_asymmetric_damper(damper, prm, error)
+      call check_no_error(suite, "damper", error)
+      if (allocated(error)) return
+      do H = 1, 3, 2
+        settings%samples = max(64, 8*H)
+        ! y: gamma_0, then Re and Im of u_h, v_h (h = 1..H), then gamma_1 (real); the other
+        ! harmonics of gamma at fixed small values
+        ny = 4*H + 2
+        y(1) = 1e-5_wp*cases(2, ic)
+        do k = 1, H
+          y(4*k-2:4*k+1) = cases(2, ic)*0.006_wp*[0.4_wp, -0.3_wp, 0.2_wp, 0.5_wp]/k
+        end do
+        y(ny) = cases(2, ic)
+        call unpack(y, P0, P)
+        dP0 = 0
+        dP = 0
+        do k = 1, ny
+          dP0(3, k) = merge(1.0_wp, 0.0_wp, k == 1)
+          if (k > 1 .and. k < ny) then
+            dP(1 + mod((k - 2)/2, 2), (k - 2)/4 + 1, k) = merge((1.0_wp, 0.0_wp), &
+              & (0.0_wp, 1.0_wp), mod(k, 2) == 0)
+          end if
+        end do
+        ! gamma_1, and the higher harmonics of gamma that unpack scales with it
+        dP(3, 1:H, ny) = P(3, 1:H)/y(ny)
+        call wave_aft(damper%geometry, prm%CF, phis(ic), P0, P(:, 1:H), settings, A0, &
+          & A(:, 1:H), error, res, dP0(:, 1:ny), dP(:, 1:H, 1:ny), dA0(:, 1:ny), &
+          & dA(:, 1:H, 1:ny))
+        call check_no_error(suite, "wave_aft with derivatives", error)
+        if (allocated(error)) return
+        if (H == 1) call check_true(suite, "the cases are stuck, slip and lift off", &
+          & (ic == 1 .neqv. res%slipped) .and. (ic == 3 .eqv. res%lifted))
+        scale = maxval(abs(A(:, 1:H)))/cases(2, ic)
+        big = 0
+        do k = 1, ny
+          dy = 1e-6_wp*merge(cases(2, ic), 0.006_wp*cases(2, ic), k == 1 .or. k == ny)
+          call unpack(y + dy*unit(k), P0, P)
+          call wave_aft(damper%geometry, prm%CF, phis(ic), P0, P(:, 1:H), settings, A0p, &
+            & Ap(:, 1:H), error)
+          call unpack(y - dy*unit(k), P0, P)
+          call wave_aft(damper%geometry, prm%CF, phis(ic), P0, P(:, 1:H), settings, A0m, &
+            & Am(:, 1:H), error)
+          call check_no_error(suite, "wave_aft", error)
+          err = max(maxval(abs((Ap(:, 1:H) - Am(:, 1:H))/(2*dy) - dA(:, 1:H, k))), &
+            & maxval(abs((A0p - A0m)/(2*dy) - dA0(:, k))))
+          big = max(big, err/scale)
+        end do
+        ! (central differences: rounding, 2e-6 at the stuck amplitude; lifting off, the
+        ! events that cross an instant leave O(h^3) in the traced action: 1e-5 of its
+        ! derivatives)
+        call check_true(suite, "derivatives = central differences", &
+          & big <= merge(5e-5_wp, 1e-5_wp, ic == 3))
+        print '(a, i0, a, i0, a, es10.3)', "  wave derivatives, case ", ic, ", H = ", H, &
+          & ": largest difference from central differences ", big
+      end do
+    end do
+
+  contains
+
+    function unit(k) result(e)
+      integer, intent(in) :: k
+      real(wp) :: e(14)
+      e = 0
+      e(k) = 1
+    end function unit
+
+    subroutine unpack(yv, P0v, Pv)
+      real(wp), intent(in) :: yv(14)
+      real(wp), intent(out) :: P0v(3)
+      complex(wp), intent(out) :: Pv(3, 3)
+      integer :: kk
+      P0v = [0.0_wp, 0.0_wp, yv(1)]
+      Pv = 0
+      do kk = 1, H
+        Pv(1, kk) = cmplx(yv(4*kk-2), yv(4*kk-1), wp)
+        Pv(2, kk) = cmplx(yv(4*kk), yv(4*kk+1), wp)
+        if (kk > 1) Pv(3, kk) = cmplx(0.05_wp, -0.03_wp, wp)*yv(ny)/kk
+      end do
+      Pv(3, 1) = yv(ny)
+    end subroutine unpack
+  end subroutine run_wave_derivatives
 
   !> Friction so high that nothing slips at a small force: the damper is a linear spring between the two
   !> platforms, K_d (6x6, condensed here from the contact springs and the damper's

@@ -31,6 +31,10 @@ module udmap_damper_tracer
     integer :: n = 0
     real(wp), allocatable :: s(:)
     integer, allocatable :: before(:), after(:)
+    !> The step of `log` that ends at each event (0: the segment's start), and the contact
+    !> states as the segment started.
+    integer, allocatable :: vertex(:)
+    integer :: entry = 0
     type(mode_log_type) :: log
   end type path_events_type
 
@@ -173,7 +177,11 @@ contains
     dX = X_to - state%X
     seg = along(geo, dX)
     seg%rate_scale = max(maxval(geo%kn*abs(seg%cn)), maxval(geo%kt*abs(seg%ct)))
-    if (present(events)) events%n = 0
+    if (present(events)) then
+      events%n = 0
+      events%log%n = 0
+      events%entry = mode_code(state%mode)
+    end if
     if (seg%rate_scale > 0) then
       ! state%off holds the offsets of state%X already (set where state%X was: at the end of
       ! the last segment, or zero in the virgin state)
@@ -182,8 +190,7 @@ contains
       if (present(events)) then
         ! a vertex ends each step of the tracer, in the states of that step: an event inside
         ! the segment is a vertex before s = 1, the states after it those of the next vertex
-        events%log%n = 0
-        entry = mode_code(state%mode)
+        entry = events%entry
         call trace_core(seg, state, 1, 1, 1.0_wp, 0.0_wp, .true., travel, dM, error, &
           & modes=events%log)
         if (allocated(error)) return
@@ -191,11 +198,11 @@ contains
           ! states that change as the segment starts (the other side of an event that ended
           ! the last segment, or a reversal at the instant itself) are an event at s = 0
           if (lg%n >= 1) then
-            if (lg%code(1) /= entry) call add_event(0.0_wp, entry, lg%code(1))
+            if (lg%code(1) /= entry) call add_event(0, 0.0_wp, entry, lg%code(1))
           end if
           do j = 1, lg%n - 1
             if (lg%s(j) > 0 .and. lg%s(j) < 1 .and. lg%code(j) /= lg%code(j+1)) &
-              & call add_event(lg%s(j), lg%code(j), lg%code(j+1))
+              & call add_event(j, lg%s(j), lg%code(j), lg%code(j+1))
           end do
         end associate
       else
@@ -217,10 +224,12 @@ contains
       end do
     end subroutine set_offsets
 
-    subroutine add_event(s_e, code_before, code_after)
+    subroutine add_event(vertex, s_e, code_before, code_after)
+      integer, intent(in) :: vertex
       real(wp), intent(in) :: s_e
       integer, intent(in) :: code_before, code_after
       events%n = events%n + 1
+      call put(events%vertex, events%n, vertex)
       call put(events%s, events%n, s_e)
       call put(events%before, events%n, code_before)
       call put(events%after, events%n, code_after)

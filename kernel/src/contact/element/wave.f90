@@ -28,6 +28,8 @@ module udmap_contact_element_wave
     & CONTACT_SLIP_POS, CONTACT_SLIP_NEG, compute_rates, rates_type, code_modes
   use udmap_damper_tracer, only: virgin_state, ramp_CF, trace_path, platform_actions, same_forces, &
     & path_events_type, along
+  use udmap_damper_tracer_tangent, only: path_tangent_type, new_path_tangent, &
+    & path_tangent_segment, path_tangent_actions
   implicit none
   private
   public :: wave_aft, wave_settings_type, wave_result_type, wave_static_action, wave_samples
@@ -81,8 +83,10 @@ contains
 
   !> Harmonics A0 (static) and A(:,h), h = 1..size(P,2), of the damper's restoring action on
   !> blade 0 for blade 0's platform harmonics P0 (static) and P(:,h), at the interblade phase
-  !> phi [rad].
-  subroutine wave_aft(geo, CF, phi, P0, P, settings, A0, A, error, res)
+  !> phi [rad]. With dP0 and dP (P's derivatives with respect to np parameters, P(3,1) real and
+  !> positive), also their derivatives dA0 and dA: the traced function's, exactly
+  !> (udmap_damper_tracer_tangent, and the kink corrections' derivatives).
+  subroutine wave_aft(geo, CF, phi, P0, P, settings, A0, A, error, res, dP0, dP, dA0, dA)
     type(damper_geometry_type), intent(in) :: geo
     real(wp), intent(in) :: CF, phi, P0(3)
     complex(wp), intent(in) :: P(:, :)
@@ -91,14 +95,20 @@ contains
     complex(wp), intent(out) :: A(:, :)
     type(error_type), allocatable, intent(out) :: error
     type(wave_result_type), intent(out), optional :: res
+    real(wp), intent(in), optional :: dP0(:, :)
+    complex(wp), intent(in), optional :: dP(:, :, :)
+    real(wp), intent(out), optional :: dA0(:, :)
+    complex(wp), intent(out), optional :: dA(:, :, :)
     type(damper_state_type) :: st, start
     type(path_events_type) :: ev
-    real(wp), allocatable :: X(:, :), AL(:, :), AR(:, :)
-    complex(wp), allocatable :: e(:, :), CL(:, :), CR(:, :), root(:)
+    type(path_tangent_type) :: tan
+    real(wp), allocatable :: X(:, :), AL(:, :), AR(:, :), Xp(:, :, :), ALp(:, :, :), ARp(:, :, :)
+    complex(wp), allocatable :: e(:, :), CL(:, :), CR(:, :), root(:), CLp(:, :, :), CRp(:, :, :)
     real(wp) :: Ak(3,2), energy, F_scale, theta
-    complex(wp), allocatable :: Pr(:, :), Pphi(:, :)
-    integer :: ns, j, k, per, H
-    logical :: closed, slipped, lifted, cs(3)
+    real(wp), allocatable :: Akp(:, :, :)
+    complex(wp), allocatable :: Pr(:, :), Pphi(:, :), Prp(:, :, :), Pphip(:, :, :)
+    integer :: ns, j, k, per, H, np, kp
+    logical :: closed, slipped, lifted, cs(3), tangent
 
     ns = settings%samples
     H = size(P, 2)
@@ -125,15 +135,46 @@ contains
       root(j) = exp(cmplx(0.0_wp, -2*pi*j/ns, wp))
     end do
     do j = 0, ns - 1
-      X(1:3, j) = sampled(Pr, j)
-      X(4:6, j) = sampled(Pphi, j)
+      X(1:3, j) = sampled(Pr, P0, j)
+      X(4:6, j) = sampled(Pphi, P0, j)
     end do
+    tangent = present(dP0) .and. present(dP) .and. present(dA0) .and. present(dA)
+    np = 0
+    if (tangent) then
+      if (theta /= 0) then
+        call fatal_error(error, "wave_aft: derivatives need a real positive first harmonic "// &
+          & "of gamma_P", UDMAP_EINPUT)
+        return
+      end if
+      np = size(dP, 3)
+      allocate(Xp(6, 0:ns-1, np), ALp(3, ns, np), ARp(3, ns, np), Akp(3, 2, np), &
+        & CLp(3, 0:H, np), CRp(3, 0:H, np), Prp(3, H, np), Pphip(3, H, np))
+      do kp = 1, np
+        do k = 1, H
+          Prp(:, k, kp) = dP(:, k, kp)
+          Pphip(:, k, kp) = dP(:, k, kp)*exp(cmplx(0.0_wp, k*phi, wp))
+        end do
+        do j = 0, ns - 1
+          Xp(1:3, j, kp) = sampled(Prp(:, :, kp), dP0(:, kp), j)
+          Xp(4:6, j, kp) = sampled(Pphip(:, :, kp), dP0(:, kp), j)
+        end do
+      end do
+      call new_path_tangent(tan, np)
+    end if
     call virgin_state(geo, st)
     call ramp_CF(geo, st, CF, error)
     if (allocated(error)) return
     F_scale = max(CF, 1e-300_wp)
-    call trace_path(geo, st, X(:, 0), error)
-    if (allocated(error)) return
+    if (tangent) then
+      ! the ramp from rest to the first instant: its start does not move with the parameters
+      call trace_path(geo, st, X(:, 0), error, ev)
+      if (allocated(error)) return
+      call path_tangent_segment(geo, tan, [(0.0_wp, j = 1, 6)], X(:, 0), 0*Xp(:, 0, :), &
+        & Xp(:, 0, :), ev%entry, ev%log)
+    else
+      call trace_path(geo, st, X(:, 0), error)
+      if (allocated(error)) return
+    end if
     closed = .false.
     do per = 1, settings%max_periods
       start = st
@@ -143,12 +184,23 @@ contains
       energy = 0
       CL = 0
       CR = 0
+      if (tangent) then
+        CLp = 0
+        CRp = 0
+      end if
       do j = 1, ns
         call trace_path(geo, st, X(:, mod(j, ns)), error, ev)
         if (allocated(error)) return
+        if (tangent) then
+          call path_tangent_segment(geo, tan, X(:, j-1), X(:, mod(j, ns)), Xp(:, j-1, :), &
+            & Xp(:, mod(j, ns), :), ev%entry, ev%log)
+          call path_tangent_actions(geo, tan, st%mode, Xp(:, mod(j, ns), :), Akp)
+          ALp(:, j, :) = Akp(:, 1, :)
+          ARp(:, j, :) = Akp(:, 2, :)
+        end if
         do k = 1, ev%n
           call correct_kink((j - 1 + ev%s(k))*2*pi/ns, ev%s(k), code_modes(ev%before(k)), &
-            & code_modes(ev%after(k)))
+            & code_modes(ev%after(k)), ev%vertex(k))
         end do
         Ak = platform_actions(geo, st)
         ! trapezoid on the samples: the work of the actions on their platforms
@@ -180,6 +232,17 @@ contains
         & + (CL(:, k) + exp(cmplx(0.0_wp, -k*phi, wp))*CR(:, k))/pi
       if (theta /= 0) A(:, k) = A(:, k)*exp(cmplx(0.0_wp, k*theta, wp))
     end do
+    if (tangent) then
+      do kp = 1, np
+        dA0(:, kp) = (sum(ALp(:, :, kp), dim=2) + sum(ARp(:, :, kp), dim=2))/ns + &
+          & real(CLp(:, 0, kp) + CRp(:, 0, kp), wp)/(2*pi)
+        do k = 1, H
+          dA(:, k, kp) = (matmul(ALp(:, :, kp), e(k, :)) + &
+            & exp(cmplx(0.0_wp, -k*phi, wp))*matmul(ARp(:, :, kp), e(k, :)))*(2.0_wp/ns) &
+            & + (CLp(:, k, kp) + exp(cmplx(0.0_wp, -k*phi, wp))*CRp(:, k, kp))/pi
+        end do
+      end do
+    end if
     if (present(res)) then
       res%energy = energy
       res%slipped = slipped
@@ -195,15 +258,13 @@ contains
     !> m_before to m_after: (h^2/2) jump(A') e^{-ik t_e} B2(delta) added to the Fourier
     !> integrals CL, CR (k = 0..H) and the same for the work, A' the actions' rates along
     !> the platforms' velocity at t_e.
-    subroutine correct_kink(t_e, delta, m_before, m_after)
+    subroutine correct_kink(t_e, delta, m_before, m_after, vertex)
       real(wp), intent(in) :: t_e, delta
-      integer, intent(in) :: m_before(3), m_after(3)
-      type(damper_geometry_type) :: arc
-      type(rates_type) :: r0, r1
-      real(wp) :: V(6), dA(3, 2), c
+      integer, intent(in) :: m_before(3), m_after(3), vertex
+      real(wp) :: V(6), dA(3, 2), c, V_p(6), dA_p(3, 2), d_p, c_p
       complex(wp) :: z(0:H)
-      logical :: ok0, ok1
-      integer :: i, kk
+      logical :: ok
+      integer :: kk, q
       ! z(m) = e^{-i m t_e} by powers (their rounding, m eps, is far below the kink's size)
       z(0) = 1
       if (H >= 1) z(1) = exp(cmplx(0.0_wp, -t_e, wp))
@@ -212,22 +273,56 @@ contains
       end do
       V(1:3) = motion_rate(Pr, z)
       V(4:6) = motion_rate(Pphi, z)
-      arc = along(geo, V)
-      call compute_rates(arc, m_before, 1.0_wp, 0.0_wp, r0, ok0)
-      call compute_rates(arc, m_after, 1.0_wp, 0.0_wp, r1, ok1)
-      if (.not. (ok0 .and. ok1)) return
-      dA = 0
-      do i = 1, 3
-        dA(:, geo%side(i)) = dA(:, geo%side(i)) + (r1%dN(i) - r0%dN(i))*geo%pn(:, i) + &
-          & (r1%dT(i) - r0%dT(i))*geo%pt(:, i)
-      end do
+      call slope_jump(V, m_before, m_after, dA, ok)
+      if (.not. ok) return
       c = 0.5_wp*(2*pi/ns)**2*(delta*delta - delta + 1/6.0_wp)
       do kk = 0, H
         CL(:, kk) = CL(:, kk) + c*dA(:, 1)*z(kk)
         CR(:, kk) = CR(:, kk) + c*dA(:, 2)*z(kk)
       end do
       energy = energy + c*(dot_product(dA(:, 1), V(1:3)) + dot_product(dA(:, 2), V(4:6)))
+      if (.not. tangent) return
+      ! the correction's derivatives: the event's place delta moves (t_e with it), and so do
+      ! the velocity there and the slope jump, linear in the velocity
+      do q = 1, np
+        d_p = 0
+        if (vertex > 0) d_p = tan%s_p(q, vertex)
+        c_p = 0.5_wp*(2*pi/ns)**2*(2*delta - 1)*d_p
+        V_p(1:3) = motion_rate(Prp(:, :, q), z) + motion_accel(Pr, z)*d_p*2*pi/ns
+        V_p(4:6) = motion_rate(Pphip(:, :, q), z) + motion_accel(Pphi, z)*d_p*2*pi/ns
+        call slope_jump(V_p, m_before, m_after, dA_p, ok)
+        do kk = 0, H
+          CLp(:, kk, q) = CLp(:, kk, q) + (c_p*dA(:, 1) + c*dA_p(:, 1))*z(kk) + &
+            & c*dA(:, 1)*z(kk)*cmplx(0.0_wp, -kk*d_p*2*pi/ns, wp)
+          CRp(:, kk, q) = CRp(:, kk, q) + (c_p*dA(:, 2) + c*dA_p(:, 2))*z(kk) + &
+            & c*dA(:, 2)*z(kk)*cmplx(0.0_wp, -kk*d_p*2*pi/ns, wp)
+        end do
+      end do
+
     end subroutine correct_kink
+
+    !> The jump dJ of the actions' rates at an event from the contact states m_before to
+    !> m_after, for the platforms' velocity W (ok: both states' equilibrium is regular).
+    subroutine slope_jump(W, m_before, m_after, dJ, ok)
+      real(wp), intent(in) :: W(6)
+      integer, intent(in) :: m_before(3), m_after(3)
+      real(wp), intent(out) :: dJ(3, 2)
+      logical, intent(out) :: ok
+      type(damper_geometry_type) :: arc
+      type(rates_type) :: r0, r1
+      logical :: ok0, ok1
+      integer :: i
+      arc = along(geo, W)
+      call compute_rates(arc, m_before, 1.0_wp, 0.0_wp, r0, ok0)
+      call compute_rates(arc, m_after, 1.0_wp, 0.0_wp, r1, ok1)
+      ok = ok0 .and. ok1
+      dJ = 0
+      if (.not. ok) return
+      do i = 1, 3
+        dJ(:, geo%side(i)) = dJ(:, geo%side(i)) + (r1%dN(i) - r0%dN(i))*geo%pn(:, i) + &
+          & (r1%dT(i) - r0%dT(i))*geo%pt(:, i)
+      end do
+    end subroutine slope_jump
 
     !> The platform's velocity for the harmonics Q at the time t with z(m) = e^{-i m t}.
     pure function motion_rate(Q, z) result(v_t)
@@ -240,13 +335,26 @@ contains
       end do
     end function motion_rate
 
-    !> The platform's coordinates for the harmonics Q at the instant tau_j = 2 pi j/ns.
-    pure function sampled(Q, jj) result(x_t)
+    !> The platform's acceleration for the harmonics Q at the time t with z(m) = e^{-i m t}.
+    pure function motion_accel(Q, z) result(a_t)
+      complex(wp), intent(in) :: Q(:, :), z(0:)
+      real(wp) :: a_t(3)
+      integer :: m
+      a_t = 0
+      do m = 1, H
+        a_t = a_t - real(m, wp)**2*real(Q(:, m)*conjg(z(m)), wp)
+      end do
+    end function motion_accel
+
+    !> The platform's coordinates for the static part Q0 and the harmonics Q at the instant
+    !> tau_j = 2 pi j/ns.
+    pure function sampled(Q, Q0, jj) result(x_t)
       complex(wp), intent(in) :: Q(:, :)
+      real(wp), intent(in) :: Q0(3)
       integer, intent(in) :: jj
       real(wp) :: x_t(3)
       integer :: m
-      x_t = P0
+      x_t = Q0
       do m = 1, H
         x_t = x_t + real(Q(:, m)*conjg(root(mod(m*jj, ns))), wp)
       end do

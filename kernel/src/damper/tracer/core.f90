@@ -97,6 +97,11 @@ module udmap_damper_tracer_core
     integer :: n = 0
     real(wp), allocatable :: s(:)
     integer, allocatable :: code(:)
+    !> The event that ended each step: 4 contact + its new state, or 0 (the target); the
+    !> rate at which that contact's boundary came nearer (what the derivatives of the step
+    !> need: udmap_damper_tracer_tangent).
+    integer, allocatable :: event(:)
+    real(wp), allocatable :: rate(:)
   end type mode_log_type
 
   !> Rates per unit travel of a set of contact states.
@@ -299,6 +304,8 @@ contains
         modes%n = modes%n + 1
         call put(modes%s, modes%n, st%gamma)
         call put(modes%code, modes%n, mode_code(st%mode))
+        call put(modes%event, modes%n, 4*ev_contact(best) + ev_state(best))
+        call put(modes%rate, modes%n, merge(rate_of(best), 0.0_wp, ev_contact(best) /= 0))
       end if
       if (ev_contact(best) == 0) then
         if (var == 1) st%direction = dir
