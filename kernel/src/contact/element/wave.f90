@@ -28,8 +28,8 @@ module udmap_contact_element_wave
     & CONTACT_SLIP_POS, CONTACT_SLIP_NEG, compute_rates, rates_type, code_modes
   use udmap_damper_tracer, only: virgin_state, ramp_CF, trace_path, platform_actions, same_forces, &
     & path_events_type, along
-  use udmap_damper_tracer_tangent, only: path_tangent_type, new_path_tangent, &
-    & path_tangent_segment, path_tangent_actions
+  use udmap_damper_tracer_tangent, only: path_tangent_type, path_levers_type, &
+    & new_path_tangent, path_tangent_levers, path_tangent_segment, path_tangent_actions
   implicit none
   private
   public :: wave_aft, wave_settings_type, wave_result_type, wave_static_action, wave_samples
@@ -102,6 +102,8 @@ contains
     type(damper_state_type) :: st, start
     type(path_events_type) :: ev
     type(path_tangent_type) :: tan
+    type(path_levers_type), allocatable :: lv(:)
+    type(path_levers_type) :: lv_rest
     real(wp), allocatable :: X(:, :), AL(:, :), AR(:, :), Xp(:, :, :), ALp(:, :, :), ARp(:, :, :)
     complex(wp), allocatable :: e(:, :), CL(:, :), CR(:, :), root(:), CLp(:, :, :), CRp(:, :, :)
     real(wp) :: Ak(3,2), energy, F_scale, theta
@@ -147,7 +149,7 @@ contains
         return
       end if
       np = size(dP, 3)
-      allocate(Xp(6, 0:ns-1, np), ALp(3, ns, np), ARp(3, ns, np), Akp(3, 2, np), &
+      allocate(Xp(6, np, 0:ns-1), ALp(3, ns, np), ARp(3, ns, np), Akp(3, 2, np), &
         & CLp(3, 0:H, np), CRp(3, 0:H, np), Prp(3, H, np), Pphip(3, H, np))
       do kp = 1, np
         do k = 1, H
@@ -155,11 +157,17 @@ contains
           Pphip(:, k, kp) = dP(:, k, kp)*exp(cmplx(0.0_wp, k*phi, wp))
         end do
         do j = 0, ns - 1
-          Xp(1:3, j, kp) = sampled(Prp(:, :, kp), dP0(:, kp), j)
-          Xp(4:6, j, kp) = sampled(Pphip(:, :, kp), dP0(:, kp), j)
+          Xp(1:3, kp, j) = sampled(Prp(:, :, kp), dP0(:, kp), j)
+          Xp(4:6, kp, j) = sampled(Pphip(:, :, kp), dP0(:, kp), j)
         end do
       end do
       call new_path_tangent(tan, np)
+      ! the contacts' travel for the derivatives at every instant, and at rest
+      allocate(lv(0:ns-1))
+      do j = 0, ns - 1
+        call path_tangent_levers(geo, Xp(:, :, j), lv(j))
+      end do
+      call path_tangent_levers(geo, 0*Xp(:, :, 0), lv_rest)
     end if
     call virgin_state(geo, st)
     call ramp_CF(geo, st, CF, error)
@@ -169,8 +177,8 @@ contains
       ! the ramp from rest to the first instant: its start does not move with the parameters
       call trace_path(geo, st, X(:, 0), error, ev)
       if (allocated(error)) return
-      call path_tangent_segment(geo, tan, [(0.0_wp, j = 1, 6)], X(:, 0), 0*Xp(:, 0, :), &
-        & Xp(:, 0, :), ev%entry, ev%log)
+      call path_tangent_segment(geo, tan, [(0.0_wp, j = 1, 6)], X(:, 0), lv_rest, lv(0), &
+        & ev%entry, ev%log)
     else
       call trace_path(geo, st, X(:, 0), error)
       if (allocated(error)) return
@@ -192,9 +200,9 @@ contains
         call trace_path(geo, st, X(:, mod(j, ns)), error, ev)
         if (allocated(error)) return
         if (tangent) then
-          call path_tangent_segment(geo, tan, X(:, j-1), X(:, mod(j, ns)), Xp(:, j-1, :), &
-            & Xp(:, mod(j, ns), :), ev%entry, ev%log)
-          call path_tangent_actions(geo, tan, st%mode, Xp(:, mod(j, ns), :), Akp)
+          call path_tangent_segment(geo, tan, X(:, j-1), X(:, mod(j, ns)), lv(j-1), &
+            & lv(mod(j, ns)), ev%entry, ev%log)
+          call path_tangent_actions(geo, tan, st%mode, lv(mod(j, ns)), Akp)
           ALp(:, j, :) = Akp(:, 1, :)
           ARp(:, j, :) = Akp(:, 2, :)
         end if

@@ -14,12 +14,11 @@
 module udmap_damper_tracer_tangent
   use udmap_core_kinds, only: wp
   use udmap_damper_tracer_core, only: damper_geometry_type, mode_log_type, contact_forces, &
-    & compute_rates, rates_type, code_modes, CONTACT_OPEN, CONTACT_STICK, CONTACT_SLIP_POS, &
-    & CONTACT_SLIP_NEG
-  use udmap_damper_tracer, only: along
+    & code_modes, CONTACT_OPEN, CONTACT_STICK, CONTACT_SLIP_POS, CONTACT_SLIP_NEG
   implicit none
   private
-  public :: path_tangent_type, new_path_tangent, path_tangent_segment, path_tangent_actions
+  public :: path_tangent_type, path_levers_type, new_path_tangent, path_tangent_levers, &
+    & path_tangent_segment, path_tangent_actions
 
   !> The derivatives of the damper's state along a path, one column a parameter.
   type :: path_tangent_type
@@ -30,6 +29,12 @@ module udmap_damper_tracer_tangent
     !> vertex j, the end of its step j.
     real(wp), allocatable :: s_p(:, :)
   end type path_tangent_type
+
+  !> The contacts' travel along their normals (n) and tangents (t) for the derivatives of the
+  !> platforms' coordinates at an instant (path_tangent_levers), one column a parameter.
+  type :: path_levers_type
+    real(wp), allocatable :: n(:, :), t(:, :)
+  end type path_levers_type
 
 contains
 
@@ -44,83 +49,111 @@ contains
     tan%s_p = 0
   end subroutine new_path_tangent
 
+  !> The contacts' travel (along normals and tangents) for the coordinates' derivatives
+  !> X_p(:, k) of both platforms.
+  pure subroutine path_tangent_levers(geo, X_p, lv)
+    type(damper_geometry_type), intent(in) :: geo
+    real(wp), intent(in) :: X_p(:, :)
+    type(path_levers_type), intent(inout) :: lv
+    integer :: k, c, m
+    if (.not. allocated(lv%n)) allocate(lv%n(3, size(X_p, 2)), lv%t(3, size(X_p, 2)))
+    do k = 1, size(X_p, 2)
+      do c = 1, 3
+        m = 3*(geo%side(c) - 1)
+        lv%n(c, k) = dot_product(geo%pn(:, c), X_p(m+1:m+3, k))
+        lv%t(c, k) = dot_product(geo%pt(:, c), X_p(m+1:m+3, k))
+      end do
+    end do
+  end subroutine path_tangent_levers
+
   !> The derivatives carried along the segment of trace_path from X_from to X_to that left
-  !> the log lg and started in the contact states `entry` (mode_code), the segment's ends
-  !> moving by Xs_p(:, k) and Xe_p(:, k) per unit of parameter k.
-  subroutine path_tangent_segment(geo, tan, X_from, X_to, Xs_p, Xe_p, entry, lg)
+  !> the log lg and started in the contact states `entry` (mode_code); the contacts' travel
+  !> for the derivatives of the segment's ends is ls and le (path_tangent_levers).
+  subroutine path_tangent_segment(geo, tan, X_from, X_to, ls, le, entry, lg)
     type(damper_geometry_type), intent(in) :: geo
     type(path_tangent_type), intent(inout) :: tan
-    real(wp), intent(in) :: X_from(6), X_to(6), Xs_p(:, :), Xe_p(:, :)
+    real(wp), intent(in) :: X_from(6), X_to(6)
+    type(path_levers_type), intent(in) :: ls, le
     integer, intent(in) :: entry
     type(mode_log_type), intent(in) :: lg
-    type(damper_geometry_type) :: seg, segp(tan%np)
-    type(rates_type) :: rt, rtp
-    real(wp) :: s0, step, step_p, fp, dfp, off(2, 3), g(3), sv(3), N(3), T(3)
+    real(wp) :: cn(3), ct(3), off(2, 3), dn(3), dt(3)
+    real(wp) :: Ks(3, 3), Ki(3, 3), dq(3), dq_p(3), dg_p, dN_p, dT_p, ds_p
+    real(wp) :: s0, step, step_p, fp, dfp, g(3), sv(3), N(3), T(3), sp
     real(wp), allocatable :: tmp(:, :)
     integer :: m_old(3), m_new(3), j, k, i, e
-    logical :: ok, changed(3)
+    logical :: ok, changed(3), slips(3)
 
     if (lg%n == 0) return
     if (size(tan%s_p, 2) < lg%n) then
       allocate(tmp(tan%np, 2*lg%n))
       call move_alloc(tmp, tan%s_p)
     end if
-    seg = along(geo, X_to - X_from)
-    do k = 1, tan%np
-      segp(k) = along(geo, Xe_p(:, k) - Xs_p(:, k))
-    end do
+    call levers(X_to - X_from, cn, ct)
     m_old = code_modes(entry)
     s0 = 0
     do j = 1, lg%n
       m_new = code_modes(lg%code(j))
       changed = (m_old == CONTACT_OPEN) .neqv. (m_new == CONTACT_OPEN)
-      call compute_rates(seg, m_new, 1.0_wp, 0.0_wp, rt, ok)
+      slips = m_old /= CONTACT_STICK
+      ! the step's equilibrium, K dq = h(levers), for the segment and each derivative
+      call stiffness(m_new, Ks)
+      call invert3(Ks, Ki, ok)
+      if (.not. ok) return
+      dq = matmul(Ki, rhs(m_new, cn, ct))
       step = lg%s(j) - s0
       e = lg%event(j)
+      i = e/4
       do k = 1, tan%np
-        off = offsets(Xs_p(:, k) + s0*(Xe_p(:, k) - Xs_p(:, k)))
+        sp = 0
+        if (j > 1) sp = tan%s_p(k, j - 1)
+        ! the levers of the derivatives along the segment, and their offsets at the step's
+        ! start (fixed-size copies: no temporaries in the innermost loop)
+        dn = le%n(1:3, k) - ls%n(1:3, k)
+        dt = le%t(1:3, k) - ls%t(1:3, k)
+        off(1, :) = ls%n(1:3, k) + s0*dn
+        off(2, :) = ls%t(1:3, k) + s0*dt
         ! the sliders where the tracer sets them as a step starts: contacts that do not
         ! stick on their forces (the states before), then contacts that open or close unloaded
-        if (any(m_old /= CONTACT_STICK)) then
-          call contact_forces(seg, m_old, tan%q_p(:, k), sp(), tan%w_p(:, k), g, sv, N, T, off)
-          where (m_old /= CONTACT_STICK) tan%w_p(:, k) = sv + T/geo%kt
-        end if
-        if (any(changed)) then
-          call contact_forces(seg, m_new, tan%q_p(:, k), sp(), tan%w_p(:, k), g, sv, N, T, off)
+        if (any(slips) .or. any(changed)) then
+          call forces(m_old, tan%q_p(:, k), sp, tan%w_p(:, k), off, g, sv, N, T)
+          where (slips) tan%w_p(:, k) = sv + T/geo%kt
           where (changed) tan%w_p(:, k) = sv
         end if
-        call compute_rates(segp(k), m_new, 1.0_wp, 0.0_wp, rtp, ok)
+        dq_p = matmul(Ki, rhs(m_new, dn, dt))
         if (e == 0) then
           ! the target, s = 1 whatever the parameters
-          step_p = -sp()
+          step_p = -sp
         else
           ! the event function f of contact i towards its new state: f + step f' = 0
-          i = e/4
-          call contact_forces(seg, m_new, tan%q_p(:, k), sp(), tan%w_p(:, k), g, sv, N, T, off)
+          call forces(m_new, tan%q_p(:, k), sp, tan%w_p(:, k), off, g, sv, N, T)
+          dg_p = -dot_product(geo%bn(:, i), dq_p) + dn(i)
+          ds_p = dot_product(geo%bt(:, i), dq_p) - dt(i)
+          dN_p = geo%kn(i)*dg_p
           select case (m_new(i))
           case (CONTACT_STICK)
+            dT_p = -geo%kt(i)*ds_p
             select case (mod(e, 4))
             case (CONTACT_SLIP_POS)
               fp = geo%mu*N(i) - T(i)
-              dfp = geo%mu*rtp%dN(i) - rtp%dT(i)
+              dfp = geo%mu*dN_p - dT_p
             case (CONTACT_SLIP_NEG)
               fp = geo%mu*N(i) + T(i)
-              dfp = geo%mu*rtp%dN(i) + rtp%dT(i)
+              dfp = geo%mu*dN_p + dT_p
             case default
               fp = N(i)
-              dfp = rtp%dN(i)
+              dfp = dN_p
             end select
           case (CONTACT_SLIP_POS, CONTACT_SLIP_NEG)
             fp = N(i)
-            dfp = rtp%dN(i)
+            dfp = dN_p
           case default
             fp = -geo%kn(i)*g(i)
-            dfp = -geo%kn(i)*rtp%dg(i)
+            dfp = -geo%kn(i)*dg_p
           end select
           step_p = (fp + step*dfp)/lg%rate(j)
         end if
-        tan%q_p(:, k) = tan%q_p(:, k) + step_p*rt%dq + step*rtp%dq
-        tan%s_p(k, j) = sp() + step_p
+        tan%q_p(:, k) = tan%q_p(:, k) + step_p*dq + step*dq_p
+        tan%s_p(k, j) = sp + step_p
       end do
       s0 = lg%s(j)
       m_old = m_new
@@ -128,47 +161,127 @@ contains
 
   contains
 
-    !> The derivative of the place of the current vertex (the last step's end).
-    real(wp) function sp()
-      sp = 0
-      if (j > 1) sp = tan%s_p(k, j - 1)
-    end function sp
-
-    !> The offsets of trace_path's state for the coordinates' derivatives X_p.
-    pure function offsets(X_p) result(o)
-      real(wp), intent(in) :: X_p(6)
-      real(wp) :: o(2, 3)
+    !> The contacts' travel along the normal (cn) and the tangent (ct) for the platforms'
+    !> coordinates moving by dX (trace_path's lever arms, or its offsets).
+    pure subroutine levers(dX, a_n, a_t)
+      real(wp), intent(in) :: dX(6)
+      real(wp), intent(out) :: a_n(3), a_t(3)
       integer :: c, m
       do c = 1, 3
         m = 3*(geo%side(c) - 1)
-        o(1, c) = dot_product(geo%pn(:, c), X_p(m+1:m+3))
-        o(2, c) = dot_product(geo%pt(:, c), X_p(m+1:m+3))
+        a_n(c) = dot_product(geo%pn(:, c), dX(m+1:m+3))
+        a_t(c) = dot_product(geo%pt(:, c), dX(m+1:m+3))
       end do
-    end function offsets
+    end subroutine levers
+
+    !> The damper's equilibrium matrix in the contact states `mode` (as compute_rates').
+    pure subroutine stiffness(mode, Km)
+      integer, intent(in) :: mode(3)
+      real(wp), intent(out) :: Km(3, 3)
+      real(wp) :: v(3)
+      integer :: c, r, q
+      Km = 0
+      do c = 1, 3
+        select case (mode(c))
+        case (CONTACT_STICK)
+          do q = 1, 3
+            do r = 1, 3
+              Km(r, q) = Km(r, q) + geo%kn(c)*geo%bn(r, c)*geo%bn(q, c) + &
+                & geo%kt(c)*geo%bt(r, c)*geo%bt(q, c)
+            end do
+          end do
+        case (CONTACT_SLIP_POS, CONTACT_SLIP_NEG)
+          v = geo%bn(:, c) + merge(1, -1, mode(c) == CONTACT_SLIP_POS)*geo%mu*geo%bt(:, c)
+          do q = 1, 3
+            do r = 1, 3
+              Km(r, q) = Km(r, q) + geo%kn(c)*v(r)*geo%bn(q, c)
+            end do
+          end do
+        end select
+      end do
+    end subroutine stiffness
+
+    !> The right-hand side of the equilibrium's rates for the lever arms (a_n, a_t).
+    pure function rhs(mode, a_n, a_t) result(h)
+      integer, intent(in) :: mode(3)
+      real(wp), intent(in) :: a_n(3), a_t(3)
+      real(wp) :: h(3)
+      integer :: c
+      h = 0
+      do c = 1, 3
+        select case (mode(c))
+        case (CONTACT_STICK)
+          h = h + geo%kn(c)*a_n(c)*geo%bn(:, c) + geo%kt(c)*a_t(c)*geo%bt(:, c)
+        case (CONTACT_SLIP_POS, CONTACT_SLIP_NEG)
+          h = h + geo%kn(c)*a_n(c)*(geo%bn(:, c) + &
+            & merge(1, -1, mode(c) == CONTACT_SLIP_POS)*geo%mu*geo%bt(:, c))
+        end select
+      end do
+    end function rhs
+
+    !> The contact forces of a derivative (contact_forces with the segment's levers).
+    pure subroutine forces(mode, q, s_vertex, w, offs, gv, svv, Nv, Tv)
+      integer, intent(in) :: mode(3)
+      real(wp), intent(in) :: q(3), s_vertex, w(3), offs(2, 3)
+      real(wp), intent(out) :: gv(3), svv(3), Nv(3), Tv(3)
+      integer :: c
+      do c = 1, 3
+        gv(c) = -dot_product(geo%bn(:, c), q) + s_vertex*cn(c) + offs(1, c)
+        svv(c) = dot_product(geo%bt(:, c), q) - s_vertex*ct(c) - offs(2, c)
+        select case (mode(c))
+        case (CONTACT_STICK)
+          Nv(c) = geo%kn(c)*gv(c)
+          Tv(c) = -geo%kt(c)*(svv(c) - w(c))
+        case (CONTACT_SLIP_POS, CONTACT_SLIP_NEG)
+          Nv(c) = geo%kn(c)*gv(c)
+          Tv(c) = merge(1, -1, mode(c) == CONTACT_SLIP_POS)*geo%mu*Nv(c)
+        case default
+          Nv(c) = 0
+          Tv(c) = 0
+        end select
+      end do
+    end subroutine forces
   end subroutine path_tangent_segment
 
   !> The derivatives A_p(:, side, k) of the damper's actions on its two platforms
-  !> (trace_path's platform_actions) at a segment's end, the coordinates moving by X_p(:, k),
-  !> in the contact states `mode`.
-  subroutine path_tangent_actions(geo, tan, mode, X_p, A_p)
+  !> (trace_path's platform_actions) at a segment's end, whose coordinates' derivatives have
+  !> the contacts' travel le, in the contact states `mode`.
+  subroutine path_tangent_actions(geo, tan, mode, le, A_p)
     type(damper_geometry_type), intent(in) :: geo
     type(path_tangent_type), intent(in) :: tan
     integer, intent(in) :: mode(3)
-    real(wp), intent(in) :: X_p(:, :)
+    type(path_levers_type), intent(in) :: le
     real(wp), intent(out) :: A_p(:, :, :)
     real(wp) :: off(2, 3), g(3), sv(3), N(3), T(3)
-    integer :: k, c, m
+    integer :: k, c
     A_p = 0
     do k = 1, tan%np
-      do c = 1, 3
-        m = 3*(geo%side(c) - 1)
-        off(1, c) = dot_product(geo%pn(:, c), X_p(m+1:m+3, k))
-        off(2, c) = dot_product(geo%pt(:, c), X_p(m+1:m+3, k))
-      end do
+      off(1, :) = le%n(1:3, k)
+      off(2, :) = le%t(1:3, k)
       call contact_forces(geo, mode, tan%q_p(:, k), 0.0_wp, tan%w_p(:, k), g, sv, N, T, off)
       do c = 1, 3
         A_p(:, geo%side(c), k) = A_p(:, geo%side(c), k) + N(c)*geo%pn(:, c) + T(c)*geo%pt(:, c)
       end do
     end do
   end subroutine path_tangent_actions
+
+  !> The inverse of a 3x3 matrix by cofactors; ok is false if it is numerically singular.
+  pure subroutine invert3(A, Ai, ok)
+    real(wp), intent(in) :: A(3, 3)
+    real(wp), intent(out) :: Ai(3, 3)
+    logical, intent(out) :: ok
+    real(wp) :: det
+    Ai(1, 1) = A(2, 2)*A(3, 3) - A(2, 3)*A(3, 2)
+    Ai(2, 1) = A(2, 3)*A(3, 1) - A(2, 1)*A(3, 3)
+    Ai(3, 1) = A(2, 1)*A(3, 2) - A(2, 2)*A(3, 1)
+    Ai(1, 2) = A(1, 3)*A(3, 2) - A(1, 2)*A(3, 3)
+    Ai(2, 2) = A(1, 1)*A(3, 3) - A(1, 3)*A(3, 1)
+    Ai(3, 2) = A(1, 2)*A(3, 1) - A(1, 1)*A(3, 2)
+    Ai(1, 3) = A(1, 2)*A(2, 3) - A(1, 3)*A(2, 2)
+    Ai(2, 3) = A(1, 3)*A(2, 1) - A(1, 1)*A(2, 3)
+    Ai(3, 3) = A(1, 1)*A(2, 2) - A(1, 2)*A(2, 1)
+    det = A(1, 1)*Ai(1, 1) + A(1, 2)*Ai(2, 1) + A(1, 3)*Ai(3, 1)
+    ok = abs(det) > 1e-12_wp*norm2(A(:, 1))*norm2(A(:, 2))*norm2(A(:, 3))
+    if (ok) Ai = Ai/det
+  end subroutine invert3
 end module udmap_damper_tracer_tangent

@@ -31,8 +31,8 @@ module udmap_mapping_traveling_layer
   public :: traveling_type, wave_layer_type, new_traveling, wave_layer_solve, wave_peak, &
     & wave_layer_slope, wave_balance_omega
 
-  !> Relative finite-difference step, Newton tolerance (to the layer's scale) and cap.
-  real(wp), parameter :: fd_step = 1.0e-7_wp, newton_tol = 1.0e-13_wp
+  !> Newton tolerance (to the layer's scale) and cap.
+  real(wp), parameter :: newton_tol = 1.0e-13_wp
   !> The residual's rounding floor: at tiny amplitudes the action's harmonics are the small
   !> difference of samples of the preloaded contact forces, noisy to some 1e-12 of the layer's
   !> scale. A Newton step below this that no longer descends ends the solve.
@@ -260,22 +260,42 @@ contains
 
   contains
 
-    !> Finite-difference Jacobian of R (and dF/dx) at x, factorised into L%LU.
+    !> The Jacobian of R (and dF/dx) at x, factorised into L%LU: one trace with the action's
+    !> exact derivatives (wave_aft's forward mode); R and F are affine in x and the action, so
+    !> a column is their change along x_k with the action's change along it.
     subroutine jacobian(xv, Rv, Fv, err)
       real(wp), intent(in) :: xv(:), Rv(:)
       complex(wp), intent(in) :: Fv
       type(error_type), allocatable, intent(out) :: err
-      real(wp) :: xk(size(xv)), Rk(size(xv))
-      complex(wp) :: Fk
+      real(wp) :: xk(size(xv)), Rk(size(xv)), u(size(xv)), dP0(3, size(xv)), dA0(3, size(xv))
+      real(wp) :: A0v(3), t
+      complex(wp) :: dP(3, tw%H, size(xv)), dA(3, tw%H, size(xv)), Av(3, tw%H), Fk
       integer :: k, inf
+      dP0 = 0
+      dP = 0
       do k = 1, size(xv)
-        xk = xv
-        xk(k) = xv(k) + fd_step*sc(k)
-        call residual(xk, Rk, Fk, err)
-        if (allocated(err)) return
-        L%J(:, k) = (Rk - Rv)/(fd_step*sc(k))
-        L%Fx(k) = (Fk - Fv)/(fd_step*sc(k))
+        u = 0
+        u(k) = 1
+        call platform_unpack(tw%u, u, dP0(3, k), dP(:, :, k))
       end do
+      call unpack_x(xv)
+      call wave_aft(tw%geo, tw%CF, tw%phi, L%P0, L%P, tw%settings, A0v, Av, err, &
+        & dP0=dP0, dP=dP, dA0=dA0, dA=dA)
+      tw%traces = tw%traces + 1
+      if (allocated(err)) return
+      do k = 1, size(xv)
+        t = sc(k)
+        xk = xv
+        xk(k) = xv(k) + t
+        L%A0 = A0v + t*dA0(:, k)
+        L%A = Av + t*dA(:, :, k)
+        call balance(r, xk, Rk, Fk)
+        L%J(:, k) = (Rk - Rv)/t
+        L%Fx(k) = (Fk - Fv)/t
+      end do
+      L%A0 = A0v
+      L%A = Av
+      call unpack_x(xv)
       L%x_J = xv
       L%LU = L%J
       call dgetrf(size(xv), size(xv), L%LU, size(xv), L%ipiv, inf)

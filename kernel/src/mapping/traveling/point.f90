@@ -6,15 +6,15 @@
 !! Why: the nested search (the root in gamma of layer peaks, each a root in omega of layer
 !! solves, each a Newton iteration with a Jacobian of its own) traces the damper some 140
 !! times per peak. Only the damper's action A(x, gamma) needs a trace, and it does not depend
-!! on omega. So A is linearised once, A ~ A_b + D (y - y_b), y = (x, gamma); with the linear
-!! action the whole point is solved without a trace: at each omega the balance is linear in
-!! y, |F|^2 = F_E^2 is a quadratic in gamma, and psi(omega) = 0 is a scalar root (Brent). The
-!! point found is traced again and the action re-linearised there (Broyden's update, from the
-!! previous force's D; the differences again after a poor contraction and at the end), until
-!! the step is at the rounding floor, or a Newton step with fresh differences is so small that
-!! the linear action's error, O(step^2), is below it. The point is then that of the same
-!! equations as the layers', exactly: the balance holds with the traced action, and psi takes
-!! D from differences at the point, as the layer's solve does. Some 10 traces per peak.
+!! on omega. So A is linearised, A ~ A_b + D (y - y_b), y = (x, gamma), with D the traced
+!! action's exact derivatives (wave_aft's forward mode: one trace, whatever the size of y);
+!! with the linear action the whole point is solved without a trace: at each omega the
+!! balance is linear in y, |F|^2 = F_E^2 is a quadratic in gamma, and psi(omega) = 0 is a
+!! scalar root (Brent). The point found is traced and linearised again (Newton) until a step
+!! is so small that the linear action's error, O(step^2), is at the rounding floor. The point
+!! is then that of the same equations as the layers': the balance holds with the traced
+!! action, and psi takes the derivatives at the point, as the layer's solve does. Some 2.5
+!! traces per peak, each with its derivatives.
 module udmap_mapping_traveling_point
   use udmap_core_kinds, only: wp
   use udmap_core_error, only: error_type
@@ -30,10 +30,8 @@ module udmap_mapping_traveling_point
   private
   public :: wave_point, wave_jump_point
 
-  !> Relative difference step of D, the step at which the point is converged, the largest
-  !> distance (scaled) of D's differences from the point for psi, the Newton step (fresh D)
-  !> that ends the iteration, and the iteration cap.
-  real(wp), parameter :: fd_step = 1.0e-7_wp, step_tol = 1.0e-10_wp, d_reach = 1.0e-4_wp
+  !> The Newton step (scaled) that ends the iteration: the linear action's error, O(step^2),
+  !> is then at the rounding floor; and the iteration cap.
   real(wp), parameter :: newton_accept = 1.0e-6_wp
   integer, parameter :: max_outer = 30
   !> Relative tolerance of the root of psi in omega (at fixed action: no trace).
@@ -77,10 +75,9 @@ contains
     type(wave_result_type) :: res
     type(point_work_type) :: pw
     type(error_type), allocatable :: err
-    real(wp), allocatable :: y(:), y1(:), yD(:)
-    real(wp) :: w, w1, step, step_prev, dist, bracket
+    real(wp), allocatable :: y(:), y1(:)
+    real(wp) :: w, w1, step, bracket
     integer :: n, ny, it
-    logical :: fresh
 
     ok = .false.
     call new_work(tw, F_E, pw)
@@ -97,29 +94,15 @@ contains
       call wave_layer_solve(tw, gamma0, w, L, err)
       if (allocated(err)) return
     end if
-    allocate(y(ny), y1(ny), yD(ny))
+    allocate(y(ny), y1(ny))
     call new_linear_action(tw, ny, lin)
     L%P(3, 1) = gamma0
     call platform_pack(tw%u, L%P0(3), L%P, y(1:n))
     y(ny) = gamma0
     bracket = 1e-3_wp*w
-    ! the previous force's derivatives, while they contract; new differences at the end
-    fresh = .not. allocated(L%dA)
-    if (.not. fresh) fresh = size(L%dA, 3) /= ny
-    yD = huge(1.0_wp)
-    if (.not. fresh) then
-      lin%dA0 = L%dA0
-      lin%dA = L%dA
-    end if
-    step_prev = huge(1.0_wp)
     do it = 1, max_outer
       call set_scales(tw, pw, y(ny))
-      if (fresh) then
-        call linearise(tw, pw, y, fd_step, 1.0_wp, lin, res, ok)
-        yD = y
-      else
-        call retrace(tw, pw, y, it > 1, lin, res, ok)
-      end if
+      call linearise_exact(tw, pw, y, lin, res, ok)
       if (.not. ok) return
       call peak(tw, pw, lin, w, bracket, w1, y1, L, ok)
       if (.not. ok) return
@@ -128,21 +111,14 @@ contains
       bracket = max(4*abs(w1 - w), 1e-9_wp*w1)
       y = y1
       w = w1
-      call set_scales(tw, pw, y(ny))
-      dist = maxval(abs(y - yD)/pw%sc)
-      ! converged: a step at the rounding floor, or a Newton step (D from differences at the
-      ! base) so small that the linear action's error, O(step^2), is below it
-      if ((step <= step_tol .and. dist <= d_reach) .or. (fresh .and. step <= newton_accept)) then
+      ! converged: a Newton step so small that the linear action's error, O(step^2), is at
+      ! the rounding floor
+      if (step <= newton_accept) then
         ok = .true.
         exit
       end if
-      ! Newton (new differences) while far or not contracting, Broyden when close
-      fresh = step > 0.5_wp*step_prev .or. (step <= 1e-5_wp .and. dist > d_reach)
-      step_prev = step
     end do
     if (.not. ok) return
-    L%dA0 = lin%dA0
-    L%dA = lin%dA
     L%trace = res
     L%gamma = y(ny)
     L%solved = .true.
@@ -373,25 +349,34 @@ contains
     end do
   end subroutine linearise
 
-  !> The action traced again at y and the linear action moved there (Broyden's update of
-  !> its derivatives when `update`).
-  subroutine retrace(tw, pw, y, update, la, res, ok)
+  !> The action linearised at y: one trace with its exact derivatives (wave_aft's forward
+  !> mode; gamma, y's last entry, must be positive).
+  subroutine linearise_exact(tw, pw, y, la, res, ok)
     type(traveling_type), intent(inout) :: tw
     type(point_work_type), intent(in) :: pw
     real(wp), intent(in) :: y(:)
-    logical, intent(in) :: update
     type(linear_action_type), intent(inout) :: la
     type(wave_result_type), intent(out) :: res
     logical, intent(out) :: ok
-    real(wp) :: A0c(3)
-    complex(wp) :: Ac(3, tw%H)
-    ok = trace(tw, pw, y, A0c, Ac, res)
+    type(error_type), allocatable :: err
+    real(wp) :: P0(3), dP0(3, pw%ny), u(pw%ny)
+    complex(wp) :: P(3, tw%H), dP(3, tw%H, pw%ny)
+    integer :: k
+    ok = y(pw%ny) > 0
     if (.not. ok) return
-    if (update) call broyden(la, y, A0c, Ac, pw%sc)
+    ! y -> (P0, P) is linear: the derivatives are the images of the unit vectors
+    do k = 1, pw%ny
+      u = 0
+      u(k) = 1
+      call unpack_y(tw, pw, u, dP0(:, k), dP(:, :, k))
+    end do
+    call unpack_y(tw, pw, y, P0, P)
+    call wave_aft(tw%geo, tw%CF, tw%phi, P0, P, tw%settings, la%Ab0, la%Ab, err, res, dP0, dP, &
+      & la%dA0, la%dA)
+    tw%traces = tw%traces + 1
+    ok = .not. allocated(err)
     la%yb = y
-    la%Ab0 = A0c
-    la%Ab = Ac
-  end subroutine retrace
+  end subroutine linearise_exact
 
   !> The damper's action at y (a trace); .false. when the trace fails.
   logical function trace(tw, pw, yv, A0v, Av, r)
@@ -586,25 +571,4 @@ contains
       A = A + la%dA(:, :, k)*(y(k) - la%yb(k))
     end do
   end subroutine action
-
-  !> Broyden's update of D with the trace (A0c, Ac) at y: the rank-one change, in the scaled
-  !> coordinates, that makes the linear action exact along the last step.
-  pure subroutine broyden(la, y, A0c, Ac, sc)
-    type(linear_action_type), intent(inout) :: la
-    real(wp), intent(in) :: y(:), A0c(3), sc(:)
-    complex(wp), intent(in) :: Ac(:, :)
-    real(wp) :: e0(3), s(size(y)), ss
-    complex(wp) :: e(size(Ac, 1), size(Ac, 2))
-    integer :: k
-    call action(la, y, e0, e)
-    e0 = A0c - e0
-    e = Ac - e
-    s = (y - la%yb)/sc
-    ss = sum(s*s)
-    if (.not. (ss > 0)) return
-    do k = 1, size(y)
-      la%dA0(:, k) = la%dA0(:, k) + e0*(s(k)/(ss*sc(k)))
-      la%dA(:, :, k) = la%dA(:, :, k) + e*(s(k)/(ss*sc(k)))
-    end do
-  end subroutine broyden
 end module udmap_mapping_traveling_point
