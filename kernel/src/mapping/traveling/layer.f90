@@ -31,8 +31,8 @@ module udmap_mapping_traveling_layer
   public :: traveling_type, wave_layer_type, new_traveling, wave_layer_solve, wave_peak, &
     & wave_layer_slope, wave_balance_omega
 
-  !> Newton tolerance (to the layer's scale) and cap.
-  real(wp), parameter :: newton_tol = 1.0e-13_wp
+  !> Newton tolerance (to the layer's scale) and cap; the tolerance of a rough solve.
+  real(wp), parameter :: newton_tol = 1.0e-13_wp, rough_tol = 1.0e-4_wp
   !> The residual's rounding floor: at tiny amplitudes the action's harmonics are the small
   !> difference of samples of the preloaded contact forces, noisy to some 1e-12 of the layer's
   !> scale. A Newton step below this that no longer descends ends the solve.
@@ -124,12 +124,15 @@ contains
   !> Solves the layer (gamma, omega), starting from what L holds (a neighbouring solution;
   !> zeros for a cold start). Sets L%F, the harmonics, the stress and psi = d|F|^2/domega
   !> (total: the platform's harmonics follow omega, dx/domega = -J^-1 dR/domega; the damper's
-  !> action does not depend on omega, so this needs no trace beyond the Jacobian's).
-  subroutine wave_layer_solve(tw, gamma, omega, L, error)
+  !> action does not depend on omega, so this needs no trace beyond the Jacobian's). With
+  !> `rough`, only the platform's harmonics, to rough_tol: a start for a whole point
+  !> (udmap_mapping_traveling_point), whose own iteration solves them exactly.
+  subroutine wave_layer_solve(tw, gamma, omega, L, error, rough)
     type(traveling_type), intent(inout) :: tw
     real(wp), intent(in) :: gamma, omega
     type(wave_layer_type), intent(inout) :: L
     type(error_type), allocatable, intent(out) :: error
+    logical, intent(in), optional :: rough
     type(platform_receptances_type), allocatable :: r(:)
     real(wp), allocatable :: x(:), R0(:), Rt(:), dx(:), xt(:), sc(:), Rw(:)
     integer, allocatable :: ipiv(:)
@@ -137,7 +140,7 @@ contains
     real(wp) :: rn, rnt, t, rn_prev
     complex(wp) :: F0, dF
     complex(wp), allocatable :: A_x(:, :)
-    real(wp) :: A0_x(3)
+    real(wp) :: A0_x(3), tol
     logical :: done, fresh
 
     if (.not. (gamma > 0 .and. gamma < huge(1.0_wp)) .or. .not. (omega > 0)) then
@@ -164,6 +167,10 @@ contains
       if (allocated(error)) return
     end do
     allocate(x(n), R0(n), Rt(n), dx(n), xt(n), sc(n), ipiv(n), Rw(n))
+    tol = newton_tol
+    if (present(rough)) then
+      if (rough) tol = rough_tol
+    end if
     call platform_scales(tw%u, gamma, sc)
     do attempt = 1, 2
       if (attempt == 2) then
@@ -189,7 +196,7 @@ contains
         end if
         dx = -R0
         call dgetrs('N', n, 1, L%LU, n, L%ipiv, dx, n, info)
-        if (maxval(abs(dx)/sc) <= newton_tol) then
+        if (maxval(abs(dx)/sc) <= tol) then
           ! at the rounding floor of the residual: the step is the last correction
           x = x + dx
           call residual(x, R0, F0, error)
@@ -222,7 +229,7 @@ contains
         x = xt
         R0 = Rt
         rn = rnt
-        done = maxval(abs(t*dx)/sc) <= newton_tol .or. rn == 0
+        done = maxval(abs(t*dx)/sc) <= tol .or. rn == 0
       end do
       if (done) exit
     end do
@@ -232,6 +239,7 @@ contains
         & "the platform did not converge", UDMAP_ENUMERIC)
       return
     end if
+    if (tol > newton_tol) return
     ! psi needs the Jacobian near the solution: renew one taken far from it (and restore the
     ! action at x, which the differences overwrite)
     if (.not. L%J_valid .or. maxval(abs(x - L%x_J)/sc) > 1e-4_wp) then

@@ -89,9 +89,9 @@ contains
       L%P = L%P*(gamma0/L%gamma)
       L%P0 = L%P0*(gamma0/L%gamma)
     else
-      ! a cold start: the platform's harmonics of the layer gamma0 at omega0 (the linear
-      ! action about zero translations can be far off)
-      call wave_layer_solve(tw, gamma0, w, L, err)
+      ! a cold start: the platform's harmonics of the layer gamma0 at omega0, roughly (the
+      ! linear action about zero translations can be far off)
+      call wave_layer_solve(tw, gamma0, w, L, err, rough=.true.)
       if (allocated(err)) return
     end if
     allocate(y(ny), y1(ny))
