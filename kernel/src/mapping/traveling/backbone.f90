@@ -197,6 +197,11 @@ contains
     integer :: i, H_saved, ih, nH
     real(wp) :: ibpa_saved
     integer, parameter :: auto_H(7) = [1, 3, 5, 9, 17, 33, 64]
+    !> The last two points (predict, remember): ln F_E, ln ratio, ln shift, L's harmonics
+    !> to gamma.
+    integer :: n_hist
+    real(wp) :: h_lnF(2), h_lnr(2), h_lns(2), h_P0(3, 2)
+    complex(wp), allocatable :: h_P(:, :, :)
 
     call wave_limit_force(model, F_lim, error)
     if (allocated(error)) return
@@ -216,6 +221,7 @@ contains
       L = wave_layer_type()
       ratio = 1
       shift = 1
+      n_hist = 0
       if (allocated(points)) call move_alloc(points, guess)
       allocate(points(size(F_E)))
       omega_g = 0
@@ -229,7 +235,10 @@ contains
           cycle
         end if
         ! the start: the guess corrected as the previous force's was (the phase moves the
-        ! peaks of neighbouring forces alike), at the previous force's frequency shift
+        ! peaks of neighbouring forces alike), at the previous force's frequency shift; after
+        ! two points, the corrections and the platform's harmonics (to gamma) extrapolated in
+        ! ln F_E from them
+        call predict(F_E(i))
         if (guess(i)%f_res > 0) omega_g = 2*pi*guess(i)%f_res*shift
         call peak_of_force(F_E(i), max(guess(i)%gamma_P*ratio, tiny(1.0_wp)), omega_g, &
           & points(i), error)
@@ -239,6 +248,7 @@ contains
           ratio = points(i)%gamma_P/guess(i)%gamma_P
           shift = points(i)%f_res/guess(i)%f_res
         end if
+        call remember(F_E(i), points(i))
       end do
       if (ih == 1) cycle
       change = 0
@@ -252,6 +262,50 @@ contains
     end do
 
   contains
+
+    !> The start of the force F from the last two points (hist), where their forces bracket
+    !> no more than F's distance twice over: ratio, shift and the shape of L's harmonics.
+    subroutine predict(F)
+      real(wp), intent(in) :: F
+      real(wp) :: t
+      if (n_hist < 2 .or. .not. allocated(L%P)) return
+      if (.not. (L%gamma > 0)) return
+      t = (log(F) - h_lnF(2))/(h_lnF(2) - h_lnF(1))
+      if (.not. (t > 0 .and. t <= 2)) return
+      ratio = exp(h_lnr(2) + t*(h_lnr(2) - h_lnr(1)))
+      shift = exp(h_lns(2) + t*(h_lns(2) - h_lns(1)))
+      L%P = (h_P(:, :, 2) + t*(h_P(:, :, 2) - h_P(:, :, 1)))*L%gamma
+      L%P0 = (h_P0(:, 2) + t*(h_P0(:, 2) - h_P0(:, 1)))*L%gamma
+    end subroutine predict
+
+    !> Keeps the point pt of the force F for predict (a jump, a failure or an unbounded
+    !> point starts the history again).
+    subroutine remember(F, pt)
+      real(wp), intent(in) :: F
+      type(point_type), intent(in) :: pt
+      if (pt%jump .or. pt%unbounded .or. .not. allocated(L%P) .or. .not. (L%gamma > 0) .or. &
+        & .not. (guess(i)%gamma_P > 0 .and. guess(i)%f_res > 0)) then
+        n_hist = 0
+        return
+      end if
+      if (allocated(h_P)) then
+        if (size(h_P, 2) /= tw%H) deallocate(h_P)
+      end if
+      if (.not. allocated(h_P)) allocate(h_P(3, tw%H, 2))
+      if (n_hist == 2) then
+        h_lnF(1) = h_lnF(2)
+        h_lnr(1) = h_lnr(2)
+        h_lns(1) = h_lns(2)
+        h_P(:, :, 1) = h_P(:, :, 2)
+        h_P0(:, 1) = h_P0(:, 2)
+      end if
+      n_hist = min(n_hist + 1, 2)
+      h_lnF(n_hist) = log(F)
+      h_lnr(n_hist) = log(ratio)
+      h_lns(n_hist) = log(shift)
+      h_P(:, :, n_hist) = L%P/L%gamma
+      h_P0(:, n_hist) = L%P0/L%gamma
+    end subroutine remember
 
     !> Root gamma of F_bb(gamma) = F and the outputs there.
     subroutine peak_of_force(F, gamma0, omega0, pt, err)

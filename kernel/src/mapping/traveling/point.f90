@@ -32,7 +32,7 @@ module udmap_mapping_traveling_point
 
   !> The Newton step (scaled) that ends the iteration: the linear action's error, O(step^2),
   !> is then at the rounding floor; and the iteration cap.
-  real(wp), parameter :: newton_accept = 1.0e-6_wp
+  real(wp), parameter :: newton_accept = 1.0e-5_wp
   integer, parameter :: max_outer = 30
   !> Relative tolerance of the root of psi in omega (at fixed action: no trace).
   real(wp), parameter :: omega_rtol = 1.0e-13_wp
