@@ -28,8 +28,9 @@ module udmap_contact_element_wave
     & CONTACT_SLIP_POS, CONTACT_SLIP_NEG, compute_rates, rates_type, code_modes
   use udmap_damper_tracer, only: virgin_state, ramp_CF, trace_path, platform_actions, same_forces, &
     & path_events_type, along
-  use udmap_damper_tracer_tangent, only: path_tangent_type, path_levers_type, &
-    & new_path_tangent, path_tangent_levers, path_tangent_segment, path_tangent_actions
+  use udmap_damper_tracer_tangent, only: path_tangent_type, &
+    & new_path_tangent, path_tangent_levers, path_tangent_segment, path_tangent_actions, &
+    & contact_levers, mode_stiffness, mode_rates, invert3
   implicit none
   private
   public :: wave_aft, wave_settings_type, wave_result_type, wave_static_action, wave_samples
@@ -102,8 +103,7 @@ contains
     type(damper_state_type) :: st, start
     type(path_events_type) :: ev
     type(path_tangent_type) :: tan
-    type(path_levers_type), allocatable :: lv(:)
-    type(path_levers_type) :: lv_rest
+    real(wp), allocatable :: lvn(:, :, :), lvt(:, :, :)
     real(wp), allocatable :: X(:, :), AL(:, :), AR(:, :), Xp(:, :, :), ALp(:, :, :), ARp(:, :, :)
     complex(wp), allocatable :: e(:, :), CL(:, :), CR(:, :), root(:), CLp(:, :, :), CRp(:, :, :)
     real(wp) :: Ak(3,2), energy, F_scale, theta
@@ -162,12 +162,13 @@ contains
         end do
       end do
       call new_path_tangent(tan, np)
-      ! the contacts' travel for the derivatives at every instant, and at rest
-      allocate(lv(0:ns-1))
+      ! the contacts' travel for the derivatives at every instant (ns: at rest)
+      allocate(lvn(3, np, 0:ns), lvt(3, np, 0:ns))
       do j = 0, ns - 1
-        call path_tangent_levers(geo, Xp(:, :, j), lv(j))
+        call path_tangent_levers(geo, Xp(:, :, j), lvn(:, :, j), lvt(:, :, j))
       end do
-      call path_tangent_levers(geo, 0*Xp(:, :, 0), lv_rest)
+      lvn(:, :, ns) = 0
+      lvt(:, :, ns) = 0
     end if
     call virgin_state(geo, st)
     call ramp_CF(geo, st, CF, error)
@@ -177,8 +178,8 @@ contains
       ! the ramp from rest to the first instant: its start does not move with the parameters
       call trace_path(geo, st, X(:, 0), error, ev)
       if (allocated(error)) return
-      call path_tangent_segment(geo, tan, [(0.0_wp, j = 1, 6)], X(:, 0), lv_rest, lv(0), &
-        & ev%entry, ev%log)
+      call path_tangent_segment(geo, tan, [(0.0_wp, j = 1, 6)], X(:, 0), lvn(:, :, ns), &
+        & lvt(:, :, ns), lvn(:, :, 0), lvt(:, :, 0), ev%entry, ev%log)
     else
       call trace_path(geo, st, X(:, 0), error)
       if (allocated(error)) return
@@ -200,9 +201,10 @@ contains
         call trace_path(geo, st, X(:, mod(j, ns)), error, ev)
         if (allocated(error)) return
         if (tangent) then
-          call path_tangent_segment(geo, tan, X(:, j-1), X(:, mod(j, ns)), lv(j-1), &
-            & lv(mod(j, ns)), ev%entry, ev%log)
-          call path_tangent_actions(geo, tan, st%mode, lv(mod(j, ns)), Akp)
+          call path_tangent_segment(geo, tan, X(:, j-1), X(:, mod(j, ns)), lvn(:, :, j-1), &
+            & lvt(:, :, j-1), lvn(:, :, mod(j, ns)), lvt(:, :, mod(j, ns)), ev%entry, ev%log)
+          call path_tangent_actions(geo, tan, st%mode, lvn(:, :, mod(j, ns)), &
+            & lvt(:, :, mod(j, ns)), Akp)
           ALp(:, j, :) = Akp(:, 1, :)
           ARp(:, j, :) = Akp(:, 2, :)
         end if
@@ -270,9 +272,11 @@ contains
       real(wp), intent(in) :: t_e, delta
       integer, intent(in) :: m_before(3), m_after(3), vertex
       real(wp) :: V(6), dA(3, 2), c, V_p(6), dA_p(3, 2), d_p, c_p
+      real(wp) :: K0(3, 3), K0i(3, 3), K1(3, 3), K1i(3, 3), cn(3), ct(3), dN0(3), dT0(3), &
+        & dN1(3), dT1(3)
       complex(wp) :: z(0:H)
       logical :: ok
-      integer :: kk, q
+      integer :: kk, q, i
       ! z(m) = e^{-i m t_e} by powers (their rounding, m eps, is far below the kink's size)
       z(0) = 1
       if (H >= 1) z(1) = exp(cmplx(0.0_wp, -t_e, wp))
@@ -291,14 +295,28 @@ contains
       energy = energy + c*(dot_product(dA(:, 1), V(1:3)) + dot_product(dA(:, 2), V(4:6)))
       if (.not. tangent) return
       ! the correction's derivatives: the event's place delta moves (t_e with it), and so do
-      ! the velocity there and the slope jump, linear in the velocity
+      ! the velocity there and the slope jump, linear in the velocity (both states'
+      ! equilibrium matrices inverted once for every derivative)
+      call mode_stiffness(geo, m_before, K0)
+      call invert3(K0, K0i, ok)
+      if (.not. ok) return
+      call mode_stiffness(geo, m_after, K1)
+      call invert3(K1, K1i, ok)
+      if (.not. ok) return
       do q = 1, np
         d_p = 0
         if (vertex > 0) d_p = tan%s_p(q, vertex)
         c_p = 0.5_wp*(2*pi/ns)**2*(2*delta - 1)*d_p
         V_p(1:3) = motion_rate(Prp(:, :, q), z) + motion_accel(Pr, z)*d_p*2*pi/ns
         V_p(4:6) = motion_rate(Pphip(:, :, q), z) + motion_accel(Pphi, z)*d_p*2*pi/ns
-        call slope_jump(V_p, m_before, m_after, dA_p, ok)
+        call contact_levers(geo, V_p, cn, ct)
+        call mode_rates(geo, m_before, K0i, cn, ct, dN0, dT0)
+        call mode_rates(geo, m_after, K1i, cn, ct, dN1, dT1)
+        dA_p = 0
+        do i = 1, 3
+          dA_p(:, geo%side(i)) = dA_p(:, geo%side(i)) + (dN1(i) - dN0(i))*geo%pn(:, i) + &
+            & (dT1(i) - dT0(i))*geo%pt(:, i)
+        end do
         do kk = 0, H
           CLp(:, kk, q) = CLp(:, kk, q) + (c_p*dA(:, 1) + c*dA_p(:, 1))*z(kk) + &
             & c*dA(:, 1)*z(kk)*cmplx(0.0_wp, -kk*d_p*2*pi/ns, wp)

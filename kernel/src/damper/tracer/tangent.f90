@@ -17,8 +17,9 @@ module udmap_damper_tracer_tangent
     & code_modes, CONTACT_OPEN, CONTACT_STICK, CONTACT_SLIP_POS, CONTACT_SLIP_NEG
   implicit none
   private
-  public :: path_tangent_type, path_levers_type, new_path_tangent, path_tangent_levers, &
-    & path_tangent_segment, path_tangent_actions
+  public :: path_tangent_type, new_path_tangent, path_tangent_levers, &
+    & path_tangent_segment, path_tangent_actions, contact_levers, mode_stiffness, mode_rates, &
+    & invert3
 
   !> The derivatives of the damper's state along a path, one column a parameter.
   type :: path_tangent_type
@@ -28,13 +29,11 @@ module udmap_damper_tracer_tangent
     !> s_p(:, j): derivatives of the place (fraction of the segment) of the last segment's
     !> vertex j, the end of its step j.
     real(wp), allocatable :: s_p(:, :)
+    !> The inverse of the equilibrium matrix of the contact states k_code (mode_code; -1: none):
+    !> the states of most steps are the last step's.
+    integer :: k_code = -1
+    real(wp) :: Ki(3, 3) = 0
   end type path_tangent_type
-
-  !> The contacts' travel along their normals (n) and tangents (t) for the derivatives of the
-  !> platforms' coordinates at an instant (path_tangent_levers), one column a parameter.
-  type :: path_levers_type
-    real(wp), allocatable :: n(:, :), t(:, :)
-  end type path_levers_type
 
 contains
 
@@ -49,38 +48,34 @@ contains
     tan%s_p = 0
   end subroutine new_path_tangent
 
-  !> The contacts' travel (along normals and tangents) for the coordinates' derivatives
-  !> X_p(:, k) of both platforms.
-  pure subroutine path_tangent_levers(geo, X_p, lv)
+  !> The contacts' travel along their normals (ln) and tangents (lt) for the derivatives
+  !> X_p(:, k) of both platforms' coordinates at an instant.
+  pure subroutine path_tangent_levers(geo, X_p, ln, lt)
     type(damper_geometry_type), intent(in) :: geo
     real(wp), intent(in) :: X_p(:, :)
-    type(path_levers_type), intent(inout) :: lv
-    integer :: k, c, m
-    if (.not. allocated(lv%n)) allocate(lv%n(3, size(X_p, 2)), lv%t(3, size(X_p, 2)))
+    real(wp), intent(out) :: ln(:, :), lt(:, :)
+    integer :: k
     do k = 1, size(X_p, 2)
-      do c = 1, 3
-        m = 3*(geo%side(c) - 1)
-        lv%n(c, k) = dot_product(geo%pn(:, c), X_p(m+1:m+3, k))
-        lv%t(c, k) = dot_product(geo%pt(:, c), X_p(m+1:m+3, k))
-      end do
+      call contact_levers(geo, X_p(:, k), ln(:, k), lt(:, k))
     end do
   end subroutine path_tangent_levers
 
   !> The derivatives carried along the segment of trace_path from X_from to X_to that left
   !> the log lg and started in the contact states `entry` (mode_code); the contacts' travel
-  !> for the derivatives of the segment's ends is ls and le (path_tangent_levers).
-  subroutine path_tangent_segment(geo, tan, X_from, X_to, ls, le, entry, lg)
+  !> for the derivatives of the segment's ends is (ls_n, ls_t) and (le_n, le_t)
+  !> (path_tangent_levers).
+  subroutine path_tangent_segment(geo, tan, X_from, X_to, ls_n, ls_t, le_n, le_t, entry, lg)
     type(damper_geometry_type), intent(in) :: geo
     type(path_tangent_type), intent(inout) :: tan
     real(wp), intent(in) :: X_from(6), X_to(6)
-    type(path_levers_type), intent(in) :: ls, le
+    real(wp), intent(in) :: ls_n(3, tan%np), ls_t(3, tan%np), le_n(3, tan%np), le_t(3, tan%np)
     integer, intent(in) :: entry
     type(mode_log_type), intent(in) :: lg
     real(wp) :: cn(3), ct(3), off(2, 3), dn(3), dt(3)
     real(wp) :: Ks(3, 3), Ki(3, 3), dq(3), dq_p(3), dg_p, dN_p, dT_p, ds_p
     real(wp) :: s0, step, step_p, fp, dfp, g(3), sv(3), N(3), T(3), sp
     real(wp), allocatable :: tmp(:, :)
-    integer :: m_old(3), m_new(3), j, k, i, e
+    integer :: m_old(3), m_new(3), j, k, i, e, c
     logical :: ok, changed(3), slips(3)
 
     if (lg%n == 0) return
@@ -88,7 +83,7 @@ contains
       allocate(tmp(tan%np, 2*lg%n))
       call move_alloc(tmp, tan%s_p)
     end if
-    call levers(X_to - X_from, cn, ct)
+    call contact_levers(geo, X_to - X_from, cn, ct)
     m_old = code_modes(entry)
     s0 = 0
     do j = 1, lg%n
@@ -96,10 +91,17 @@ contains
       changed = (m_old == CONTACT_OPEN) .neqv. (m_new == CONTACT_OPEN)
       slips = m_old /= CONTACT_STICK
       ! the step's equilibrium, K dq = h(levers), for the segment and each derivative
-      call stiffness(m_new, Ks)
-      call invert3(Ks, Ki, ok)
-      if (.not. ok) return
-      dq = matmul(Ki, rhs(m_new, cn, ct))
+      if (lg%code(j) /= tan%k_code) then
+        call mode_stiffness(geo, m_new, Ks)
+        call invert3(Ks, tan%Ki, ok)
+        if (.not. ok) then
+          tan%k_code = -1
+          return
+        end if
+        tan%k_code = lg%code(j)
+      end if
+      Ki = tan%Ki
+      dq = mat3(Ki, mode_rhs(geo, m_new, cn, ct))
       step = lg%s(j) - s0
       e = lg%event(j)
       i = e/4
@@ -108,18 +110,20 @@ contains
         if (j > 1) sp = tan%s_p(k, j - 1)
         ! the levers of the derivatives along the segment, and their offsets at the step's
         ! start (fixed-size copies: no temporaries in the innermost loop)
-        dn = le%n(1:3, k) - ls%n(1:3, k)
-        dt = le%t(1:3, k) - ls%t(1:3, k)
-        off(1, :) = ls%n(1:3, k) + s0*dn
-        off(2, :) = ls%t(1:3, k) + s0*dt
+        dn = le_n(:, k) - ls_n(:, k)
+        dt = le_t(:, k) - ls_t(:, k)
+        off(1, :) = ls_n(:, k) + s0*dn
+        off(2, :) = ls_t(:, k) + s0*dt
         ! the sliders where the tracer sets them as a step starts: contacts that do not
         ! stick on their forces (the states before), then contacts that open or close unloaded
         if (any(slips) .or. any(changed)) then
           call forces(m_old, tan%q_p(:, k), sp, tan%w_p(:, k), off, g, sv, N, T)
-          where (slips) tan%w_p(:, k) = sv + T/geo%kt
-          where (changed) tan%w_p(:, k) = sv
+          do c = 1, 3
+            if (slips(c)) tan%w_p(c, k) = sv(c) + T(c)/geo%kt(c)
+            if (changed(c)) tan%w_p(c, k) = sv(c)
+          end do
         end if
-        dq_p = matmul(Ki, rhs(m_new, dn, dt))
+        dq_p = mat3(Ki, mode_rhs(geo, m_new, dn, dt))
         if (e == 0) then
           ! the target, s = 1 whatever the parameters
           step_p = -sp
@@ -161,64 +165,6 @@ contains
 
   contains
 
-    !> The contacts' travel along the normal (cn) and the tangent (ct) for the platforms'
-    !> coordinates moving by dX (trace_path's lever arms, or its offsets).
-    pure subroutine levers(dX, a_n, a_t)
-      real(wp), intent(in) :: dX(6)
-      real(wp), intent(out) :: a_n(3), a_t(3)
-      integer :: c, m
-      do c = 1, 3
-        m = 3*(geo%side(c) - 1)
-        a_n(c) = dot_product(geo%pn(:, c), dX(m+1:m+3))
-        a_t(c) = dot_product(geo%pt(:, c), dX(m+1:m+3))
-      end do
-    end subroutine levers
-
-    !> The damper's equilibrium matrix in the contact states `mode` (as compute_rates').
-    pure subroutine stiffness(mode, Km)
-      integer, intent(in) :: mode(3)
-      real(wp), intent(out) :: Km(3, 3)
-      real(wp) :: v(3)
-      integer :: c, r, q
-      Km = 0
-      do c = 1, 3
-        select case (mode(c))
-        case (CONTACT_STICK)
-          do q = 1, 3
-            do r = 1, 3
-              Km(r, q) = Km(r, q) + geo%kn(c)*geo%bn(r, c)*geo%bn(q, c) + &
-                & geo%kt(c)*geo%bt(r, c)*geo%bt(q, c)
-            end do
-          end do
-        case (CONTACT_SLIP_POS, CONTACT_SLIP_NEG)
-          v = geo%bn(:, c) + merge(1, -1, mode(c) == CONTACT_SLIP_POS)*geo%mu*geo%bt(:, c)
-          do q = 1, 3
-            do r = 1, 3
-              Km(r, q) = Km(r, q) + geo%kn(c)*v(r)*geo%bn(q, c)
-            end do
-          end do
-        end select
-      end do
-    end subroutine stiffness
-
-    !> The right-hand side of the equilibrium's rates for the lever arms (a_n, a_t).
-    pure function rhs(mode, a_n, a_t) result(h)
-      integer, intent(in) :: mode(3)
-      real(wp), intent(in) :: a_n(3), a_t(3)
-      real(wp) :: h(3)
-      integer :: c
-      h = 0
-      do c = 1, 3
-        select case (mode(c))
-        case (CONTACT_STICK)
-          h = h + geo%kn(c)*a_n(c)*geo%bn(:, c) + geo%kt(c)*a_t(c)*geo%bt(:, c)
-        case (CONTACT_SLIP_POS, CONTACT_SLIP_NEG)
-          h = h + geo%kn(c)*a_n(c)*(geo%bn(:, c) + &
-            & merge(1, -1, mode(c) == CONTACT_SLIP_POS)*geo%mu*geo%bt(:, c))
-        end select
-      end do
-    end function rhs
-
     !> The contact forces of a derivative (contact_forces with the segment's levers).
     pure subroutine forces(mode, q, s_vertex, w, offs, gv, svv, Nv, Tv)
       integer, intent(in) :: mode(3)
@@ -245,25 +191,120 @@ contains
 
   !> The derivatives A_p(:, side, k) of the damper's actions on its two platforms
   !> (trace_path's platform_actions) at a segment's end, whose coordinates' derivatives have
-  !> the contacts' travel le, in the contact states `mode`.
-  subroutine path_tangent_actions(geo, tan, mode, le, A_p)
+  !> the contacts' travel (le_n, le_t), in the contact states `mode`.
+  subroutine path_tangent_actions(geo, tan, mode, le_n, le_t, A_p)
     type(damper_geometry_type), intent(in) :: geo
     type(path_tangent_type), intent(in) :: tan
     integer, intent(in) :: mode(3)
-    type(path_levers_type), intent(in) :: le
+    real(wp), intent(in) :: le_n(3, tan%np), le_t(3, tan%np)
     real(wp), intent(out) :: A_p(:, :, :)
     real(wp) :: off(2, 3), g(3), sv(3), N(3), T(3)
     integer :: k, c
     A_p = 0
     do k = 1, tan%np
-      off(1, :) = le%n(1:3, k)
-      off(2, :) = le%t(1:3, k)
+      off(1, :) = le_n(:, k)
+      off(2, :) = le_t(:, k)
       call contact_forces(geo, mode, tan%q_p(:, k), 0.0_wp, tan%w_p(:, k), g, sv, N, T, off)
       do c = 1, 3
         A_p(:, geo%side(c), k) = A_p(:, geo%side(c), k) + N(c)*geo%pn(:, c) + T(c)*geo%pt(:, c)
       end do
     end do
   end subroutine path_tangent_actions
+
+  !> The contacts' travel along the normal (cn) and the tangent (ct) for both platforms'
+  !> coordinates moving by dX (trace_path's lever arms, its offsets, or rates for a velocity).
+  pure subroutine contact_levers(geo, dX, cn, ct)
+    type(damper_geometry_type), intent(in) :: geo
+    real(wp), intent(in) :: dX(6)
+    real(wp), intent(out) :: cn(3), ct(3)
+    integer :: c, m
+    do c = 1, 3
+      m = 3*(geo%side(c) - 1)
+      cn(c) = dot_product(geo%pn(:, c), dX(m+1:m+3))
+      ct(c) = dot_product(geo%pt(:, c), dX(m+1:m+3))
+    end do
+  end subroutine contact_levers
+
+  !> The damper's equilibrium matrix K in the contact states `mode` (compute_rates' K dq = h).
+  pure subroutine mode_stiffness(geo, mode, K)
+    type(damper_geometry_type), intent(in) :: geo
+    integer, intent(in) :: mode(3)
+    real(wp), intent(out) :: K(3, 3)
+    real(wp) :: v(3)
+    integer :: c, r, q
+    K = 0
+    do c = 1, 3
+      select case (mode(c))
+      case (CONTACT_STICK)
+        do q = 1, 3
+          do r = 1, 3
+            K(r, q) = K(r, q) + geo%kn(c)*geo%bn(r, c)*geo%bn(q, c) + &
+              & geo%kt(c)*geo%bt(r, c)*geo%bt(q, c)
+          end do
+        end do
+      case (CONTACT_SLIP_POS, CONTACT_SLIP_NEG)
+        v = geo%bn(:, c) + merge(1, -1, mode(c) == CONTACT_SLIP_POS)*geo%mu*geo%bt(:, c)
+        do q = 1, 3
+          do r = 1, 3
+            K(r, q) = K(r, q) + geo%kn(c)*v(r)*geo%bn(q, c)
+          end do
+        end do
+      end select
+    end do
+  end subroutine mode_stiffness
+
+  !> The right-hand side h of the equilibrium's rates for the contacts' travel (cn, ct).
+  pure function mode_rhs(geo, mode, cn, ct) result(h)
+    type(damper_geometry_type), intent(in) :: geo
+    integer, intent(in) :: mode(3)
+    real(wp), intent(in) :: cn(3), ct(3)
+    real(wp) :: h(3)
+    integer :: c
+    h = 0
+    do c = 1, 3
+      select case (mode(c))
+      case (CONTACT_STICK)
+        h = h + geo%kn(c)*cn(c)*geo%bn(:, c) + geo%kt(c)*ct(c)*geo%bt(:, c)
+      case (CONTACT_SLIP_POS, CONTACT_SLIP_NEG)
+        h = h + geo%kn(c)*cn(c)*(geo%bn(:, c) + &
+          & merge(1, -1, mode(c) == CONTACT_SLIP_POS)*geo%mu*geo%bt(:, c))
+      end select
+    end do
+  end function mode_rhs
+
+  !> The contact forces' rates (dN, dT) in the contact states `mode` for the contacts'
+  !> travel (cn, ct), Ki the inverse of mode_stiffness (compute_rates with K inverted once).
+  pure subroutine mode_rates(geo, mode, Ki, cn, ct, dN, dT)
+    type(damper_geometry_type), intent(in) :: geo
+    integer, intent(in) :: mode(3)
+    real(wp), intent(in) :: Ki(3, 3), cn(3), ct(3)
+    real(wp), intent(out) :: dN(3), dT(3)
+    real(wp) :: dq(3), dg, ds
+    integer :: c
+    dq = mat3(Ki, mode_rhs(geo, mode, cn, ct))
+    do c = 1, 3
+      dg = -dot_product(geo%bn(:, c), dq) + cn(c)
+      ds = dot_product(geo%bt(:, c), dq) - ct(c)
+      select case (mode(c))
+      case (CONTACT_STICK)
+        dN(c) = geo%kn(c)*dg
+        dT(c) = -geo%kt(c)*ds
+      case (CONTACT_SLIP_POS, CONTACT_SLIP_NEG)
+        dN(c) = geo%kn(c)*dg
+        dT(c) = merge(1, -1, mode(c) == CONTACT_SLIP_POS)*geo%mu*dN(c)
+      case default
+        dN(c) = 0
+        dT(c) = 0
+      end select
+    end do
+  end subroutine mode_rates
+
+  !> A x for a 3x3 A, without the temporaries of matmul on expressions.
+  pure function mat3(A, x) result(y)
+    real(wp), intent(in) :: A(3, 3), x(3)
+    real(wp) :: y(3)
+    y = A(:, 1)*x(1) + A(:, 2)*x(2) + A(:, 3)*x(3)
+  end function mat3
 
   !> The inverse of a 3x3 matrix by cofactors; ok is false if it is numerically singular.
   pure subroutine invert3(A, Ai, ok)
