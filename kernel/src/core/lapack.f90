@@ -7,7 +7,7 @@ module udmap_core_lapack
   private
   public :: dsyev, dsygvd, dsygv, dpotrf, dpotrs, dpbtrf, dpbtrs, dsbmv
   public :: zgetrf, zgetrs, zgbtrf, zgbtrs, zggev
-  public :: dgesv, dgetrf, dgetrs, dgbtrf, dgbtrs
+  public :: dgesv, dgetrf, dgetrs, dgbtrf, dgbtrs, dgemm, dgemv
 
   interface
     !> Symmetric eigenproblem A x = lambda x (QR iteration).
@@ -176,5 +176,21 @@ module udmap_core_lapack
       real(wp), intent(out) :: rwork(*)
       integer, intent(out) :: info
     end subroutine zggev
+    !> BLAS matrix product.
+    pure subroutine dgemm(transa, transb, m, n, k, alpha, a, lda, b, ldb, beta, c, ldc)
+      import :: wp
+      character(len=1), intent(in) :: transa, transb
+      integer, intent(in) :: m, n, k, lda, ldb, ldc
+      real(wp), intent(in) :: alpha, beta, a(lda, *), b(ldb, *)
+      real(wp), intent(inout) :: c(ldc, *)
+    end subroutine dgemm
+    !> BLAS matrix-vector product.
+    pure subroutine dgemv(trans, m, n, alpha, a, lda, x, incx, beta, y, incy)
+      import :: wp
+      character(len=1), intent(in) :: trans
+      integer, intent(in) :: m, n, lda, incx, incy
+      real(wp), intent(in) :: alpha, beta, a(lda, *), x(*)
+      real(wp), intent(inout) :: y(*)
+    end subroutine dgemv
   end interface
 end module udmap_core_lapack

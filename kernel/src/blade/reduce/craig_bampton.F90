@@ -19,32 +19,13 @@ module udmap_blade_reduce_craig_bampton
   use udmap_blade_reduce_shift_invert, only: lowest_modes
   use udmap_blade_reduce_rigid_platform, only: platform_map_type, new_platform_map, &
     & transform_matrix, transform_vector, n_boundary, b_gamma, b_exc
-  use udmap_core_lapack, only: dsygv
+  use udmap_core_lapack, only: dsygv, dgemm, dgemv
   implicit none
   private
   public :: reduction_type, platform_centred_reduction, mass_tol
 
   !> M is accepted positive semi-definite: no eigenvalue below -mass_tol max|M| (PHYSICS.md 1.3).
   real(wp), parameter :: mass_tol = 1e-12_wp
-
-  interface
-    !> BLAS matrix product.
-    subroutine dgemm(transa, transb, m, n, k, alpha, a, lda, b, ldb, beta, c, ldc)
-      import :: wp
-      character(len=1), intent(in) :: transa, transb
-      integer, intent(in) :: m, n, k, lda, ldb, ldc
-      real(wp), intent(in) :: alpha, beta, a(lda, *), b(ldb, *)
-      real(wp), intent(inout) :: c(ldc, *)
-    end subroutine dgemm
-    !> BLAS matrix-vector product.
-    subroutine dgemv(trans, m, n, alpha, a, lda, x, incx, beta, y, incy)
-      import :: wp
-      character(len=1), intent(in) :: trans
-      integer, intent(in) :: m, n, lda, incx, incy
-      real(wp), intent(in) :: alpha, beta, a(lda, *), x(*)
-      real(wp), intent(inout) :: y(*)
-    end subroutine dgemv
-  end interface
 
   !> The reduced model and its checks.
   type :: reduction_type

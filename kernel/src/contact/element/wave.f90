@@ -104,10 +104,11 @@ contains
     type(path_events_type) :: ev
     type(path_tangent_type) :: tan
     real(wp), allocatable :: lvn(:, :, :), lvt(:, :, :)
-    real(wp), allocatable :: X(:, :), AL(:, :), AR(:, :), Xp(:, :, :), ALp(:, :, :), ARp(:, :, :)
+    real(wp), allocatable :: X(:, :), AL(:, :), AR(:, :), Xp(:, :, :), ALp(:, :), ARp(:, :)
     complex(wp), allocatable :: e(:, :), CL(:, :), CR(:, :), root(:), CLp(:, :, :), CRp(:, :, :)
     real(wp) :: Ak(3,2), energy, F_scale, theta
-    real(wp), allocatable :: Akp(:, :, :)
+    real(wp), allocatable :: Akp(:, :, :), Er(:, :), Ei(:, :), SL(:, :, :), SR(:, :, :)
+    integer, allocatable :: mlo(:), mhi(:)
     complex(wp), allocatable :: Pr(:, :), Pphi(:, :), Prp(:, :, :), Pphip(:, :, :)
     integer :: ns, j, k, per, H, np, kp
     logical :: closed, slipped, lifted, cs(3), tangent
@@ -149,16 +150,25 @@ contains
         return
       end if
       np = size(dP, 3)
-      allocate(Xp(6, np, 0:ns-1), ALp(3, ns, np), ARp(3, ns, np), Akp(3, 2, np), &
+      allocate(Xp(6, np, 0:ns-1), ALp(3*np, ns), ARp(3*np, ns), Akp(3, 2, np), mlo(np), mhi(np), &
         & CLp(3, 0:H, np), CRp(3, 0:H, np), Prp(3, H, np), Pphip(3, H, np))
       do kp = 1, np
+        ! the harmonics a direction moves (mostly one: the unknowns' unit vectors)
+        mlo(kp) = H + 1
+        mhi(kp) = 0
+        do k = 1, H
+          if (any(dP(:, k, kp) /= 0)) then
+            mlo(kp) = min(mlo(kp), k)
+            mhi(kp) = k
+          end if
+        end do
         do k = 1, H
           Prp(:, k, kp) = dP(:, k, kp)
           Pphip(:, k, kp) = dP(:, k, kp)*exp(cmplx(0.0_wp, k*phi, wp))
         end do
         do j = 0, ns - 1
-          Xp(1:3, kp, j) = sampled(Prp(:, :, kp), dP0(:, kp), j)
-          Xp(4:6, kp, j) = sampled(Pphip(:, :, kp), dP0(:, kp), j)
+          Xp(1:3, kp, j) = sampled(Prp(:, :, kp), dP0(:, kp), j, mlo(kp), mhi(kp))
+          Xp(4:6, kp, j) = sampled(Pphip(:, :, kp), dP0(:, kp), j, mlo(kp), mhi(kp))
         end do
       end do
       call new_path_tangent(tan, np)
@@ -205,8 +215,8 @@ contains
             & lvt(:, :, j-1), lvn(:, :, mod(j, ns)), lvt(:, :, mod(j, ns)), ev%entry, ev%log)
           call path_tangent_actions(geo, tan, st%mode, lvn(:, :, mod(j, ns)), &
             & lvt(:, :, mod(j, ns)), Akp)
-          ALp(:, j, :) = Akp(:, 1, :)
-          ARp(:, j, :) = Akp(:, 2, :)
+          ALp(:, j) = reshape(Akp(:, 1, :), [3*np])
+          ARp(:, j) = reshape(Akp(:, 2, :), [3*np])
         end if
         do k = 1, ev%n
           call correct_kink((j - 1 + ev%s(k))*2*pi/ns, ev%s(k), code_modes(ev%before(k)), &
@@ -243,12 +253,26 @@ contains
       if (theta /= 0) A(:, k) = A(:, k)*exp(cmplx(0.0_wp, k*theta, wp))
     end do
     if (tangent) then
+      ! the derivatives' transform as real matrix products over all directions at once:
+      ! (3 np, ns) samples times the instants' cosines and sines (ns, H)
+      allocate(Er(ns, H), Ei(ns, H), SL(3*np, H, 2), SR(3*np, H, 2))
+      do k = 1, H
+        do j = 1, ns
+          Er(j, k) = real(root(mod(k*j, ns)), wp)
+          Ei(j, k) = aimag(root(mod(k*j, ns)))
+        end do
+      end do
+      SL(:, :, 1) = matmul(ALp, Er)
+      SL(:, :, 2) = matmul(ALp, Ei)
+      SR(:, :, 1) = matmul(ARp, Er)
+      SR(:, :, 2) = matmul(ARp, Ei)
       do kp = 1, np
-        dA0(:, kp) = (sum(ALp(:, :, kp), dim=2) + sum(ARp(:, :, kp), dim=2))/ns + &
+        dA0(:, kp) = (sum(ALp(3*kp-2:3*kp, :), dim=2) + sum(ARp(3*kp-2:3*kp, :), dim=2))/ns + &
           & real(CLp(:, 0, kp) + CRp(:, 0, kp), wp)/(2*pi)
         do k = 1, H
-          dA(:, k, kp) = (matmul(ALp(:, :, kp), e(k, :)) + &
-            & exp(cmplx(0.0_wp, -k*phi, wp))*matmul(ARp(:, :, kp), e(k, :)))*(2.0_wp/ns) &
+          dA(:, k, kp) = (cmplx(SL(3*kp-2:3*kp, k, 1), SL(3*kp-2:3*kp, k, 2), wp) + &
+            & exp(cmplx(0.0_wp, -k*phi, wp))*cmplx(SR(3*kp-2:3*kp, k, 1), &
+            & SR(3*kp-2:3*kp, k, 2), wp))*(2.0_wp/ns) &
             & + (CLp(:, k, kp) + exp(cmplx(0.0_wp, -k*phi, wp))*CRp(:, k, kp))/pi
         end do
       end do
@@ -273,7 +297,7 @@ contains
       integer, intent(in) :: m_before(3), m_after(3), vertex
       real(wp) :: V(6), dA(3, 2), c, V_p(6), dA_p(3, 2), d_p, c_p
       real(wp) :: K0(3, 3), K0i(3, 3), K1(3, 3), K1i(3, 3), cn(3), ct(3), dN0(3), dT0(3), &
-        & dN1(3), dT1(3)
+        & dN1(3), dT1(3), a_L(3), a_R(3)
       complex(wp) :: z(0:H)
       logical :: ok
       integer :: kk, q, i
@@ -297,6 +321,8 @@ contains
       ! the correction's derivatives: the event's place delta moves (t_e with it), and so do
       ! the velocity there and the slope jump, linear in the velocity (both states'
       ! equilibrium matrices inverted once for every derivative)
+      a_L = motion_accel(Pr, z)
+      a_R = motion_accel(Pphi, z)
       call mode_stiffness(geo, m_before, K0)
       call invert3(K0, K0i, ok)
       if (.not. ok) return
@@ -307,8 +333,8 @@ contains
         d_p = 0
         if (vertex > 0) d_p = tan%s_p(q, vertex)
         c_p = 0.5_wp*(2*pi/ns)**2*(2*delta - 1)*d_p
-        V_p(1:3) = motion_rate(Prp(:, :, q), z) + motion_accel(Pr, z)*d_p*2*pi/ns
-        V_p(4:6) = motion_rate(Pphip(:, :, q), z) + motion_accel(Pphi, z)*d_p*2*pi/ns
+        V_p(1:3) = motion_rate(Prp(:, :, q), z, mlo(q), mhi(q)) + a_L*d_p*2*pi/ns
+        V_p(4:6) = motion_rate(Pphip(:, :, q), z, mlo(q), mhi(q)) + a_R*d_p*2*pi/ns
         call contact_levers(geo, V_p, cn, ct)
         call mode_rates(geo, m_before, K0i, cn, ct, dN0, dT0)
         call mode_rates(geo, m_after, K1i, cn, ct, dN1, dT1)
@@ -350,13 +376,19 @@ contains
       end do
     end subroutine slope_jump
 
-    !> The platform's velocity for the harmonics Q at the time t with z(m) = e^{-i m t}.
-    pure function motion_rate(Q, z) result(v_t)
+    !> The platform's velocity for the harmonics Q at the time t with z(m) = e^{-i m t} (only
+    !> harmonics m1..m2 when given).
+    pure function motion_rate(Q, z, m1, m2) result(v_t)
       complex(wp), intent(in) :: Q(:, :), z(0:)
+      integer, intent(in), optional :: m1, m2
       real(wp) :: v_t(3)
-      integer :: m
+      integer :: m, lo, hi
+      lo = 1
+      hi = H
+      if (present(m1)) lo = m1
+      if (present(m2)) hi = m2
       v_t = 0
-      do m = 1, H
+      do m = lo, hi
         v_t = v_t + real(cmplx(0.0_wp, real(m, wp), wp)*Q(:, m)*conjg(z(m)), wp)
       end do
     end function motion_rate
@@ -373,15 +405,20 @@ contains
     end function motion_accel
 
     !> The platform's coordinates for the static part Q0 and the harmonics Q at the instant
-    !> tau_j = 2 pi j/ns.
-    pure function sampled(Q, Q0, jj) result(x_t)
+    !> tau_j = 2 pi j/ns (only harmonics m1..m2 when given: those a derivative moves).
+    pure function sampled(Q, Q0, jj, m1, m2) result(x_t)
       complex(wp), intent(in) :: Q(:, :)
       real(wp), intent(in) :: Q0(3)
       integer, intent(in) :: jj
+      integer, intent(in), optional :: m1, m2
       real(wp) :: x_t(3)
-      integer :: m
+      integer :: m, lo, hi
+      lo = 1
+      hi = H
+      if (present(m1)) lo = m1
+      if (present(m2)) hi = m2
       x_t = Q0
-      do m = 1, H
+      do m = lo, hi
         x_t = x_t + real(Q(:, m)*conjg(root(mod(m*jj, ns))), wp)
       end do
     end function sampled
