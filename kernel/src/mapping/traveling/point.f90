@@ -39,6 +39,9 @@ module udmap_mapping_traveling_point
   !> A jump's one-sided layers: the nearest below and above gamma_c that have a solution,
   !> from jump_gap_min (relative) doubling up to jump_gap_max (beyond: not one jump).
   real(wp), parameter :: jump_gap_min = 1.0e-9_wp, jump_gap_max = 1.0e-6_wp
+  !> The widest gap above gamma_c without a layer that is still one jump (relative): there
+  !> gamma_P goes across the gap with the blend.
+  real(wp), parameter :: jump_gap_wide = 1.0e-3_wp
   !> How far (relative) the lower branch is followed up past the jump's first sign, and the
   !> change of a layer's peak frequency that means another branch.
   real(wp), parameter :: jump_follow_max = 0.1_wp, jump_branch = 1.0e-3_wp
@@ -136,8 +139,11 @@ contains
   !> most 2 jump_gap_max apart. gamma_P = gamma_c,
   !> and s in [0, 1] is the root of F_bb(s) = F_E, the peak of the layer gamma_c with A_s. At
   !> s = 0 and 1 this is the one-sided layer's peak; at phi = 0 the actions depend on gamma
-  !> alone and it is 2.5's interpolation of k. ok = .false. when F_E is not inside the jump
-  !> or no one-sided layer is found near gamma0.
+  !> alone and it is 2.5's interpolation of k. Where no layer has a solution over a gap above
+  !> gamma_c (wider than jump_gap_max, at most jump_gap_wide: the translations widen the jump
+  !> as phi grows), the upper side is the first layer above the gap, and gamma_P goes across
+  !> the gap with the blend, gamma_c + s (gamma_+ - gamma_c): the backbone stays continuous.
+  !> ok = .false. when F_E is not inside the jump or no one-sided layer is found near gamma0.
   subroutine wave_jump_point(tw, F_E, gamma0, below, above, L, ok)
     type(traveling_type), intent(inout) :: tw
     real(wp), intent(in) :: F_E, gamma0
@@ -153,7 +159,7 @@ contains
     type(error_type), allocatable :: err
     type(brent_type) :: bs
     real(wp), allocatable :: y(:), yb(:), y1(:)
-    real(wp) :: gk, F_bb, w, w1, s, g0, g1, gs, gap, edge(2), gamma_c, ghi
+    real(wp) :: gk, F_bb, w, w1, s, g0, g1, gs, gap, edge(2), gamma_c, ghi, g_up, glo_gap
     integer :: k
     logical :: more
 
@@ -163,7 +169,7 @@ contains
     ! the one-sided layers' peaks nearest to gamma0 (a layer below it may peak on the upper
     ! branch: the lower side is sought down to jump_follow_max)
     if (.not. one_side(1, gamma0, below, jump_follow_max)) return
-    if (.not. one_side(2, gamma0, above, jump_gap_max)) return
+    if (.not. one_side(2, gamma0, above, jump_gap_wide)) return
     ! the branches below and above may overlap (the upper one already solves where the lower
     ! one still does): F_bb is the least of them, so the jump is where the lower branch ends.
     ! It is followed upwards in steps that double, then the end is bisected to jump_gap_min.
@@ -194,9 +200,30 @@ contains
       end if
     end do
     gamma_c = sqrt(edge(1)*ghi)
-    ! the upper side at or above gamma_c
+    ! the upper side at or above gamma_c (beyond a gap without layers, if need be)
     if (edge(2) < gamma_c*(1 + jump_gap_min)) then
-      if (.not. one_side(2, gamma_c, Ls(2), jump_gap_max)) return
+      if (.not. one_side(2, gamma_c, Ls(2), jump_gap_wide)) return
+    end if
+    g_up = gamma_c
+    if (edge(2) > gamma_c*(1 + 2*jump_gap_max)) then
+      ! a gap without layers: its upper end, bisected to jump_gap_min like gamma_c (the
+      ! same for every force inside the jump)
+      glo_gap = gamma_c
+      do while (edge(2)/glo_gap - 1 > jump_gap_min)
+        gk = sqrt(glo_gap*edge(2))
+        Lk = Ls(2)
+        call wave_peak(tw, gk, Lk%omega, Lk, F_bb, err)
+        if (allocated(err)) then
+          deallocate(err)
+          glo_gap = gk
+        else if (F_bb < F_E) then
+          glo_gap = gk
+        else
+          edge(2) = gk
+          Ls(2) = Lk
+        end if
+      end do
+      g_up = edge(2)
     end if
     do k = 1, 2
       L = Ls(k)
@@ -233,7 +260,7 @@ contains
     gs = excess(s)
     if (.not. ok) return
     L%trace = res(merge(1, 2, s < 0.5_wp))
-    L%gamma = gamma_c
+    L%gamma = gamma_c + s*(g_up - gamma_c)
     L%solved = .true.
     L%J_valid = .false.
 
@@ -281,6 +308,7 @@ contains
       real(wp), intent(in) :: sv
       real(wp) :: A0a(3), A0b(3)
       complex(wp) :: Aa(3, tw%H), Ab(3, tw%H)
+      yb(pw%ny) = gamma_c + sv*(g_up - gamma_c)
       call action(side(1), yb, A0a, Aa)
       call action(side(2), yb, A0b, Ab)
       lin%yb = yb
