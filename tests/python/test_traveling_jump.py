@@ -31,6 +31,16 @@ def liftoff():
     return model
 
 
+def assert_continuous(points):
+    """Forces 0.1 N apart into, across and out of a jump: gamma_P does not fall (beyond the
+    1e-9 to which the jump is located), sigma_a rises and f_res moves by less than 0.05 Hz."""
+    gamma = np.array([p["gamma_P"] for p in points])
+    sigma = np.array([p["sigma_a"] for p in points])
+    f = np.array([p["f_res"] for p in points])
+    assert np.all(np.diff(gamma) >= -1e-9 * gamma[1:]) and np.all(np.diff(sigma) > 0)
+    assert np.max(np.abs(np.diff(f))) < 0.05
+
+
 def test_a_jump_at_a_tiny_phase_is_the_in_phase_jump(liftoff):
     """Over forces below, inside and above the jump: the same points flagged, gamma_P = gamma_c
     to 1e-6, f_res to 2e-6 and sigma_a to 1e-4 (the bounds of the phi -> 0 check of the smooth
@@ -51,11 +61,7 @@ def test_the_backbone_crosses_the_jump_continuously(liftoff):
     with the force; f_res moves by less than 0.05 Hz between neighbouring forces 0.1 N apart,
     into, across and out of the jump."""
     points = liftoff(1e-4).backbone(FORCES)
-    gamma = np.array([p["gamma_P"] for p in points])
-    sigma = np.array([p["sigma_a"] for p in points])
-    f = np.array([p["f_res"] for p in points])
-    assert np.all(np.diff(gamma) >= -1e-9 * gamma[1:]) and np.all(np.diff(sigma) > 0)
-    assert np.max(np.abs(np.diff(f))) < 0.05
+    assert_continuous(points)
     # every one of them at gamma_c, which the kernel locates to 1e-9
     inside = np.array([p["gamma_P"] for p in points if p["jump"]])
     assert np.ptp(inside) <= 1e-9 * inside[0]
@@ -92,11 +98,7 @@ def test_a_jump_with_a_gap_at_1_deg(liftoff):
     points = liftoff(1.0).backbone(FORCES)
     jump = [p["jump"] for p in points]
     assert sum(jump) >= 10 and not jump[0] and not jump[-1]
-    gamma = np.array([p["gamma_P"] for p in points])
-    sigma = np.array([p["sigma_a"] for p in points])
-    f = np.array([p["f_res"] for p in points])
-    assert np.all(np.diff(gamma) >= -1e-9 * gamma[1:]) and np.all(np.diff(sigma) > 0)
-    assert np.max(np.abs(np.diff(f))) < 0.05
+    assert_continuous(points)
     inside = np.array([p["gamma_P"] for p in points if p["jump"]])
     # a gap, not a point: wider than the narrow jump's 1e-6, narrower than 1e-3
     assert 1e-6 * inside[0] < np.ptp(inside) < 1e-3 * inside[0]

@@ -25,12 +25,13 @@ module udmap_contact_element_wave
   use udmap_core_kinds, only: wp, pi
   use udmap_core_error, only: error_type, fatal_error, UDMAP_EINPUT
   use udmap_damper_tracer_core, only: damper_geometry_type, damper_state_type, CONTACT_OPEN, &
+    & mode_stiffness, &
     & CONTACT_SLIP_POS, CONTACT_SLIP_NEG, compute_rates, rates_type, code_modes
   use udmap_damper_tracer, only: virgin_state, ramp_CF, trace_path, platform_actions, same_forces, &
     & path_events_type, along
   use udmap_damper_tracer_tangent, only: path_tangent_type, &
     & new_path_tangent, path_tangent_levers, path_tangent_segment, path_tangent_actions, &
-    & contact_levers, mode_stiffness, mode_rates, invert3
+    & contact_levers, mode_rates, invert3
   implicit none
   private
   public :: wave_aft, wave_settings_type, wave_result_type, wave_static_action, wave_samples
@@ -215,8 +216,10 @@ contains
             & lvt(:, :, j-1), lvn(:, :, mod(j, ns)), lvt(:, :, mod(j, ns)), ev%entry, ev%log)
           call path_tangent_actions(geo, tan, st%mode, lvn(:, :, mod(j, ns)), &
             & lvt(:, :, mod(j, ns)), Akp)
-          ALp(:, j) = reshape(Akp(:, 1, :), [3*np])
-          ARp(:, j) = reshape(Akp(:, 2, :), [3*np])
+          do kp = 1, np
+            ALp(3*kp-2:3*kp, j) = Akp(:, 1, kp)
+            ARp(3*kp-2:3*kp, j) = Akp(:, 2, kp)
+          end do
         end if
         do k = 1, ev%n
           call correct_kink((j - 1 + ev%s(k))*2*pi/ns, ev%s(k), code_modes(ev%before(k)), &

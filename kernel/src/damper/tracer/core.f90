@@ -8,7 +8,8 @@ module udmap_damper_tracer_core
   use udmap_core_error, only: error_type, fatal_error, UDMAP_EPHYSICS, UDMAP_ENUMERIC
   implicit none
   private
-  public :: contact_forces, trace_core, solve3, append_vertex, compute_rates, rates_type, &
+  public :: contact_forces, lever_forces, trace_core, solve3, append_vertex, compute_rates, &
+    & rates_type, mode_stiffness, &
     & mode_log_type, mode_code, code_modes
 
   !> Contact states.
@@ -122,6 +123,7 @@ contains
     !> The state's platform offsets (damper_state_type%off); absent: none.
     real(wp), intent(in), optional :: off(2,3)
     integer :: i
+    ! lever_forces with the geometry's levers, written out: the tracer's most frequent call
     do i = 1, 3
       g(i) = -(geo%bn(1,i)*q(1) + geo%bn(2,i)*q(2) + geo%bn(3,i)*q(3)) + gamma*geo%cn(i)
       s(i) = geo%bt(1,i)*q(1) + geo%bt(2,i)*q(2) + geo%bt(3,i)*q(3) - gamma*geo%ct(i)
@@ -145,6 +147,40 @@ contains
       end select
     end do
   end subroutine contact_forces
+
+  !> contact_forces with the lever arms (cn, ct) given: a segment's, or a derivative's
+  !> (udmap_damper_tracer_tangent); with q the rates of the damper's DOFs, gamma = 1 and w = 0,
+  !> the rates of the forces.
+  pure subroutine lever_forces(geo, mode, cn, ct, q, gamma, w, g, s, N, T, off)
+    type(damper_geometry_type), intent(in) :: geo
+    integer, intent(in) :: mode(3)
+    real(wp), intent(in) :: cn(3), ct(3), q(3), gamma, w(3)
+    real(wp), intent(out) :: g(3), s(3), N(3), T(3)
+    real(wp), intent(in), optional :: off(2,3)
+    integer :: i
+    do i = 1, 3
+      g(i) = -(geo%bn(1,i)*q(1) + geo%bn(2,i)*q(2) + geo%bn(3,i)*q(3)) + gamma*cn(i)
+      s(i) = geo%bt(1,i)*q(1) + geo%bt(2,i)*q(2) + geo%bt(3,i)*q(3) - gamma*ct(i)
+      if (present(off)) then
+        g(i) = g(i) + off(1,i)
+        s(i) = s(i) - off(2,i)
+      end if
+      select case (mode(i))
+      case (CONTACT_STICK)
+        N(i) = geo%kn(i)*g(i)
+        T(i) = -geo%kt(i)*(s(i) - w(i))
+      case (CONTACT_SLIP_POS)
+        N(i) = geo%kn(i)*g(i)
+        T(i) = geo%mu*N(i)
+      case (CONTACT_SLIP_NEG)
+        N(i) = geo%kn(i)*g(i)
+        T(i) = -geo%mu*N(i)
+      case default
+        N(i) = 0
+        T(i) = 0
+      end select
+    end do
+  end subroutine lever_forces
 
   ! ------------------------------------------------------------------ internals
 
@@ -521,30 +557,17 @@ contains
     type(rates_type), intent(out) :: rt
     logical, intent(out) :: ok
     real(wp) :: K(3,3), h(3), v(3)
-    integer :: i, sg, r, c
+    integer :: i, sg
 
-    ! K += kn bn bn^T + kt bt bt^T (stick), kn v bn^T (slip), element by element: the tracer's
-    ! most frequent call, without the temporaries of whole-array products
-    K = 0
+    call mode_stiffness(geo, mode, K)
     h = 0
     do i = 1, 3
       select case (mode(i))
       case (CONTACT_STICK)
-        do c = 1, 3
-          do r = 1, 3
-            K(r,c) = K(r,c) + geo%kn(i)*(geo%bn(r,i)*geo%bn(c,i)) + &
-              & geo%kt(i)*(geo%bt(r,i)*geo%bt(c,i))
-          end do
-        end do
         h = h + geo%kn(i)*geo%cn(i)*geo%bn(:,i) + geo%kt(i)*geo%ct(i)*geo%bt(:,i)
       case (CONTACT_SLIP_POS, CONTACT_SLIP_NEG)
         sg = merge(1, -1, mode(i) == CONTACT_SLIP_POS)
         v = geo%bn(:,i) + sg*geo%mu*geo%bt(:,i)
-        do c = 1, 3
-          do r = 1, 3
-            K(r,c) = K(r,c) + geo%kn(i)*(v(r)*geo%bn(c,i))
-          end do
-        end do
         h = h + geo%kn(i)*geo%cn(i)*v
       end select
     end do
@@ -571,6 +594,36 @@ contains
     end do
     rt%dM = sum(geo%cn*rt%dN + geo%ct*rt%dT)
   end subroutine compute_rates
+
+  !> The damper's equilibrium matrix K in the contact states `mode` (K dq = h, compute_rates):
+  !> kn bn bn^T + kt bt bt^T a contact that sticks, kn v bn^T one that slips (v = bn +- mu bt),
+  !> element by element (the tracer's most frequent work, without whole-array temporaries).
+  pure subroutine mode_stiffness(geo, mode, K)
+    type(damper_geometry_type), intent(in) :: geo
+    integer, intent(in) :: mode(3)
+    real(wp), intent(out) :: K(3,3)
+    real(wp) :: v(3)
+    integer :: i, r, c
+    K = 0
+    do i = 1, 3
+      select case (mode(i))
+      case (CONTACT_STICK)
+        do c = 1, 3
+          do r = 1, 3
+            K(r,c) = K(r,c) + geo%kn(i)*(geo%bn(r,i)*geo%bn(c,i)) + &
+              & geo%kt(i)*(geo%bt(r,i)*geo%bt(c,i))
+          end do
+        end do
+      case (CONTACT_SLIP_POS, CONTACT_SLIP_NEG)
+        v = geo%bn(:,i) + merge(1, -1, mode(i) == CONTACT_SLIP_POS)*geo%mu*geo%bt(:,i)
+        do c = 1, 3
+          do r = 1, 3
+            K(r,c) = K(r,c) + geo%kn(i)*(v(r)*geo%bn(c,i))
+          end do
+        end do
+      end select
+    end do
+  end subroutine mode_stiffness
 
   !> Solves the 3x3 system A x = b by cofactors; ok is false if A is numerically singular.
   pure subroutine solve3(A, b, x, ok)

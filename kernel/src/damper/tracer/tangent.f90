@@ -14,12 +14,12 @@
 module udmap_damper_tracer_tangent
   use udmap_core_kinds, only: wp
   use udmap_damper_tracer_core, only: damper_geometry_type, mode_log_type, contact_forces, &
-    & code_modes, CONTACT_OPEN, CONTACT_STICK, CONTACT_SLIP_POS, CONTACT_SLIP_NEG
+    & lever_forces, mode_stiffness, code_modes, CONTACT_OPEN, CONTACT_STICK, &
+    & CONTACT_SLIP_POS, CONTACT_SLIP_NEG
   implicit none
   private
   public :: path_tangent_type, new_path_tangent, path_tangent_levers, &
-    & path_tangent_segment, path_tangent_actions, contact_levers, mode_stiffness, mode_rates, &
-    & invert3
+    & path_tangent_segment, path_tangent_actions, contact_levers, mode_rates, invert3
 
   !> The derivatives of the damper's state along a path, one column a parameter.
   type :: path_tangent_type
@@ -117,7 +117,7 @@ contains
         ! the sliders where the tracer sets them as a step starts: contacts that do not
         ! stick on their forces (the states before), then contacts that open or close unloaded
         if (any(slips) .or. any(changed)) then
-          call forces(m_old, tan%q_p(:, k), sp, tan%w_p(:, k), off, g, sv, N, T)
+          call lever_forces(geo, m_old, cn, ct, tan%q_p(:, k), sp, tan%w_p(:, k), g, sv, N, T, off)
           do c = 1, 3
             if (slips(c)) tan%w_p(c, k) = sv(c) + T(c)/geo%kt(c)
             if (changed(c)) tan%w_p(c, k) = sv(c)
@@ -129,7 +129,7 @@ contains
           step_p = -sp
         else
           ! the event function f of contact i towards its new state: f + step f' = 0
-          call forces(m_new, tan%q_p(:, k), sp, tan%w_p(:, k), off, g, sv, N, T)
+          call lever_forces(geo, m_new, cn, ct, tan%q_p(:, k), sp, tan%w_p(:, k), g, sv, N, T, off)
           dg_p = -dot_product(geo%bn(:, i), dq_p) + dn(i)
           ds_p = dot_product(geo%bt(:, i), dq_p) - dt(i)
           dN_p = geo%kn(i)*dg_p
@@ -165,28 +165,6 @@ contains
 
   contains
 
-    !> The contact forces of a derivative (contact_forces with the segment's levers).
-    pure subroutine forces(mode, q, s_vertex, w, offs, gv, svv, Nv, Tv)
-      integer, intent(in) :: mode(3)
-      real(wp), intent(in) :: q(3), s_vertex, w(3), offs(2, 3)
-      real(wp), intent(out) :: gv(3), svv(3), Nv(3), Tv(3)
-      integer :: c
-      do c = 1, 3
-        gv(c) = -dot_product(geo%bn(:, c), q) + s_vertex*cn(c) + offs(1, c)
-        svv(c) = dot_product(geo%bt(:, c), q) - s_vertex*ct(c) - offs(2, c)
-        select case (mode(c))
-        case (CONTACT_STICK)
-          Nv(c) = geo%kn(c)*gv(c)
-          Tv(c) = -geo%kt(c)*(svv(c) - w(c))
-        case (CONTACT_SLIP_POS, CONTACT_SLIP_NEG)
-          Nv(c) = geo%kn(c)*gv(c)
-          Tv(c) = merge(1, -1, mode(c) == CONTACT_SLIP_POS)*geo%mu*Nv(c)
-        case default
-          Nv(c) = 0
-          Tv(c) = 0
-        end select
-      end do
-    end subroutine forces
   end subroutine path_tangent_segment
 
   !> The derivatives A_p(:, side, k) of the damper's actions on its two platforms
@@ -225,34 +203,6 @@ contains
     end do
   end subroutine contact_levers
 
-  !> The damper's equilibrium matrix K in the contact states `mode` (compute_rates' K dq = h).
-  pure subroutine mode_stiffness(geo, mode, K)
-    type(damper_geometry_type), intent(in) :: geo
-    integer, intent(in) :: mode(3)
-    real(wp), intent(out) :: K(3, 3)
-    real(wp) :: v(3)
-    integer :: c, r, q
-    K = 0
-    do c = 1, 3
-      select case (mode(c))
-      case (CONTACT_STICK)
-        do q = 1, 3
-          do r = 1, 3
-            K(r, q) = K(r, q) + geo%kn(c)*geo%bn(r, c)*geo%bn(q, c) + &
-              & geo%kt(c)*geo%bt(r, c)*geo%bt(q, c)
-          end do
-        end do
-      case (CONTACT_SLIP_POS, CONTACT_SLIP_NEG)
-        v = geo%bn(:, c) + merge(1, -1, mode(c) == CONTACT_SLIP_POS)*geo%mu*geo%bt(:, c)
-        do q = 1, 3
-          do r = 1, 3
-            K(r, q) = K(r, q) + geo%kn(c)*v(r)*geo%bn(q, c)
-          end do
-        end do
-      end select
-    end do
-  end subroutine mode_stiffness
-
   !> The right-hand side h of the equilibrium's rates for the contacts' travel (cn, ct).
   pure function mode_rhs(geo, mode, cn, ct) result(h)
     type(damper_geometry_type), intent(in) :: geo
@@ -279,24 +229,10 @@ contains
     integer, intent(in) :: mode(3)
     real(wp), intent(in) :: Ki(3, 3), cn(3), ct(3)
     real(wp), intent(out) :: dN(3), dT(3)
-    real(wp) :: dq(3), dg, ds
-    integer :: c
-    dq = mat3(Ki, mode_rhs(geo, mode, cn, ct))
-    do c = 1, 3
-      dg = -dot_product(geo%bn(:, c), dq) + cn(c)
-      ds = dot_product(geo%bt(:, c), dq) - ct(c)
-      select case (mode(c))
-      case (CONTACT_STICK)
-        dN(c) = geo%kn(c)*dg
-        dT(c) = -geo%kt(c)*ds
-      case (CONTACT_SLIP_POS, CONTACT_SLIP_NEG)
-        dN(c) = geo%kn(c)*dg
-        dT(c) = merge(1, -1, mode(c) == CONTACT_SLIP_POS)*geo%mu*dN(c)
-      case default
-        dN(c) = 0
-        dT(c) = 0
-      end select
-    end do
+    real(wp) :: g(3), s(3)
+    ! the forces' law applied to the rates: linear and homogeneous
+    call lever_forces(geo, mode, cn, ct, mat3(Ki, mode_rhs(geo, mode, cn, ct)), 1.0_wp, &
+      & [0.0_wp, 0.0_wp, 0.0_wp], g, s, dN, dT)
   end subroutine mode_rates
 
   !> A x for a 3x3 A, without the temporaries of matmul on expressions.
