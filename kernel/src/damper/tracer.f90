@@ -16,6 +16,7 @@ module udmap_damper_tracer
   use udmap_core_error, only: error_type, fatal_error, UDMAP_EPHYSICS
   use udmap_damper_params, only: asymmetric_params_type, check_asymmetric_params
   use udmap_damper_tracer_core, only: damper_geometry_type, damper_state_type, validity_type, &
+    & equilibrium_cache_type, &
     & branch_record_type, mode_log_type, mode_code, &
     & contact_forces, trace_core, solve3, append_vertex
   implicit none
@@ -161,12 +162,15 @@ contains
   !> runs with a geometry whose lever arms are the contacts' travel along the segment and the
   !> load parameter going from 0 to 1; the start of the segment enters as the offsets.
   !> With `events`, the contact events inside the segment are returned too.
-  subroutine trace_path(geo, state, X_to, error, events)
+  subroutine trace_path(geo, state, X_to, error, events, cache)
     type(damper_geometry_type), intent(in) :: geo
     type(damper_state_type), intent(inout) :: state
     real(wp), intent(in) :: X_to(6)
     type(error_type), allocatable, intent(out) :: error
     type(path_events_type), intent(inout), optional :: events
+    !> The equilibrium matrices of geo's damper met so far (kept by the caller for a whole
+    !> trace: every segment shares them).
+    type(equilibrium_cache_type), intent(inout), optional :: cache
     type(damper_geometry_type) :: seg
     real(wp) :: dX(6), travel, dM
     integer :: j, entry
@@ -192,7 +196,7 @@ contains
         ! the segment is a vertex before s = 1, the states after it those of the next vertex
         entry = events%entry
         call trace_core(seg, state, 1, 1, 1.0_wp, 0.0_wp, .true., travel, dM, error, &
-          & modes=events%log)
+          & modes=events%log, cache=cache)
         if (allocated(error)) return
         associate (lg => events%log)
           ! states that change as the segment starts (the other side of an event that ended
@@ -206,7 +210,8 @@ contains
           end do
         end associate
       else
-        call trace_core(seg, state, 1, 1, 1.0_wp, 0.0_wp, .true., travel, dM, error)
+        call trace_core(seg, state, 1, 1, 1.0_wp, 0.0_wp, .true., travel, dM, error, &
+          & cache=cache)
         if (allocated(error)) return
       end if
     end if

@@ -25,7 +25,7 @@ module udmap_contact_element_wave
   use udmap_core_kinds, only: wp, pi
   use udmap_core_error, only: error_type, fatal_error, UDMAP_EINPUT
   use udmap_damper_tracer_core, only: damper_geometry_type, damper_state_type, CONTACT_OPEN, &
-    & mode_stiffness, &
+    & mode_stiffness, equilibrium_cache_type, &
     & CONTACT_SLIP_POS, CONTACT_SLIP_NEG, compute_rates, rates_type, code_modes
   use udmap_damper_tracer, only: virgin_state, ramp_CF, trace_path, platform_actions, same_forces, &
     & path_events_type, along
@@ -104,6 +104,7 @@ contains
     type(damper_state_type) :: st, start
     type(path_events_type) :: ev
     type(path_tangent_type) :: tan
+    type(equilibrium_cache_type) :: eqc
     real(wp), allocatable :: lvn(:, :, :), lvt(:, :, :)
     real(wp), allocatable :: X(:, :), AL(:, :), AR(:, :), Xp(:, :, :), ALp(:, :), ARp(:, :)
     complex(wp), allocatable :: e(:, :), CL(:, :), CR(:, :), root(:), CLp(:, :, :), CRp(:, :, :)
@@ -187,12 +188,12 @@ contains
     F_scale = max(CF, 1e-300_wp)
     if (tangent) then
       ! the ramp from rest to the first instant: its start does not move with the parameters
-      call trace_path(geo, st, X(:, 0), error, ev)
+      call trace_path(geo, st, X(:, 0), error, ev, eqc)
       if (allocated(error)) return
       call path_tangent_segment(geo, tan, [(0.0_wp, j = 1, 6)], X(:, 0), lvn(:, :, ns), &
         & lvt(:, :, ns), lvn(:, :, 0), lvt(:, :, 0), ev%entry, ev%log)
     else
-      call trace_path(geo, st, X(:, 0), error)
+      call trace_path(geo, st, X(:, 0), error, cache=eqc)
       if (allocated(error)) return
     end if
     closed = .false.
@@ -209,7 +210,7 @@ contains
         CRp = 0
       end if
       do j = 1, ns
-        call trace_path(geo, st, X(:, mod(j, ns)), error, ev)
+        call trace_path(geo, st, X(:, mod(j, ns)), error, ev, eqc)
         if (allocated(error)) return
         if (tangent) then
           call path_tangent_segment(geo, tan, X(:, j-1), X(:, mod(j, ns)), lvn(:, :, j-1), &

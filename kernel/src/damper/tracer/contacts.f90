@@ -180,16 +180,17 @@ contains
 
   !> Rates of q, gaps, forces, sliders and moment per unit travel for the contact states
   !> `mode` under load rates (dgam, dcf); ok is false for a singular equilibrium.
-  pure subroutine compute_rates(geo, mode, dgam, dcf, rt, ok)
+  pure subroutine compute_rates(geo, mode, dgam, dcf, rt, ok, cache)
     type(damper_geometry_type), intent(in) :: geo
     integer, intent(in) :: mode(3)
     real(wp), intent(in) :: dgam, dcf
     type(rates_type), intent(out) :: rt
     logical, intent(out) :: ok
+    !> The equilibrium matrices' cofactors of geo's damper met so far (the same arithmetic).
+    type(equilibrium_cache_type), intent(inout), optional :: cache
     real(wp) :: K(3,3), h(3), v(3)
-    integer :: i, sg
+    integer :: i, sg, code
 
-    call mode_stiffness(geo, mode, K)
     h = 0
     do i = 1, 3
       select case (mode(i))
@@ -201,7 +202,21 @@ contains
         h = h + geo%kn(i)*geo%cn(i)*v
       end select
     end do
-    call solve3(K, dgam*h + [0.0_wp, dcf, 0.0_wp], rt%dq, ok)
+    if (present(cache)) then
+      code = mode_code(mode)
+      if (.not. cache%known(code)) then
+        call mode_stiffness(geo, mode, K)
+        call cofactors3(K, cache%C(:, :, code), cache%det(code), cache%regular(code))
+        cache%known(code) = .true.
+      end if
+      ok = cache%regular(code)
+      rt%dq = 0
+      if (ok) rt%dq = adjugate_solve(cache%C(:, :, code), cache%det(code), &
+        & dgam*h + [0.0_wp, dcf, 0.0_wp])
+    else
+      call mode_stiffness(geo, mode, K)
+      call solve3(K, dgam*h + [0.0_wp, dcf, 0.0_wp], rt%dq, ok)
+    end if
     if (.not. ok) return
     do i = 1, 3
       rt%dg(i) = -dot_product(geo%bn(:,i), rt%dq) + dgam*geo%cn(i)
@@ -260,7 +275,18 @@ contains
     real(wp), intent(in) :: A(3,3), b(3)
     real(wp), intent(out) :: x(3)
     logical, intent(out) :: ok
-    real(wp) :: C(3,3), det, scale
+    real(wp) :: C(3,3), det
+    call cofactors3(A, C, det, ok)
+    x = 0
+    if (ok) x = adjugate_solve(C, det, b)
+  end subroutine solve3
+
+  !> The cofactors C and the determinant of A; ok is false if A is numerically singular.
+  pure subroutine cofactors3(A, C, det, ok)
+    real(wp), intent(in) :: A(3,3)
+    real(wp), intent(out) :: C(3,3), det
+    logical, intent(out) :: ok
+    real(wp) :: scale
     C(1,1) = A(2,2)*A(3,3) - A(2,3)*A(3,2)
     C(1,2) = A(2,3)*A(3,1) - A(2,1)*A(3,3)
     C(1,3) = A(2,1)*A(3,2) - A(2,2)*A(3,1)
@@ -273,13 +299,16 @@ contains
     det = A(1,1)*C(1,1) + A(1,2)*C(1,2) + A(1,3)*C(1,3)
     scale = norm2(A(:,1))*norm2(A(:,2))*norm2(A(:,3))
     ok = abs(det) > 1e-12_wp*scale
-    x = 0
-    if (.not. ok) return
-    ! x = adj(A) b / det, adj(A) = transpose(C)
+  end subroutine cofactors3
+
+  !> x = adj(A) b / det, adj(A) = transpose(C), C the cofactors of A.
+  pure function adjugate_solve(C, det, b) result(x)
+    real(wp), intent(in) :: C(3,3), det, b(3)
+    real(wp) :: x(3)
     x(1) = (C(1,1)*b(1) + C(2,1)*b(2) + C(3,1)*b(3))/det
     x(2) = (C(1,2)*b(1) + C(2,2)*b(2) + C(3,2)*b(3))/det
     x(3) = (C(1,3)*b(1) + C(2,3)*b(2) + C(3,3)*b(3))/det
-  end subroutine solve3
+  end function adjugate_solve
 
   !> The three contacts' states as one integer (base 4), and back.
   pure integer function mode_code(mode)

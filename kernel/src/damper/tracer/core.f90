@@ -35,7 +35,7 @@ contains
   !> at `target`, otherwise after the last event (travel = distance to it, dM = moment rate of
   !> the final states per unit travel).
   subroutine trace_core(geo, st, var, dir, target, target_p, has_target, travel, dM, error, &
-      & rec, val, frozen, max_travel, modes)
+      & rec, val, frozen, max_travel, modes, cache)
     type(damper_geometry_type), intent(in) :: geo
     type(damper_state_type), intent(inout) :: st
     integer, intent(in) :: var, dir
@@ -48,6 +48,8 @@ contains
     logical, intent(out), optional :: frozen
     real(wp), intent(in), optional :: max_travel
     type(mode_log_type), intent(inout), optional :: modes
+    !> The equilibrium matrices of geo's damper met so far (see compute_rates).
+    type(equilibrium_cache_type), intent(inout), optional :: cache
     type(rates_type) :: rt
     integer :: pred(3), nev, i, nc, ic, best, ev_contact(10), ev_state(10)
     real(wp) :: dgam, dcf, tc(10), tcp(10), rate_of(10), g(3), s(3), N(3), T(3), gp(3), sp(3), Np(3), Tp(3)
@@ -80,7 +82,7 @@ contains
         return
       end if
       call snap_sliders(geo, st, with_p)
-      call resolve_mode(geo, st, dgam, dcf, pred, rt, error)
+      call resolve_mode(geo, st, dgam, dcf, pred, rt, error, cache)
       if (allocated(error)) return
 
       call contact_forces(geo, st%mode, st%q, st%gamma, st%w, g, s, N, T, st%off)
@@ -268,13 +270,14 @@ contains
   !> their stick cone or clearly open keep their state; contacts on the cone (stick or slip)
   !> or at zero gap (open, stick, slip+-) take the combination whose rates are consistent.
   !> `pred` is tried first.
-  subroutine resolve_mode(geo, st, dgam, dcf, pred, rt, error)
+  subroutine resolve_mode(geo, st, dgam, dcf, pred, rt, error, cache)
     type(damper_geometry_type), intent(in) :: geo
     type(damper_state_type), intent(inout) :: st
     real(wp), intent(in) :: dgam, dcf
     integer, intent(in) :: pred(3)
     type(rates_type), intent(out) :: rt
     type(error_type), allocatable, intent(out) :: error
+    type(equilibrium_cache_type), intent(inout), optional :: cache
     real(wp) :: g(3), s(3), N(3), T(3), tolF, tolR
     integer :: ncand(3), cand(4,3), cls(3), sig0(3), i, i1, i2, i3, trial(3), old(3)
     logical :: ok, any_regular
@@ -314,7 +317,7 @@ contains
       do i2 = 1, ncand(2)
         do i3 = 1, ncand(3)
           trial = [cand(i1,1), cand(i2,2), cand(i3,3)]
-          call compute_rates(geo, trial, dgam, dcf, rt, ok)
+          call compute_rates(geo, trial, dgam, dcf, rt, ok, cache)
           if (.not. ok) cycle
           any_regular = .true.
           if (consistent()) then
