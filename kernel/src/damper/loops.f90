@@ -14,7 +14,8 @@ module udmap_damper_loops
   use udmap_core_kinds, only: wp, pi
   use udmap_core_error, only: error_type, fatal_error, UDMAP_EPHYSICS
   use udmap_damper_tracer_core, only: damper_geometry_type, damper_state_type, &
-    & branch_record_type, validity_type, contact_forces, CONTACT_OPEN, CONTACT_STICK
+    & branch_record_type, validity_type, equilibrium_cache_type, contact_forces, CONTACT_OPEN, &
+    & CONTACT_STICK
   use udmap_damper_tracer, only: virgin_state, ramp_CF, trace_gamma, trace_to_plateau, &
     & record_start, reset_record, same_forces
   implicit none
@@ -146,6 +147,8 @@ contains
     type(error_type), allocatable, intent(out) :: error
     type(validity_type), intent(inout), optional :: val
     type(damper_state_type) :: st, start
+    !> The equilibrium matrices met along the loop's cycles (the same arithmetic, kept).
+    type(equilibrium_cache_type) :: eqc
     real(wp) :: x(12), dx(12), dx_prev(12), rho, room, lambda
     integer :: j, c, n_geo, m
     character(len=40) :: buf, bm, bl, br
@@ -156,7 +159,7 @@ contains
       j = j - 1
     end do
     st = ramp%states(j)
-    call trace_gamma(geo, st, p, 1.0_wp, error, val=val)
+    call trace_gamma(geo, st, p, 1.0_wp, error, val=val, cache=eqc)
     if (allocated(error)) return
     n_geo = 0
     dx_prev = 0
@@ -165,11 +168,11 @@ contains
       start = st
       call reset_record(work%desc)
       call record_start(geo, st, work%desc)
-      call trace_gamma(geo, st, -p, -1.0_wp, error, work%desc, val)
+      call trace_gamma(geo, st, -p, -1.0_wp, error, work%desc, val, eqc)
       if (allocated(error)) return
       call reset_record(work%asc)
       call record_start(geo, st, work%asc)
-      call trace_gamma(geo, st, p, 1.0_wp, error, work%asc, val)
+      call trace_gamma(geo, st, p, 1.0_wp, error, work%asc, val, eqc)
       if (allocated(error)) return
       if (same_forces(geo, start, st, ramp%CF)) exit
       ! Shakedown: with the event sequence of the cycle fixed, one cycle is an affine map of

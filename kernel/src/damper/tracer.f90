@@ -274,17 +274,19 @@ contains
 
   !> Traces gamma to `target` (p-derivative `target_p`), appending the vertices to `rec` and
   !> narrowing `val` to the range of p over which the event sequence holds.
-  subroutine trace_gamma(geo, state, target, target_p, error, rec, val)
+  subroutine trace_gamma(geo, state, target, target_p, error, rec, val, cache)
     type(damper_geometry_type), intent(in) :: geo
     type(damper_state_type), intent(inout) :: state
     real(wp), intent(in) :: target, target_p
     type(error_type), allocatable, intent(out) :: error
     type(branch_record_type), intent(inout), optional :: rec
     type(validity_type), intent(inout), optional :: val
+    !> The equilibrium matrices of geo's damper met so far (trace_core).
+    type(equilibrium_cache_type), intent(inout), optional :: cache
     real(wp) :: travel, dM
     if (target == state%gamma) return
     call trace_core(geo, state, 1, merge(1, -1, target > state%gamma), target, target_p, &
-      & .true., travel, dM, error, rec, val)
+      & .true., travel, dM, error, rec, val, cache=cache)
   end subroutine trace_gamma
 
   !> Traces gamma in `direction` (+1, -1) until no contact changes state any more (a plateau);
