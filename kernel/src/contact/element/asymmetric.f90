@@ -9,7 +9,7 @@ module udmap_contact_element_asymmetric
   use udmap_core_error, only: error_type
   use udmap_damper_params, only: asymmetric_params_type
   use udmap_damper_tracer_core, only: damper_geometry_type, damper_state_type, &
-    & branch_record_type, contact_forces, CONTACT_OPEN
+    & branch_record_type, equilibrium_cache_type, contact_forces, CONTACT_OPEN
   use udmap_damper_tracer, only: new_damper_geometry, virgin_state, ramp_CF, trace_gamma, &
     & restoring_moment, reset_record, record_start
   use udmap_contact_element, only: hysteretic_element_type, event_list_type
@@ -29,6 +29,9 @@ module udmap_contact_element_asymmetric
     real(wp) :: F_scale = 1.0_wp
     !> Vertices of the last traced path (kept to avoid allocations).
     type(branch_record_type) :: rec
+    !> The equilibrium matrices of the damper's contact states met so far (its geometry is
+    !> fixed: the same arithmetic, kept).
+    type(equilibrium_cache_type) :: eqc
   contains
     procedure :: load => contact_load
     procedure :: advance => contact_advance
@@ -90,7 +93,7 @@ contains
     end if
     call reset_record(self%rec)
     call record_start(self%geo, self%state, self%rec)
-    call trace_gamma(self%geo, self%state, gamma_target, 0.0_wp, error, self%rec)
+    call trace_gamma(self%geo, self%state, gamma_target, 0.0_wp, error, self%rec, cache=self%eqc)
     if (allocated(error)) then
       M_r = 0.0_wp
       return
