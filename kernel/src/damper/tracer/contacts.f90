@@ -6,7 +6,7 @@ module udmap_damper_tracer_contacts
   use udmap_core_kinds, only: wp
   implicit none
   private
-  public :: contact_forces, lever_forces, compute_rates, mode_stiffness, solve3, mode_code, &
+  public :: contact_forces, compute_rates, mode_stiffness, solve3, cofactors3, mode_code, &
     & code_modes
 
   !> Contact states.
@@ -119,7 +119,6 @@ contains
     !> The state's platform offsets (damper_state_type%off); absent: none.
     real(wp), intent(in), optional :: off(2,3)
     integer :: i
-    ! lever_forces with the geometry's levers, written out: the tracer's most frequent call
     do i = 1, 3
       g(i) = -(geo%bn(1,i)*q(1) + geo%bn(2,i)*q(2) + geo%bn(3,i)*q(3)) + gamma*geo%cn(i)
       s(i) = geo%bt(1,i)*q(1) + geo%bt(2,i)*q(2) + geo%bt(3,i)*q(3) - gamma*geo%ct(i)
@@ -143,40 +142,6 @@ contains
       end select
     end do
   end subroutine contact_forces
-
-  !> contact_forces with the lever arms (cn, ct) given: a segment's, or a derivative's
-  !> (udmap_damper_tracer_tangent); with q the rates of the damper's DOFs, gamma = 1 and w = 0,
-  !> the rates of the forces.
-  pure subroutine lever_forces(geo, mode, cn, ct, q, gamma, w, g, s, N, T, off)
-    type(damper_geometry_type), intent(in) :: geo
-    integer, intent(in) :: mode(3)
-    real(wp), intent(in) :: cn(3), ct(3), q(3), gamma, w(3)
-    real(wp), intent(out) :: g(3), s(3), N(3), T(3)
-    real(wp), intent(in), optional :: off(2,3)
-    integer :: i
-    do i = 1, 3
-      g(i) = -(geo%bn(1,i)*q(1) + geo%bn(2,i)*q(2) + geo%bn(3,i)*q(3)) + gamma*cn(i)
-      s(i) = geo%bt(1,i)*q(1) + geo%bt(2,i)*q(2) + geo%bt(3,i)*q(3) - gamma*ct(i)
-      if (present(off)) then
-        g(i) = g(i) + off(1,i)
-        s(i) = s(i) - off(2,i)
-      end if
-      select case (mode(i))
-      case (CONTACT_STICK)
-        N(i) = geo%kn(i)*g(i)
-        T(i) = -geo%kt(i)*(s(i) - w(i))
-      case (CONTACT_SLIP_POS)
-        N(i) = geo%kn(i)*g(i)
-        T(i) = geo%mu*N(i)
-      case (CONTACT_SLIP_NEG)
-        N(i) = geo%kn(i)*g(i)
-        T(i) = -geo%mu*N(i)
-      case default
-        N(i) = 0
-        T(i) = 0
-      end select
-    end do
-  end subroutine lever_forces
 
   !> Rates of q, gaps, forces, sliders and moment per unit travel for the contact states
   !> `mode` under load rates (dgam, dcf); ok is false for a singular equilibrium.

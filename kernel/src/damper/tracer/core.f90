@@ -8,13 +8,13 @@ module udmap_damper_tracer_core
   use udmap_core_error, only: error_type, fatal_error, UDMAP_EPHYSICS, UDMAP_ENUMERIC
   use udmap_damper_tracer_contacts, only: damper_geometry_type, damper_state_type, &
     & validity_type, branch_record_type, mode_log_type, rates_type, equilibrium_cache_type, &
-    & contact_forces, lever_forces, compute_rates, mode_stiffness, solve3, mode_code, &
+    & contact_forces, compute_rates, mode_stiffness, solve3, cofactors3, mode_code, &
     & code_modes, CONTACT_OPEN, CONTACT_STICK, CONTACT_SLIP_POS, CONTACT_SLIP_NEG
   implicit none
   private
   public :: trace_core, append_vertex
   public :: damper_geometry_type, damper_state_type, validity_type, branch_record_type, &
-    & mode_log_type, rates_type, equilibrium_cache_type, contact_forces, lever_forces, &
+    & mode_log_type, rates_type, equilibrium_cache_type, contact_forces, cofactors3, &
     & compute_rates, mode_stiffness, solve3, mode_code, code_modes, CONTACT_OPEN, &
     & CONTACT_STICK, CONTACT_SLIP_POS, CONTACT_SLIP_NEG
 

@@ -14,7 +14,7 @@
 module udmap_damper_tracer_tangent
   use udmap_core_kinds, only: wp
   use udmap_damper_tracer_core, only: damper_geometry_type, mode_log_type, contact_forces, &
-    & lever_forces, mode_stiffness, code_modes, CONTACT_OPEN, CONTACT_STICK, &
+    & mode_stiffness, cofactors3, code_modes, CONTACT_OPEN, CONTACT_STICK, &
     & CONTACT_SLIP_POS, CONTACT_SLIP_NEG
   implicit none
   private
@@ -71,6 +71,7 @@ contains
     real(wp), intent(in) :: ls_n(3, tan%np), ls_t(3, tan%np), le_n(3, tan%np), le_t(3, tan%np)
     integer, intent(in) :: entry
     type(mode_log_type), intent(in) :: lg
+    type(damper_geometry_type) :: seg
     real(wp) :: cn(3), ct(3), off(2, 3), dn(3), dt(3)
     real(wp) :: Ks(3, 3), Ki(3, 3), dq(3), dq_p(3), dg_p, dN_p, dT_p, ds_p
     real(wp) :: s0, step, step_p, fp, dfp, g(3), sv(3), N(3), T(3), sp
@@ -84,6 +85,10 @@ contains
       call move_alloc(tmp, tan%s_p)
     end if
     call contact_levers(geo, X_to - X_from, cn, ct)
+    ! the segment's geometry (its levers), as trace_path traces it
+    seg = geo
+    seg%cn = cn
+    seg%ct = ct
     m_old = code_modes(entry)
     s0 = 0
     do j = 1, lg%n
@@ -117,7 +122,7 @@ contains
         ! the sliders where the tracer sets them as a step starts: contacts that do not
         ! stick on their forces (the states before), then contacts that open or close unloaded
         if (any(slips) .or. any(changed)) then
-          call lever_forces(geo, m_old, cn, ct, tan%q_p(:, k), sp, tan%w_p(:, k), g, sv, N, T, off)
+          call contact_forces(seg, m_old, tan%q_p(:, k), sp, tan%w_p(:, k), g, sv, N, T, off)
           do c = 1, 3
             if (slips(c)) tan%w_p(c, k) = sv(c) + T(c)/geo%kt(c)
             if (changed(c)) tan%w_p(c, k) = sv(c)
@@ -129,7 +134,7 @@ contains
           step_p = -sp
         else
           ! the event function f of contact i towards its new state: f + step f' = 0
-          call lever_forces(geo, m_new, cn, ct, tan%q_p(:, k), sp, tan%w_p(:, k), g, sv, N, T, off)
+          call contact_forces(seg, m_new, tan%q_p(:, k), sp, tan%w_p(:, k), g, sv, N, T, off)
           dg_p = -dot_product(geo%bn(:, i), dq_p) + dn(i)
           ds_p = dot_product(geo%bt(:, i), dq_p) - dt(i)
           dN_p = geo%kn(i)*dg_p
@@ -229,9 +234,13 @@ contains
     integer, intent(in) :: mode(3)
     real(wp), intent(in) :: Ki(3, 3), cn(3), ct(3)
     real(wp), intent(out) :: dN(3), dT(3)
+    type(damper_geometry_type) :: arc
     real(wp) :: g(3), s(3)
-    ! the forces' law applied to the rates: linear and homogeneous
-    call lever_forces(geo, mode, cn, ct, mat3(Ki, mode_rhs(geo, mode, cn, ct)), 1.0_wp, &
+    ! the forces' law applied to the rates (linear and homogeneous), with the levers (cn, ct)
+    arc = geo
+    arc%cn = cn
+    arc%ct = ct
+    call contact_forces(arc, mode, mat3(Ki, mode_rhs(geo, mode, cn, ct)), 1.0_wp, &
       & [0.0_wp, 0.0_wp, 0.0_wp], g, s, dN, dT)
   end subroutine mode_rates
 
@@ -247,18 +256,9 @@ contains
     real(wp), intent(in) :: A(3, 3)
     real(wp), intent(out) :: Ai(3, 3)
     logical, intent(out) :: ok
-    real(wp) :: det
-    Ai(1, 1) = A(2, 2)*A(3, 3) - A(2, 3)*A(3, 2)
-    Ai(2, 1) = A(2, 3)*A(3, 1) - A(2, 1)*A(3, 3)
-    Ai(3, 1) = A(2, 1)*A(3, 2) - A(2, 2)*A(3, 1)
-    Ai(1, 2) = A(1, 3)*A(3, 2) - A(1, 2)*A(3, 3)
-    Ai(2, 2) = A(1, 1)*A(3, 3) - A(1, 3)*A(3, 1)
-    Ai(3, 2) = A(1, 2)*A(3, 1) - A(1, 1)*A(3, 2)
-    Ai(1, 3) = A(1, 2)*A(2, 3) - A(1, 3)*A(2, 2)
-    Ai(2, 3) = A(1, 3)*A(2, 1) - A(1, 1)*A(2, 3)
-    Ai(3, 3) = A(1, 1)*A(2, 2) - A(1, 2)*A(2, 1)
-    det = A(1, 1)*Ai(1, 1) + A(1, 2)*Ai(2, 1) + A(1, 3)*Ai(3, 1)
-    ok = abs(det) > 1e-12_wp*norm2(A(:, 1))*norm2(A(:, 2))*norm2(A(:, 3))
-    if (ok) Ai = Ai/det
+    real(wp) :: C(3, 3), det
+    call cofactors3(A, C, det, ok)
+    Ai = 0
+    if (ok) Ai = transpose(C)/det
   end subroutine invert3
 end module udmap_damper_tracer_tangent
