@@ -200,6 +200,8 @@ contains
     !> The last two points (predict, remember): ln F_E, ln ratio, ln shift, L's harmonics
     !> to gamma.
     integer :: n_hist
+    !> A force of this rung kept from the rung below (its own did not solve).
+    logical :: skipped
     real(wp) :: h_lnF(2), h_lnr(2), h_lns(2), h_P0(3, 2)
     complex(wp), allocatable :: h_P(:, :, :)
 
@@ -222,6 +224,7 @@ contains
       ratio = 1
       shift = 1
       n_hist = 0
+      skipped = .false.
       if (allocated(points)) call move_alloc(points, guess)
       allocate(points(size(F_E)))
       omega_g = 0
@@ -242,6 +245,16 @@ contains
         if (guess(i)%f_res > 0) omega_g = 2*pi*guess(i)%f_res*shift
         call peak_of_force(F_E(i), max(guess(i)%gamma_P*ratio, tiny(1.0_wp)), omega_g, &
           & points(i), error)
+        if (allocated(error) .and. ih > 1 .and. ih < nH) then
+          ! a rung on the way up (auto) that does not solve at this force (e.g. two peaks
+          ! folding into each other at that H): the force goes on from the rung below, and the
+          ! harmonics are raised again whatever the others' change
+          deallocate(error)
+          points(i) = guess(i)
+          skipped = .true.
+          n_hist = 0
+          cycle
+        end if
         if (allocated(error)) return
         omega_g = 2*pi*points(i)%f_res
         if (guess(i)%gamma_P > 0 .and. guess(i)%f_res > 0) then
@@ -250,7 +263,7 @@ contains
         end if
         call remember(F_E(i), points(i))
       end do
-      if (ih == 1) cycle
+      if (ih == 1 .or. skipped) cycle
       change = 0
       do i = 1, size(F_E)
         if (points(i)%unbounded) cycle
