@@ -157,6 +157,22 @@ int main(void) {
     check(status == UDMAP_OK && h1[0].gamma_P == b1[0].gamma_P &&
               h1[1].f_res == b1[1].f_res && h1[1].sigma_a == b1[1].sigma_a,
           "back to H = 1: the same numbers");
+    /* the interblade phase of the next calls: a Jenkins damper does not feel it (PHYSICS.md
+     * 2.6), so the same numbers; a phase that is not a finite angle is refused */
+    {
+      char msg[512];
+      status = udmap_model_set_ibpa(err, model, NAN);
+      udmap_get_error(err, msg, sizeof msg);
+      check(status == UDMAP_EINPUT && strstr(msg, "ibpa_deg") != NULL,
+            "set_ibpa: NaN refused, naming ibpa_deg");
+    }
+    status = udmap_model_set_ibpa(err, model, 90.0);
+    check(status == UDMAP_OK, "set_ibpa 90 deg");
+    status = udmap_model_backbone(err, model, 2, forces, h1);
+    check(status == UDMAP_OK && h1[0].gamma_P == b1[0].gamma_P && h1[1].f_res == b1[1].f_res,
+          "a Jenkins damper at 90 deg: the same numbers");
+    status = udmap_model_set_ibpa(err, model, 0.0);
+    check(status == UDMAP_OK, "set_ibpa back to 0");
   }
 
   /* udmap_model_classify on blade A's backbone points: the kernel's regime and hcf_ok of
