@@ -67,7 +67,8 @@ GOAL = 8000.0
 _KERNEL_CALLS = [(_capi, "new_damper_asymmetric"), (_capi, "damper_get_info"),
                  (_capi, "delete_damper"), (_capi, "damper_set_CF"), (_capi, "model_backbone"),
                  (_capi, "model_limit_force"), (_capi, "model_set_damper"),
-                 (_capi, "new_model"), (_capi, "delete_model"), (_capi, "model_designs")]
+                 (_capi, "new_model"), (_capi, "delete_model"), (_capi, "model_designs"),
+                 (_capi, "model_designs_warnings")]
 
 
 def _cpu_seconds() -> float:
