@@ -99,6 +99,7 @@ contains
       if (lg%code(j) /= tan%k_code) then
         call mode_stiffness(geo, m_new, Ks)
         call invert3(Ks, tan%Ki, ok)
+        ! (regular: the tracer took this step in these states, which resolve_mode requires)
         if (.not. ok) then
           tan%k_code = -1
           return
