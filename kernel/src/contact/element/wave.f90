@@ -140,8 +140,8 @@ contains
       root(j) = exp(cmplx(0.0_wp, -2*pi*j/ns, wp))
     end do
     do j = 0, ns - 1
-      X(1:3, j) = sampled(Pr, P0, j)
-      X(4:6, j) = sampled(Pphi, P0, j)
+      X(1:3, j) = sampled(Pr, P0, j, 1, H)
+      X(4:6, j) = sampled(Pphi, P0, j, 1, H)
     end do
     tangent = present(dP0) .and. present(dP) .and. present(dA0) .and. present(dA)
     np = 0
@@ -311,8 +311,8 @@ contains
       do kk = 2, H
         z(kk) = z(kk - 1)*z(1)
       end do
-      V(1:3) = motion_rate(Pr, z)
-      V(4:6) = motion_rate(Pphi, z)
+      V(1:3) = motion_rate(Pr, z, 1, H)
+      V(4:6) = motion_rate(Pphi, z, 1, H)
       call slope_jump(V, m_before, m_after, dA, ok)
       if (.not. ok) return
       c = 0.5_wp*(2*pi/ns)**2*(delta*delta - delta + 1/6.0_wp)
@@ -380,19 +380,15 @@ contains
       end do
     end subroutine slope_jump
 
-    !> The platform's velocity for the harmonics Q at the time t with z(m) = e^{-i m t} (only
-    !> harmonics m1..m2 when given).
+    !> The platform's velocity for the harmonics Q at the time t with z(m) = e^{-i m t}, from
+    !> harmonics m1..m2 (1..H; a derivative's: those it moves).
     pure function motion_rate(Q, z, m1, m2) result(v_t)
       complex(wp), intent(in) :: Q(:, :), z(0:)
-      integer, intent(in), optional :: m1, m2
+      integer, intent(in) :: m1, m2
       real(wp) :: v_t(3)
-      integer :: m, lo, hi
-      lo = 1
-      hi = H
-      if (present(m1)) lo = m1
-      if (present(m2)) hi = m2
+      integer :: m
       v_t = 0
-      do m = lo, hi
+      do m = m1, m2
         v_t = v_t + real(cmplx(0.0_wp, real(m, wp), wp)*Q(:, m)*conjg(z(m)), wp)
       end do
     end function motion_rate
@@ -409,20 +405,15 @@ contains
     end function motion_accel
 
     !> The platform's coordinates for the static part Q0 and the harmonics Q at the instant
-    !> tau_j = 2 pi j/ns (only harmonics m1..m2 when given: those a derivative moves).
+    !> tau_j = 2 pi j/ns, from harmonics m1..m2 (1..H; a derivative's: those it moves).
     pure function sampled(Q, Q0, jj, m1, m2) result(x_t)
       complex(wp), intent(in) :: Q(:, :)
       real(wp), intent(in) :: Q0(3)
-      integer, intent(in) :: jj
-      integer, intent(in), optional :: m1, m2
+      integer, intent(in) :: jj, m1, m2
       real(wp) :: x_t(3)
-      integer :: m, lo, hi
-      lo = 1
-      hi = H
-      if (present(m1)) lo = m1
-      if (present(m2)) hi = m2
+      integer :: m
       x_t = Q0
-      do m = lo, hi
+      do m = m1, m2
         x_t = x_t + real(Q(:, m)*conjg(root(mod(m*jj, ns))), wp)
       end do
     end function sampled
