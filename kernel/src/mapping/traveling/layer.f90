@@ -32,7 +32,7 @@ module udmap_mapping_traveling_layer
     & wave_layer_slope, wave_balance_omega
 
   !> Newton tolerance (to the layer's scale) and cap; the tolerance of a rough solve.
-  real(wp), parameter :: newton_tol = 1.0e-13_wp, rough_tol = 1.0e-4_wp
+  real(wp), parameter :: newton_tol = 1.0e-13_wp, rough_tol = 1.0e-2_wp
   !> The residual's rounding floor: at tiny amplitudes the action's harmonics are the small
   !> difference of samples of the preloaded contact forces, noisy to some 1e-12 of the layer's
   !> scale. A Newton step below this that no longer descends ends the solve.
