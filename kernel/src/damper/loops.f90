@@ -69,6 +69,9 @@ module udmap_damper_loops
   !> Storage reused by successive loop tracings.
   type :: loop_workspace_type
     type(branch_record_type) :: desc, asc
+    !> The equilibrium matrices met by the loops of one damper geometry (the same arithmetic
+    !> whichever loop meets a contact state first; kept across the loops of a table).
+    type(equilibrium_cache_type) :: eqc
   end type loop_workspace_type
 
   !> The base cycle (PHYSICS.md 2.3): the branches from a reversal on one plateau until the
@@ -137,7 +140,7 @@ contains
   !> The steady loop at amplitude p > 0 with the history of PHYSICS.md 2.1: the virgin ramp up
   !> to +p, then gamma = p cos(tau) cycle after cycle until the contact forces at tau = 0
   !> repeat; the last cycle is the loop. `val` (if present, val%p0 = p) returns the exact
-  !> range of amplitudes with the same event topology.
+  !> range of amplitudes with the same event topology. `work` serves one geometry geo.
   subroutine steady_loop(geo, ramp, p, loop, work, error, val)
     type(damper_geometry_type), intent(in) :: geo
     type(ramp_type), intent(in) :: ramp
@@ -147,8 +150,6 @@ contains
     type(error_type), allocatable, intent(out) :: error
     type(validity_type), intent(inout), optional :: val
     type(damper_state_type) :: st, start
-    !> The equilibrium matrices met along the loop's cycles (the same arithmetic, kept).
-    type(equilibrium_cache_type) :: eqc
     real(wp) :: x(12), dx(12), dx_prev(12), rho, room, lambda
     integer :: j, c, n_geo, m
     character(len=40) :: buf, bm, bl, br
@@ -159,7 +160,7 @@ contains
       j = j - 1
     end do
     st = ramp%states(j)
-    call trace_gamma(geo, st, p, 1.0_wp, error, val=val, cache=eqc)
+    call trace_gamma(geo, st, p, 1.0_wp, error, val=val, cache=work%eqc)
     if (allocated(error)) return
     n_geo = 0
     dx_prev = 0
@@ -168,11 +169,11 @@ contains
       start = st
       call reset_record(work%desc)
       call record_start(geo, st, work%desc)
-      call trace_gamma(geo, st, -p, -1.0_wp, error, work%desc, val, eqc)
+      call trace_gamma(geo, st, -p, -1.0_wp, error, work%desc, val, work%eqc)
       if (allocated(error)) return
       call reset_record(work%asc)
       call record_start(geo, st, work%asc)
-      call trace_gamma(geo, st, p, 1.0_wp, error, work%asc, val, eqc)
+      call trace_gamma(geo, st, p, 1.0_wp, error, work%asc, val, work%eqc)
       if (allocated(error)) return
       if (same_forces(geo, start, st, ramp%CF)) exit
       ! Shakedown: with the event sequence of the cycle fixed, one cycle is an affine map of

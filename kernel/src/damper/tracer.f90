@@ -330,7 +330,8 @@ contains
     type(damper_geometry_type), intent(in) :: geo
     type(damper_state_type), intent(in) :: state
     type(branch_record_type), intent(inout) :: rec
-    call append_vertex(geo, state, 0.0_wp, rec)
+    real(wp) :: g(3), s(3), N(3), T(3), gp(3), sp(3), Np(3), Tp(3)
+    call append_vertex(geo, state, 0.0_wp, rec, g, s, N, T, gp, sp, Np, Tp)
   end subroutine record_start
 
   !> Full-slip statics: with every contact slipping in the direction signs(i) (+1: T = mu N),

@@ -55,7 +55,7 @@ contains
     real(wp) :: dgam, dcf, tc(10), tcp(10), rate_of(10), g(3), s(3), N(3), T(3), gp(3), sp(3), Np(3), Tp(3)
     real(wp) :: f(3), df(3), fp(3), remaining, step, step_p, cur, scale
     character(len=60) :: buf
-    logical :: with_p
+    logical :: with_p, known
 
     travel = 0
     dM = 0
@@ -69,6 +69,7 @@ contains
     end if
     ! p-derivatives that start at zero with a target independent of p stay zero: not computed
     with_p = target_p /= 0 .or. st%gamma_p /= 0 .or. any(st%q_p /= 0) .or. any(st%w_p /= 0)
+    known = .false.
     pred = st%mode
     if (var == 1 .and. st%direction /= dir) then
       where (pred == CONTACT_SLIP_POS .or. pred == CONTACT_SLIP_NEG) pred = CONTACT_STICK
@@ -81,14 +82,16 @@ contains
         if (var == 1) st%direction = dir
         return
       end if
-      call snap_sliders(geo, st, with_p)
-      call resolve_mode(geo, st, dgam, dcf, pred, rt, error, cache)
+      ! The forces at the state: the last vertex's when it was recorded (the same state).
+      if (.not. known) then
+        call contact_forces(geo, st%mode, st%q, st%gamma, st%w, g, s, N, T, st%off)
+        if (with_p) call contact_forces(geo, st%mode, st%q_p, st%gamma_p, st%w_p, gp, sp, Np, Tp)
+      end if
+      known = .false.
+      call snap_sliders(geo, st, with_p, s, T, sp, Tp)
+      call resolve_mode(geo, st, dgam, dcf, pred, rt, error, cache, g, s, N, T, gp, sp, Np, Tp)
       if (allocated(error)) return
-
-      call contact_forces(geo, st%mode, st%q, st%gamma, st%w, g, s, N, T, st%off)
-      if (with_p) then
-        call contact_forces(geo, st%mode, st%q_p, st%gamma_p, st%w_p, gp, sp, Np, Tp)
-      else
+      if (.not. with_p) then
         gp = 0
         sp = 0
         Np = 0
@@ -183,7 +186,8 @@ contains
             & st%mode == CONTACT_SLIP_NEG)
           rec%opened = rec%opened .or. any(st%mode == CONTACT_OPEN)
         end if
-        call append_vertex(geo, st, rt%dM*dir, rec)
+        call append_vertex(geo, st, rt%dM*dir, rec, g, s, N, T, gp, sp, Np, Tp)
+        known = .true.
       end if
       if (present(modes)) then
         modes%n = modes%n + 1
@@ -247,17 +251,17 @@ contains
   end subroutine trace_core
 
   !> Keeps the sliders of slipping and open contacts on their forces (T = -kt (s - w)),
-  !> with their p-derivatives, so that a change to stick continues the force.
-  pure subroutine snap_sliders(geo, st, with_p)
+  !> with their p-derivatives, so that a change to stick continues the force. s, T (sp, Tp)
+  !> are the state's; a slipping or open contact's forces do not depend on its slider, so
+  !> they stay the state's forces.
+  pure subroutine snap_sliders(geo, st, with_p, s, T, sp, Tp)
     type(damper_geometry_type), intent(in) :: geo
     type(damper_state_type), intent(inout) :: st
     !> The p-derivatives are not all zero.
     logical, intent(in) :: with_p
-    real(wp) :: g(3), s(3), N(3), T(3), gp(3), sp(3), Np(3), Tp(3)
+    real(wp), intent(in) :: s(3), T(3), sp(3), Tp(3)
     integer :: i
     if (all(st%mode == CONTACT_STICK)) return
-    call contact_forces(geo, st%mode, st%q, st%gamma, st%w, g, s, N, T, st%off)
-    if (with_p) call contact_forces(geo, st%mode, st%q_p, st%gamma_p, st%w_p, gp, sp, Np, Tp)
     do i = 1, 3
       if (st%mode(i) /= CONTACT_STICK) then
         st%w(i) = s(i) + T(i)/geo%kt(i)
@@ -269,8 +273,9 @@ contains
   !> Chooses the contact states for moving on with load rates (dgam, dcf): contacts inside
   !> their stick cone or clearly open keep their state; contacts on the cone (stick or slip)
   !> or at zero gap (open, stick, slip+-) take the combination whose rates are consistent.
-  !> `pred` is tried first.
-  subroutine resolve_mode(geo, st, dgam, dcf, pred, rt, error, cache)
+  !> `pred` is tried first. g, s, N, T (gp, sp, Np, Tp: their p-derivatives) are the
+  !> state's on entry and on return.
+  subroutine resolve_mode(geo, st, dgam, dcf, pred, rt, error, cache, g, s, N, T, gp, sp, Np, Tp)
     type(damper_geometry_type), intent(in) :: geo
     type(damper_state_type), intent(inout) :: st
     real(wp), intent(in) :: dgam, dcf
@@ -278,12 +283,12 @@ contains
     type(rates_type), intent(out) :: rt
     type(error_type), allocatable, intent(out) :: error
     type(equilibrium_cache_type), intent(inout), optional :: cache
-    real(wp) :: g(3), s(3), N(3), T(3), tolF, tolR
+    real(wp), intent(inout) :: g(3), s(3), N(3), T(3), gp(3), sp(3), Np(3), Tp(3)
+    real(wp) :: tolF, tolR
     integer :: ncand(3), cand(4,3), cls(3), sig0(3), i, i1, i2, i3, trial(3), old(3)
     logical :: ok, any_regular
     character(len=120) :: buf
 
-    call contact_forces(geo, st%mode, st%q, st%gamma, st%w, g, s, N, T, st%off)
     ! forces within this of a boundary count as on it: the resolution of the force sums
     tolF = TOL_FORCE*max(abs(st%CF), maxval(abs(N)), maxval(abs(T)))
     tolR = TOL_RATE*(geo%rate_scale*abs(dgam) + abs(dcf))
@@ -367,18 +372,22 @@ contains
       end do
     end function consistent
 
-    !> A contact that opens or closes starts with its spring unloaded: w = s.
+    !> A contact that opens or closes starts with its spring unloaded: w = s. The forces of
+    !> the new states: where a contact closes to stick, T = -kt (s - w) with the new w.
     subroutine snap_new_states(old)
       integer, intent(in) :: old(3)
-      real(wp) :: gg(3), ss(3), NN(3), TT(3), gp(3), sp(3), Np(3), Tp(3)
       integer :: j
       if (all(old == st%mode)) return
-      call contact_forces(geo, st%mode, st%q, st%gamma, st%w, gg, ss, NN, TT, st%off)
+      call contact_forces(geo, st%mode, st%q, st%gamma, st%w, g, s, N, T, st%off)
       call contact_forces(geo, st%mode, st%q_p, st%gamma_p, st%w_p, gp, sp, Np, Tp)
       do j = 1, 3
         if ((old(j) == CONTACT_OPEN) .neqv. (st%mode(j) == CONTACT_OPEN)) then
-          st%w(j) = ss(j)
+          st%w(j) = s(j)
           st%w_p(j) = sp(j)
+          if (st%mode(j) == CONTACT_STICK) then
+            T(j) = -geo%kt(j)*(s(j) - st%w(j))
+            Tp(j) = -geo%kt(j)*(sp(j) - st%w_p(j))
+          end if
         end if
       end do
     end subroutine snap_new_states
@@ -399,19 +408,20 @@ contains
   end subroutine put_first
 
   !> Appends the current point as a vertex; `slope` is dM/dgamma of the segment ending there.
-  pure subroutine append_vertex(geo, st, slope, rec)
+  !> Returns the state's forces g, s, N, T and their p-derivatives gp, sp, Np, Tp.
+  pure subroutine append_vertex(geo, st, slope, rec, g, s, N, T, gp, sp, Np, Tp)
     type(damper_geometry_type), intent(in) :: geo
     type(damper_state_type), intent(in) :: st
     real(wp), intent(in) :: slope
     type(branch_record_type), intent(inout) :: rec
-    real(wp) :: g(3), s(3), N(3), T(3)
+    real(wp), intent(out) :: g(3), s(3), N(3), T(3), gp(3), sp(3), Np(3), Tp(3)
     rec%n = rec%n + 1
     call put(rec%gamma, rec%n, st%gamma)
     call put(rec%gamma_p, rec%n, st%gamma_p)
     call contact_forces(geo, st%mode, st%q, st%gamma, st%w, g, s, N, T, st%off)
     call put(rec%M, rec%n, sum(geo%cn*N + geo%ct*T))
-    call contact_forces(geo, st%mode, st%q_p, st%gamma_p, st%w_p, g, s, N, T)
-    call put(rec%M_p, rec%n, sum(geo%cn*N + geo%ct*T))
+    call contact_forces(geo, st%mode, st%q_p, st%gamma_p, st%w_p, gp, sp, Np, Tp)
+    call put(rec%M_p, rec%n, sum(geo%cn*Np + geo%ct*Tp))
     call put(rec%slope, rec%n, slope)
     if (rec%keep_states) then
       if (.not. allocated(rec%states)) allocate(rec%states(size(rec%gamma)))
