@@ -1,21 +1,33 @@
 !> Shared fixtures of the Fortran test suites: blade A's beam parameters (blade_a.json; its
-!> damper is udmap_damper_params' blade_a_damper_params), the spring chain, the independent
-!> quadruple-precision references and small helpers that several suites need.
+!> damper is udmap_damper_params' blade_a_damper_params), the scenes of blade, damper and
+!> model that the mapping suites build, the spring chain, the independent quadruple-precision
+!> references and small helpers that several suites need.
 module fixtures
   use udmap_core_kinds, only: wp, pi
   use udmap_core_error, only: error_type
   use udmap_blade_beam, only: beam_params_type
   use udmap_blade_type, only: blade_type, receptances_type, new_beam_blade, new_matrices_blade
-  use udmap_damper_type, only: damper_type, new_asymmetric_damper
+  use udmap_damper_type, only: damper_type, new_asymmetric_damper, new_jenkins_damper
   use udmap_damper_params, only: blade_a_damper_params
   use udmap_damper_tracer_core, only: CONTACT_SLIP_POS, CONTACT_SLIP_NEG
   use udmap_mapping_model, only: analysis_type, model_type, point_type, new_model, backbone
   use testing, only: test_suite, check_no_error
   implicit none
   private
+  public :: scene_type, scene_model, jenkins_oscillator, oscillator_model
   public :: blade_a_beam_params, spring_chain, dense_gamma, layer_force, band_min_force, sign_of
   public :: one_dof_blade, blade_a_with_damper, blade_a_band, blade_a_model, refined_backbone_change
   public :: ieee_nan, ieee_inf, temp_dir, qp, receptances_from_solution, zgesv
+
+  !> A blade, its damper, the analysis settings and the model of the three. Declare a scene
+  !> `target`: the model keeps pointers to the blade and the damper, so a scene must not be
+  !> copied or moved once its model is built.
+  type :: scene_type
+    type(blade_type) :: blade
+    type(damper_type) :: damper
+    type(analysis_type) :: analysis
+    type(model_type) :: model
+  end type scene_type
 
   !> The real kind of the quadruple-precision references.
   integer, parameter :: qp = selected_real_kind(30)
@@ -54,6 +66,39 @@ contains
     C = c_visc
     call new_matrices_blade(blade, M, K, 1, 1, 0.0_wp, error, C=C)
   end subroutine one_dof_blade
+
+  !> The model of the scene's blade and damper under its analysis.
+  subroutine scene_model(scene, error)
+    type(scene_type), target, intent(inout) :: scene
+    type(error_type), allocatable, intent(out) :: error
+    call new_model(scene%model, scene%blade, scene%damper, scene%analysis, error)
+  end subroutine scene_model
+
+  !> The Jenkins oscillator of PHYSICS.md 8: one_dof_blade with c_visc and a Jenkins damper
+  !> (kt, slip) on the same DOF; checks that each builds.
+  subroutine jenkins_oscillator(suite, scene, c_visc, kt, slip, error)
+    type(test_suite), intent(inout) :: suite
+    type(scene_type), intent(inout) :: scene
+    real(wp), intent(in) :: c_visc, kt, slip
+    type(error_type), allocatable, intent(out) :: error
+    call one_dof_blade(scene%blade, c_visc, error)
+    call check_no_error(suite, "blade", error)
+    call new_jenkins_damper(scene%damper, kt, slip, error)
+    call check_no_error(suite, "damper", error)
+  end subroutine jenkins_oscillator
+
+  !> The model of a one-DOF scene over the band [w_min, w_max] in rad/s (the oscillator's
+  !> equations are in rad/s, the band in Hz); checks that it builds.
+  subroutine oscillator_model(suite, scene, w_min, w_max, error)
+    type(test_suite), intent(inout) :: suite
+    type(scene_type), target, intent(inout) :: scene
+    real(wp), intent(in) :: w_min, w_max
+    type(error_type), allocatable, intent(out) :: error
+    scene%analysis%f_min = w_min/(2*pi)
+    scene%analysis%f_max = w_max/(2*pi)
+    call scene_model(scene, error)
+    call check_no_error(suite, "model", error)
+  end subroutine oscillator_model
 
   !> Blade A and its asymmetric damper; checks that each builds.
   subroutine blade_a_with_damper(suite, blade, damper, error)
