@@ -18,6 +18,17 @@ static void write_file(const char *path, const char *text) {
   fclose(f);
 }
 
+/* Blade A's M with a K file of the text (written to k_path) is refused with needle; *bad
+ * stays as it was, so that the caller can check that no refused call made a handle. */
+static void check_bad_k_file(udmap_error err, const char *m_path, const char *k_path,
+                             const char *text, const char *needle, const char *name,
+                             udmap_blade *bad) {
+  write_file(k_path, text);
+  int status =
+      udmap_new_blade_matrices(err, m_path, k_path, NULL, 16, 39, NULL, NULL, 0.002, bad);
+  check_error(err, status, needle, name);
+}
+
 int main(void) {
   udmap_error err = udmap_new_error();
   udmap_blade blade = NULL, copy = NULL, bad = NULL;
@@ -116,15 +127,15 @@ int main(void) {
   check_error(err, status, "'/nonexistent/M.mtx' not found", "missing M file");
   char badpath[512];
   snprintf(badpath, sizeof badpath, "%s/bad.mtx", dir);
-  write_file(badpath, "%%MatrixMarket matrix coordinate real symmetric\n64 64 3\n1 1 1.0\n");
-  status = udmap_new_blade_matrices(err, mpath, badpath, NULL, 16, 39, NULL, NULL, 0.002, &bad);
-  check_error(err, status, "line 3: file ends after 1 of 3 entries", "short K file");
-  write_file(badpath, "%%MatrixMarket matrix coordinate real symmetric\n64 64 1\n65 1 1.0\n");
-  status = udmap_new_blade_matrices(err, mpath, badpath, NULL, 16, 39, NULL, NULL, 0.002, &bad);
-  check_error(err, status, "index (65, 1) out of range", "index out of range");
-  write_file(badpath, "%%MatrixMarket tensor coordinate real symmetric\n64 64 1\n1 1 1.0\n");
-  status = udmap_new_blade_matrices(err, mpath, badpath, NULL, 16, 39, NULL, NULL, 0.002, &bad);
-  check_error(err, status, "bad banner", "bad banner");
+  check_bad_k_file(err, mpath, badpath,
+                   "%%MatrixMarket matrix coordinate real symmetric\n64 64 3\n1 1 1.0\n",
+                   "line 3: file ends after 1 of 3 entries", "short K file", &bad);
+  check_bad_k_file(err, mpath, badpath,
+                   "%%MatrixMarket matrix coordinate real symmetric\n64 64 1\n65 1 1.0\n",
+                   "index (65, 1) out of range", "index out of range", &bad);
+  check_bad_k_file(err, mpath, badpath,
+                   "%%MatrixMarket tensor coordinate real symmetric\n64 64 1\n1 1 1.0\n",
+                   "bad banner", "bad banner", &bad);
   write_file(badpath, "%%MatrixMarket matrix coordinate real general\n2 2 3\n1 1 1\n2 1 1\n2 2 1\n");
   status = udmap_new_blade_matrices(err, badpath, badpath, NULL, 1, 2, NULL, NULL, 0.0, &bad);
   check_error(err, status, "is not symmetric", "non-symmetric matrix");

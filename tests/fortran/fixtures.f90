@@ -1,21 +1,47 @@
 !> Shared fixtures of the Fortran test suites: blade A's beam parameters (blade_a.json; its
-!> damper is udmap_damper_params' blade_a_damper_params), the spring chain, the independent
-!> quadruple-precision references and small helpers that several suites need.
+!> damper is udmap_damper_params' blade_a_damper_params), the scenes of blade, damper and
+!> model that the mapping suites build, the spring chain, the independent quadruple-precision
+!> references and small helpers that several suites need.
 module fixtures
   use udmap_core_kinds, only: wp, pi
-  use udmap_core_error, only: error_type
+  use udmap_core_error, only: error_type, UDMAP_EINPUT, UDMAP_EPHYSICS, UDMAP_ENUMERIC
   use udmap_blade_beam, only: beam_params_type
   use udmap_blade_type, only: blade_type, receptances_type, new_beam_blade, new_matrices_blade
-  use udmap_damper_type, only: damper_type, new_asymmetric_damper
+  use udmap_damper_type, only: damper_type, new_asymmetric_damper, new_jenkins_damper
   use udmap_damper_params, only: blade_a_damper_params
   use udmap_damper_tracer_core, only: CONTACT_SLIP_POS, CONTACT_SLIP_NEG
   use udmap_mapping_model, only: analysis_type, model_type, point_type, new_model, backbone
-  use testing, only: test_suite, check_no_error
+  use udmap_contact_aft_moment, only: aft_workspace_type
+  use udmap_baseline_hbm, only: hbm_settings_type, hbm_point_type
+  use udmap_baseline_newmark, only: dti_settings_type, dti_point_type
+  use testing, only: test_suite, check_no_error, check_true
   implicit none
   private
+  public :: scene_type, scene_model, jenkins_oscillator, oscillator_model
   public :: blade_a_beam_params, spring_chain, dense_gamma, layer_force, band_min_force, sign_of
   public :: one_dof_blade, blade_a_with_damper, blade_a_band, blade_a_model, refined_backbone_change
+  public :: stress_run_type, stress_run, check_finite_or_error
   public :: ieee_nan, ieee_inf, temp_dir, qp, receptances_from_solution, zgesv
+
+  !> A blade, its damper, the analysis settings and the model of the three. Declare a scene
+  !> `target`: the model keeps pointers to the blade and the damper, so a scene must not be
+  !> copied or moved once its model is built.
+  type :: scene_type
+    type(blade_type) :: blade
+    type(damper_type) :: damper
+    type(analysis_type) :: analysis
+    type(model_type) :: model
+  end type scene_type
+
+  !> The AFT workspace, the settings and the last points of a stress test's calls of the
+  !> standard method and the time integration.
+  type :: stress_run_type
+    type(aft_workspace_type) :: ws
+    type(hbm_settings_type) :: set
+    type(hbm_point_type) :: pt
+    type(dti_settings_type) :: dset
+    type(dti_point_type) :: dp
+  end type stress_run_type
 
   !> The real kind of the quadruple-precision references.
   integer, parameter :: qp = selected_real_kind(30)
@@ -54,6 +80,39 @@ contains
     C = c_visc
     call new_matrices_blade(blade, M, K, 1, 1, 0.0_wp, error, C=C)
   end subroutine one_dof_blade
+
+  !> The model of the scene's blade and damper under its analysis.
+  subroutine scene_model(scene, error)
+    type(scene_type), target, intent(inout) :: scene
+    type(error_type), allocatable, intent(out) :: error
+    call new_model(scene%model, scene%blade, scene%damper, scene%analysis, error)
+  end subroutine scene_model
+
+  !> The Jenkins oscillator of PHYSICS.md 8: one_dof_blade with c_visc and a Jenkins damper
+  !> (kt, slip) on the same DOF; checks that each builds.
+  subroutine jenkins_oscillator(suite, scene, c_visc, kt, slip, error)
+    type(test_suite), intent(inout) :: suite
+    type(scene_type), intent(inout) :: scene
+    real(wp), intent(in) :: c_visc, kt, slip
+    type(error_type), allocatable, intent(out) :: error
+    call one_dof_blade(scene%blade, c_visc, error)
+    call check_no_error(suite, "blade", error)
+    call new_jenkins_damper(scene%damper, kt, slip, error)
+    call check_no_error(suite, "damper", error)
+  end subroutine jenkins_oscillator
+
+  !> The model of a one-DOF scene over the band [w_min, w_max] in rad/s (the oscillator's
+  !> equations are in rad/s, the band in Hz); checks that it builds.
+  subroutine oscillator_model(suite, scene, w_min, w_max, error)
+    type(test_suite), intent(inout) :: suite
+    type(scene_type), target, intent(inout) :: scene
+    real(wp), intent(in) :: w_min, w_max
+    type(error_type), allocatable, intent(out) :: error
+    scene%analysis%f_min = w_min/(2*pi)
+    scene%analysis%f_max = w_max/(2*pi)
+    call scene_model(scene, error)
+    call check_no_error(suite, "model", error)
+  end subroutine oscillator_model
 
   !> Blade A and its asymmetric damper; checks that each builds.
   subroutine blade_a_with_damper(suite, blade, damper, error)
@@ -116,6 +175,37 @@ contains
         & abs(points_fine(i)%sigma_a/points(i)%sigma_a - 1))
     end do
   end subroutine refined_backbone_change
+
+  !> The settings of the stress suites: arc-length steps up to 0.3, 64 time steps a period and
+  !> at most max_periods periods (a hang shows as a time-out, not as an endless run).
+  function stress_run(max_periods) result(run)
+    integer, intent(in) :: max_periods
+    type(stress_run_type) :: run
+    run%set%ds_max = 0.3_wp
+    run%dset%steps_per_period = 64
+    run%dset%max_periods = max_periods
+  end function stress_run
+
+  !> Checks that a call either succeeded with finite, non-negative outputs a and b, or failed
+  !> with a message and an input, physics or numerics status; clears error for the next call.
+  !> failed: whether it failed.
+  subroutine check_finite_or_error(suite, name, error, a, b, failed)
+    type(test_suite), intent(inout) :: suite
+    character(len=*), intent(in) :: name
+    type(error_type), allocatable, intent(inout) :: error
+    real(wp), intent(in) :: a, b
+    logical, intent(out), optional :: failed
+    logical :: fine
+    if (present(failed)) failed = allocated(error)
+    if (allocated(error)) then
+      fine = (error%stat == UDMAP_EINPUT .or. error%stat == UDMAP_EPHYSICS .or. &
+        & error%stat == UDMAP_ENUMERIC) .and. len_trim(error%message) > 0
+      deallocate(error)
+    else
+      fine = a >= 0.0_wp .and. a <= huge(1.0_wp) .and. b >= 0.0_wp .and. b <= huge(1.0_wp)
+    end if
+    call check_true(suite, name, fine)
+  end subroutine check_finite_or_error
 
   !> The chain of unit springs (100) and masses (1 + 0.1 i): spring i joins node i-1 (the
   !> ground for i = 1) and node i.

@@ -120,28 +120,28 @@ contains
         & "1 1 1", "1 1 1"], "unsupported symmetry 'hermitian'")
       call expect("empty.mtx", [character(len=60) :: "%%MatrixMarket matrix coordinate real general"], &
         & "file ends before the size line")
-      call expect("size.mtx", [character(len=60) :: "%%MatrixMarket matrix coordinate real general", &
-        & "3 3", "1 1 1"], "line 2: bad size line '3 3'")
-      call expect("size2.mtx", [character(len=60) :: "%%MatrixMarket matrix coordinate real general", &
-        & "3 x 2", "1 1 1"], "sizes must be integers")
-      call expect("short.mtx", [character(len=60) :: "%%MatrixMarket matrix coordinate real general", &
-        & "3 3 5", "1 1 1", "2 2 1", "3 3 1"], "line 5: file ends after 3 of 5 entries")
-      call expect("long.mtx", [character(len=60) :: "%%MatrixMarket matrix coordinate real general", &
-        & "3 3 1", "1 1 1", "2 2 1"], "line 4: more entries than the 1 declared")
-      call expect("range.mtx", [character(len=60) :: "%%MatrixMarket matrix coordinate real general", &
-        & "3 3 2", "1 1 1", "4 1 2.5"], "line 4: index (4, 1) out of range for a 3 x 3 matrix")
-      call expect("range0.mtx", [character(len=60) :: "%%MatrixMarket matrix coordinate real general", &
-        & "3 3 1", "0 1 1"], "index (0, 1) out of range")
-      call expect("number.mtx", [character(len=60) :: "%%MatrixMarket matrix coordinate real general", &
-        & "3 3 1", "1 1 1.0x"], "line 3: unparsable or non-finite number '1.0x'")
-      call expect("nan.mtx", [character(len=60) :: "%%MatrixMarket matrix coordinate real general", &
-        & "3 3 1", "1 1 NaN"], "unparsable or non-finite number 'NaN'")
-      call expect("overflow.mtx", [character(len=60) :: "%%MatrixMarket matrix coordinate real general", &
-        & "3 3 1", "1 1 1e999"], "non-finite number '1e999'")
-      call expect("index.mtx", [character(len=60) :: "%%MatrixMarket matrix coordinate real general", &
-        & "3 3 1", "1.5 1 1"], "unparsable index")
-      call expect("fields.mtx", [character(len=60) :: "%%MatrixMarket matrix coordinate real general", &
-        & "3 3 1", "1 1"], "expected 'row column value'")
+      call expect_general("size.mtx", [character(len=12) :: "3 3", "1 1 1"], &
+        & "line 2: bad size line '3 3'")
+      call expect_general("size2.mtx", [character(len=12) :: "3 x 2", "1 1 1"], &
+        & "sizes must be integers")
+      call expect_general("short.mtx", [character(len=12) :: "3 3 5", "1 1 1", "2 2 1", "3 3 1"], &
+        & "line 5: file ends after 3 of 5 entries")
+      call expect_general("long.mtx", [character(len=12) :: "3 3 1", "1 1 1", "2 2 1"], &
+        & "line 4: more entries than the 1 declared")
+      call expect_general("range.mtx", [character(len=12) :: "3 3 2", "1 1 1", "4 1 2.5"], &
+        & "line 4: index (4, 1) out of range for a 3 x 3 matrix")
+      call expect_general("range0.mtx", [character(len=12) :: "3 3 1", "0 1 1"], &
+        & "index (0, 1) out of range")
+      call expect_general("number.mtx", [character(len=12) :: "3 3 1", "1 1 1.0x"], &
+        & "line 3: unparsable or non-finite number '1.0x'")
+      call expect_general("nan.mtx", [character(len=12) :: "3 3 1", "1 1 NaN"], &
+        & "unparsable or non-finite number 'NaN'")
+      call expect_general("overflow.mtx", [character(len=12) :: "3 3 1", "1 1 1e999"], &
+        & "non-finite number '1e999'")
+      call expect_general("index.mtx", [character(len=12) :: "3 3 1", "1.5 1 1"], &
+        & "unparsable index")
+      call expect_general("fields.mtx", [character(len=12) :: "3 3 1", "1 1"], &
+        & "expected 'row column value'")
       call expect("upper.mtx", [character(len=60) :: "%%MatrixMarket matrix coordinate real symmetric", &
         & "3 3 1", "1 2 1.0"], "entry (1, 2) above the diagonal")
       call expect("nonsquare.mtx", [character(len=60) :: "%%MatrixMarket matrix coordinate real symmetric", &
@@ -223,6 +223,13 @@ contains
         call check_true(suite, name//": message names the file", index(error%message, dir//"/"//name) > 0)
       end if
     end subroutine expect
+
+    !> expect() of a coordinate real general file: its banner, then lines.
+    subroutine expect_general(name, lines, needle)
+      character(len=*), intent(in) :: name, lines(:), needle
+      call expect(name, [character(len=60) :: "%%MatrixMarket matrix coordinate real general", &
+        & lines], needle)
+    end subroutine expect_general
 
     subroutine write_text(name, lines, newline)
       character(len=*), intent(in) :: name, lines(:)

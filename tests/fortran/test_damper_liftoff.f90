@@ -55,34 +55,23 @@ contains
     write(*, '(a, es10.3)') "short pad: table vs direct loops, max rel. error ", worst
     call check_true(suite, "table within 1e-6 of direct loops", worst < 1e-6_wp)
 
-    ! Every parameter checked by name.
+    ! Every parameter checked by name: one field of blade A's damper made bad at a time
+    ! (expect_input restores the others).
     nan = ieee_value(nan, ieee_quiet_nan)
-    bad = blade_a_damper_params(); bad%CF = nan
-    call expect_input("CF")
-    bad = blade_a_damper_params(); bad%mu = -0.1_wp
-    call expect_input("mu")
-    bad = blade_a_damper_params(); bad%pitch = 0
-    call expect_input("pitch")
-    bad = blade_a_damper_params(); bad%y_P = nan
-    call expect_input("y_P")
-    bad = blade_a_damper_params(); bad%beta_L_deg = 95
-    call expect_input("beta_L_deg")
-    bad = blade_a_damper_params(); bad%beta_R_deg = -5
-    call expect_input("beta_R_deg")
-    bad = blade_a_damper_params(); bad%flat(2,2) = nan
-    call expect_input("flat2_y")
-    bad = blade_a_damper_params(); bad%curved(1) = nan
-    call expect_input("curved_x")
-    bad = blade_a_damper_params(); bad%kn_flat = -60e6_wp
-    call expect_input("kn_flat")
-    bad = blade_a_damper_params(); bad%kt_flat = nan
-    call expect_input("kt_flat")
-    bad = blade_a_damper_params(); bad%kn_curved = 0
-    call expect_input("kn_curved")
-    bad = blade_a_damper_params(); bad%kt_curved = -1
-    call expect_input("kt_curved")
-    bad = blade_a_damper_params(); bad%flat(:,2) = bad%flat(:,1)
-    call expect_input("flat_points")
+    bad = blade_a_damper_params()
+    bad%CF = nan; call expect_input("CF")
+    bad%mu = -0.1_wp; call expect_input("mu")
+    bad%pitch = 0; call expect_input("pitch")
+    bad%y_P = nan; call expect_input("y_P")
+    bad%beta_L_deg = 95; call expect_input("beta_L_deg")
+    bad%beta_R_deg = -5; call expect_input("beta_R_deg")
+    bad%flat(2,2) = nan; call expect_input("flat2_y")
+    bad%curved(1) = nan; call expect_input("curved_x")
+    bad%kn_flat = -60e6_wp; call expect_input("kn_flat")
+    bad%kt_flat = nan; call expect_input("kt_flat")
+    bad%kn_curved = 0; call expect_input("kn_curved")
+    bad%kt_curved = -1; call expect_input("kt_curved")
+    bad%flat(:,2) = bad%flat(:,1); call expect_input("flat_points")
 
     ! A self-locking damper (mu = 5 on 45 degree faces) jams: a physics error, no NaN.
     bad = blade_a_damper_params()
@@ -99,12 +88,15 @@ contains
 
   contains
 
+    !> The damper of the parameters bad is refused naming the field name; bad is blade A's
+    !> damper again afterwards.
     subroutine expect_input(name)
       character(len=*), intent(in) :: name
       type(damper_type) :: dd
       type(error_type), allocatable :: err
       call new_asymmetric_damper(dd, bad, err)
       call check_error(suite, "rejects bad "//name, err, UDMAP_EINPUT, name)
+      bad = blade_a_damper_params()
     end subroutine expect_input
   end subroutine run_damper_liftoff
 end module test_damper_liftoff

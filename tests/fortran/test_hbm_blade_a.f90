@@ -5,16 +5,14 @@
 module test_hbm_blade_a
   use udmap_core_kinds, only: wp, pi
   use udmap_core_error, only: error_type
-  use udmap_blade_type, only: blade_type
-  use udmap_damper_type, only: damper_type
   use udmap_damper_params, only: blade_a_damper_params
-  use udmap_mapping_model, only: model_type, analysis_type, point_type, new_model, backbone
+  use udmap_mapping_model, only: point_type, backbone
   use udmap_baseline_linear_structure, only: structure_type, structure_from_blade
   use udmap_contact_element_asymmetric, only: contact_element_type, new_contact_element
   use udmap_contact_aft_moment, only: aft_workspace_type, aft_moment
   use udmap_baseline_hbm, only: hbm_settings_type, hbm_point_type, hbm_peaks, hbm_response
   use udmap_baseline_newmark, only: dti_settings_type, dti_point_type, dti_response
-  use fixtures, only: blade_a_with_damper, blade_a_band
+  use fixtures, only: scene_type, scene_model, blade_a_with_damper, blade_a_band
   use testing, only: test_suite, check_close, check_true, check_no_error, unittest_type, &
     & new_unittest
   implicit none
@@ -32,10 +30,7 @@ contains
   !> Standard method vs backbone at H = 1, time integration vs H = 21, partial-slip history.
   subroutine run_hbm_blade_a(suite)
     type(test_suite), intent(inout) :: suite
-    type(blade_type), target :: blade
-    type(damper_type), target :: damper
-    type(model_type) :: model
-    type(analysis_type) :: an
+    type(scene_type), target :: scene
     type(point_type), allocatable :: bb(:)
     type(structure_type) :: st
     type(contact_element_type) :: el
@@ -52,15 +47,16 @@ contains
     integer :: i, v
     character(len=24) :: tag
 
-    call blade_a_with_damper(suite, blade, damper, error)
-    call blade_a_band(an)
-    call new_model(model, blade, damper, an, error)
-    call backbone(model, FE, bb, error)
+    call blade_a_with_damper(suite, scene%blade, scene%damper, error)
+    call blade_a_band(scene%analysis)
+    call scene_model(scene, error)
+    call backbone(scene%model, FE, bb, error)
     call check_no_error(suite, "backbone", error)
-    call structure_from_blade(st, blade, error)
+    call structure_from_blade(st, scene%blade, error)
     call new_contact_element(el, blade_a_damper_params(), error)
     call check_no_error(suite, "contact element", error)
-    call check_close(suite, "stuck stiffness = damper k_stuck", el%k_stuck, damper%k_stuck, 1e-8_wp)
+    call check_close(suite, "stuck stiffness = damper k_stuck", el%k_stuck, scene%damper%k_stuck, &
+      & 1e-8_wp)
 
     ! H = 1: the standard method solves the backbone's equations (acceptance: 1e-6)
     do v = 0, 1
@@ -99,13 +95,15 @@ contains
     dset%steps_per_period = 256
     call dti_response(st, el, 197.583852_wp, 0.3_wp, dset, dp, error)
     call check_no_error(suite, "dti stuck", error)
-    call check_true(suite, "stuck below gamma_s", p1%gamma_P < damper%gamma_s)
+    call check_true(suite, "stuck below gamma_s", p1%gamma_P < scene%damper%gamma_s)
     call check_close(suite, "stuck: dti gamma_1 vs H = 1", dp%gamma_1, p1%gamma_P, 1.0e-3_wp)
 
     ! partial slip depends on the history: k at the same amplitude after the PHYSICS.md 2.1
     ! history and after an amplitude grown over 400 cycles (as in the time integration) differ
     ! between gamma_s and gamma_b and agree outside
-    amps = [0.9_wp*damper%gamma_s, 0.5_wp*(damper%gamma_s + damper%gamma_b), 1.1_wp*damper%gamma_b]
+    associate(d => scene%damper)
+      amps = [0.9_wp*d%gamma_s, 0.5_wp*(d%gamma_s + d%gamma_b), 1.1_wp*d%gamma_b]
+    end associate
     do i = 1, 3
       ga = amps(i)
       G(1) = ga

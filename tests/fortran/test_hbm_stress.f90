@@ -7,13 +7,13 @@
 module test_hbm_stress
   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_positive_inf
   use udmap_core_kinds, only: wp, pi
-  use udmap_core_error, only: error_type, UDMAP_EINPUT, UDMAP_EPHYSICS, UDMAP_ENUMERIC
+  use udmap_core_error, only: error_type, UDMAP_EINPUT, UDMAP_EPHYSICS
   use udmap_baseline_linear_structure, only: structure_type, new_structure
   use udmap_contact_element_jenkins, only: jenkins_element_type, new_jenkins_element
-  use udmap_contact_aft_moment, only: aft_workspace_type, aft_moment
-  use udmap_baseline_hbm, only: hbm_settings_type, hbm_point_type, hbm_peak, hbm_response
-  use udmap_baseline_newmark, only: dti_settings_type, dti_point_type, dti_response
-  use fixtures, only: ieee_nan
+  use udmap_contact_aft_moment, only: aft_moment
+  use udmap_baseline_hbm, only: hbm_peak
+  use udmap_baseline_newmark, only: dti_response
+  use fixtures, only: stress_run_type, stress_run, check_finite_or_error, ieee_nan
   use testing, only: test_suite, check_true, check_error, unittest_type, new_unittest
   implicit none
   private
@@ -33,11 +33,7 @@ contains
     type(structure_type) :: st
     type(jenkins_element_type) :: jen
     type(error_type), allocatable :: error
-    type(aft_workspace_type) :: ws
-    type(hbm_settings_type) :: set
-    type(hbm_point_type) :: pt
-    type(dti_settings_type) :: dset
-    type(dti_point_type) :: dp
+    type(stress_run_type) :: run
     real(wp), parameter :: zetas(3) = [0.0_wp, 1.0e-5_wp, 5.0e-3_wp]
     real(wp), parameter :: ratios(4) = [1.0e-3_wp, 1.0_wp, 30.0_wp, 1.0e3_wp]
     real(wp), parameter :: slips(3) = [1.0e-10_wp, 1.0e-2_wp, 1.0e2_wp]
@@ -46,7 +42,6 @@ contains
     complex(wp) :: M(3), G(3)
     integer :: iz, ir, is, jf, ig, nok, nerr
     character(len=80) :: tag
-    logical :: fine
 
     nok = 0
     nerr = 0
@@ -56,7 +51,7 @@ contains
         call new_jenkins_element(jen, ratios(ir), slips(is), error)
         do ig = -12, 0, 2
           G = [cmplx(10.0_wp**ig, 0.0_wp, wp), (0.0_wp, 0.0_wp), cmplx(0.0_wp, 0.3_wp*10.0_wp**ig, wp)]
-          call aft_moment(jen, ws, 0.0_wp, G, 0, 1, 8, 1.0e-12_wp, M0, M, error, gmax)
+          call aft_moment(jen, run%ws, 0.0_wp, G, 0, 1, 8, 1.0e-12_wp, M0, M, error, gmax)
           write(tag, '(a, 2es9.1, i4)') "aft kt, M_slip, log gamma", ratios(ir), slips(is), ig
           call check_true(suite, trim(tag)//" finite", .not.allocated(error) .and. &
             & all(abs(M) <= huge(1.0_wp)) .and. abs(M0) <= huge(1.0_wp) .and. gmax > 0.0_wp)
@@ -69,13 +64,11 @@ contains
     call new_jenkins_element(jen, 1.0_wp, 1.0_wp, error)
     G = [cmplx(ieee_value(1.0_wp, ieee_positive_inf), 0.0_wp, wp), (0.0_wp, 0.0_wp), &
       & (0.0_wp, 0.0_wp)]
-    call aft_moment(jen, ws, 0.0_wp, G, 0, 1, 8, 1.0e-12_wp, M0, M, error)
+    call aft_moment(jen, run%ws, 0.0_wp, G, 0, 1, 8, 1.0e-12_wp, M0, M, error)
     call check_error(suite, "aft infinite amplitude", error, UDMAP_EINPUT, "not finite")
 
     ! standard method and time integration over damping, stiffness ratio, slip limit and force
-    set%ds_max = 0.3_wp
-    dset%steps_per_period = 64
-    dset%max_periods = 4000
+    run = stress_run(max_periods=4000)
     do iz = 1, size(zetas)
       call new_structure(st, reshape([1.0_wp], [1,1]), reshape([1.0_wp], [1,1]), &
         & reshape([2.0_wp*zetas(iz)], [1,1]), 1, 1, error)
@@ -90,11 +83,12 @@ contains
             F = frac(jf)*Flim
             write(tag, '(a, es8.1, a, es8.1, a, es8.1, a, f5.2)') "zeta", zetas(iz), " kt", kt, &
               & " M_slip", slips(is), " F/F_lim", frac(jf)
-            call hbm_peak(st, jen, f_lo, f_hi, F, set, pt, error)
-            call account(trim(tag)//" hbm", pt%gamma_P, pt%f_res)
+            call hbm_peak(st, jen, f_lo, f_hi, F, run%set, run%pt, error)
+            call account(trim(tag)//" hbm", run%pt%gamma_P, run%pt%f_res)
             ! time integration at the stuck resonance frequency, a few hundred periods at most
-            call dti_response(st, jen, sqrt(1.0_wp + kt)/(2.0_wp*pi)*1.01_wp, F, dset, dp, error)
-            call account(trim(tag)//" dti", dp%gamma_1, dp%f)
+            call dti_response(st, jen, sqrt(1.0_wp + kt)/(2.0_wp*pi)*1.01_wp, F, run%dset, &
+              & run%dp, error)
+            call account(trim(tag)//" dti", run%dp%gamma_1, run%dp%f)
           end do
         end do
       end do
@@ -105,13 +99,13 @@ contains
     call new_structure(st, reshape([1.0_wp], [1,1]), reshape([1.0_wp], [1,1]), &
       & reshape([0.01_wp], [1,1]), 1, 1, error)
     call new_jenkins_element(jen, 0.25_wp, 0.2_wp, error)
-    call hbm_peak(st, jen, 2.0_wp, 3.0_wp, 0.1_wp, set, pt, error)
+    call hbm_peak(st, jen, 2.0_wp, 3.0_wp, 0.1_wp, run%set, run%pt, error)
     call check_error(suite, "band without resonance", error, UDMAP_EPHYSICS, "no resonance")
-    call hbm_peak(st, jen, 0.1_wp, 0.3_wp, ieee_nan(), set, pt, error)
+    call hbm_peak(st, jen, 0.1_wp, 0.3_wp, ieee_nan(), run%set, run%pt, error)
     call check_error(suite, "NaN force", error, UDMAP_EINPUT, "F_E")
-    call hbm_peak(st, jen, 0.3_wp, 0.1_wp, 0.1_wp, set, pt, error)
+    call hbm_peak(st, jen, 0.3_wp, 0.1_wp, 0.1_wp, run%set, run%pt, error)
     call check_error(suite, "inverted band", error, UDMAP_EINPUT, "f_min")
-    call dti_response(st, jen, ieee_nan(), 0.1_wp, dset, dp, error)
+    call dti_response(st, jen, ieee_nan(), 0.1_wp, run%dset, run%dp, error)
     call check_error(suite, "NaN frequency", error, UDMAP_EINPUT, "frequency")
     call new_jenkins_element(jen, -1.0_wp, 0.2_wp, error)
     call check_error(suite, "negative kt", error, UDMAP_EINPUT, "kt")
@@ -123,25 +117,22 @@ contains
       & reshape([1.0_wp + 1.0e-9_wp, -1.0_wp, -1.0_wp, 1.0_wp], [2,2]), &
       & reshape([1.0e-3_wp, 0.0_wp, 0.0_wp, 0.0_wp], [2,2]), 1, 2, error)
     call new_jenkins_element(jen, 1.0e-6_wp, 1.0e-6_wp, error)
-    call hbm_peak(st, jen, 1.0e-6_wp, 1.0e-2_wp, 1.0e-6_wp, set, pt, error)
-    call account("near-singular hbm", pt%gamma_P, pt%f_res)
+    call hbm_peak(st, jen, 1.0e-6_wp, 1.0e-2_wp, 1.0e-6_wp, run%set, run%pt, error)
+    call account("near-singular hbm", run%pt%gamma_P, run%pt%f_res)
 
   contains
 
-    !> A call either succeeded with finite, non-negative outputs, or failed with a message.
+    !> check_finite_or_error, counting the calls that succeeded and those that failed.
     subroutine account(name, a, b)
       character(len=*), intent(in) :: name
       real(wp), intent(in) :: a, b
-      if (allocated(error)) then
-        fine = (error%stat == UDMAP_EINPUT .or. error%stat == UDMAP_EPHYSICS .or. &
-          & error%stat == UDMAP_ENUMERIC) .and. len_trim(error%message) > 0
+      logical :: failed
+      call check_finite_or_error(suite, name, error, a, b, failed)
+      if (failed) then
         nerr = nerr + 1
-        deallocate(error)
       else
-        fine = a >= 0.0_wp .and. a <= huge(1.0_wp) .and. b >= 0.0_wp .and. b <= huge(1.0_wp)
         nok = nok + 1
       end if
-      call check_true(suite, name, fine)
     end subroutine account
   end subroutine run_hbm_stress
 end module test_hbm_stress

@@ -5,17 +5,17 @@
 module test_hbm_stress_contact
   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
   use udmap_core_kinds, only: wp
-  use udmap_core_error, only: error_type, UDMAP_EINPUT, UDMAP_EPHYSICS, UDMAP_ENUMERIC
+  use udmap_core_error, only: error_type, UDMAP_EINPUT
   use udmap_blade_beam, only: beam_params_type
   use udmap_blade_type, only: blade_type, new_beam_blade
   use udmap_damper_params, only: asymmetric_params_type, blade_a_damper_params
   use udmap_baseline_linear_structure, only: structure_type, structure_from_blade
   use udmap_contact_element_asymmetric, only: contact_element_type, new_contact_element
-  use udmap_contact_aft_moment, only: aft_workspace_type, aft_moment
-  use udmap_baseline_hbm, only: hbm_settings_type, hbm_point_type, hbm_peak
-  use udmap_baseline_newmark, only: dti_settings_type, dti_point_type, dti_response
-  use fixtures, only: blade_a_beam_params
-  use testing, only: test_suite, check_true, check_error, unittest_type, new_unittest
+  use udmap_contact_aft_moment, only: aft_moment
+  use udmap_baseline_hbm, only: hbm_peak
+  use udmap_baseline_newmark, only: dti_response
+  use fixtures, only: blade_a_beam_params, stress_run_type, stress_run, check_finite_or_error
+  use testing, only: test_suite, check_error, unittest_type, new_unittest
   implicit none
   private
   public :: collect_hbm_stress_contact
@@ -37,11 +37,7 @@ contains
     type(asymmetric_params_type) :: par
     type(contact_element_type) :: el
     type(error_type), allocatable :: error
-    type(aft_workspace_type) :: ws
-    type(hbm_settings_type) :: set
-    type(hbm_point_type) :: pt
-    type(dti_settings_type) :: dset
-    type(dti_point_type) :: dp
+    type(stress_run_type) :: run
     real(wp), parameter :: mus(3) = [1.0e-4_wp, 0.3_wp, 2.0_wp]
     real(wp), parameter :: CFs(3) = [1.0e-3_wp, 900.0_wp, 1.0e5_wp]
     real(wp), parameter :: kscale(3) = [1.0e-3_wp, 1.0_wp, 1.0e3_wp]
@@ -55,10 +51,8 @@ contains
     bp = blade_a_beam_params()
     call new_beam_blade(blade, bp, error)
     call structure_from_blade(st, blade, error)
-    set%ds_max = 0.3_wp
-    dset%steps_per_period = 64
-    dset%max_periods = 300
-    dset%min_periods = 5
+    run = stress_run(max_periods=300)
+    run%dset%min_periods = 5
 
     ! damper parameter sweep: AFT over amplitudes, then the standard method on blade A
     do im = 1, size(mus)
@@ -74,17 +68,20 @@ contains
           write(tag, '(a, es8.1, a, es8.1, a, es8.1)') "mu", mus(im), " CF", CFs(ic), " k x", &
             & kscale(ik)
           call new_contact_element(el, par, error)
-          call account(trim(tag)//" element", el%k_stuck, 1.0_wp)
+          call check_finite_or_error(suite, trim(tag)//" element", error, el%k_stuck, 1.0_wp)
           if (el%k_stuck <= 0.0_wp) cycle
           do ig = -12, 0, 3
             G = [cmplx(10.0_wp**ig, 0.0_wp, wp), (0.0_wp, 0.0_wp), &
               & cmplx(0.0_wp, 0.2_wp*10.0_wp**ig, wp)]
-            call aft_moment(el, ws, 0.0_wp, G, 0, 1, 8, 1.0e-12_wp, M0, M, error, gmax)
-            call account(trim(tag)//" aft", abs(M(1)) + abs(M(3)) + abs(M0), gmax)
+            call aft_moment(el, run%ws, 0.0_wp, G, 0, 1, 8, 1.0e-12_wp, M0, M, error, gmax)
+            call check_finite_or_error(suite, trim(tag)//" aft", error, &
+              & abs(M(1)) + abs(M(3)) + abs(M0), gmax)
           end do
           ! force scaled with the slip moments, about mu CF times a lever arm of a few mm
-          call hbm_peak(st, el, 150.0_wp, 230.0_wp, 1.0e-2_wp*par%mu*par%CF, set, pt, error)
-          call account(trim(tag)//" hbm", pt%gamma_P, pt%f_res)
+          call hbm_peak(st, el, 150.0_wp, 230.0_wp, 1.0e-2_wp*par%mu*par%CF, run%set, run%pt, &
+            & error)
+          call check_finite_or_error(suite, trim(tag)//" hbm", error, run%pt%gamma_P, &
+            & run%pt%f_res)
         end do
       end do
     end do
@@ -99,11 +96,12 @@ contains
       Flim = 21.677454956969921_wp
       do jf = 1, 3
         write(tag, '(a, es8.1, a, f6.3)') "zeta", zetas(iz), " F/F_lim", fracs(jf)
-        call hbm_peak(st, el, 150.0_wp, 230.0_wp, Flim*fracs(jf), set, pt, &
+        call hbm_peak(st, el, 150.0_wp, 230.0_wp, Flim*fracs(jf), run%set, run%pt, &
           & error)
-        call account(trim(tag)//" hbm", pt%gamma_P, pt%f_res)
-        call dti_response(st, el, 190.0_wp, Flim*fracs(jf), dset, dp, error)
-        call account(trim(tag)//" dti", dp%gamma_1, dp%f)
+        call check_finite_or_error(suite, trim(tag)//" hbm", error, run%pt%gamma_P, &
+          & run%pt%f_res)
+        call dti_response(st, el, 190.0_wp, Flim*fracs(jf), run%dset, run%dp, error)
+        call check_finite_or_error(suite, trim(tag)//" dti", error, run%dp%gamma_1, run%dp%f)
       end do
     end do
 
@@ -116,21 +114,5 @@ contains
     par%CF = ieee_value(1.0_wp, ieee_quiet_nan)
     call new_contact_element(el, par, error)
     call check_error(suite, "NaN CF", error, UDMAP_EINPUT, "CF")
-
-  contains
-
-    subroutine account(name, a, b)
-      character(len=*), intent(in) :: name
-      real(wp), intent(in) :: a, b
-      logical :: fine
-      if (allocated(error)) then
-        fine = (error%stat == UDMAP_EINPUT .or. error%stat == UDMAP_EPHYSICS .or. &
-          & error%stat == UDMAP_ENUMERIC) .and. len_trim(error%message) > 0
-        deallocate(error)
-      else
-        fine = a >= 0.0_wp .and. a <= huge(1.0_wp) .and. b >= 0.0_wp .and. b <= huge(1.0_wp)
-      end if
-      call check_true(suite, name, fine)
-    end subroutine account
   end subroutine run_hbm_stress_contact
 end module test_hbm_stress_contact

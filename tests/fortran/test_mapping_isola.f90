@@ -7,11 +7,10 @@
 module test_mapping_isola
   use udmap_core_kinds, only: wp, pi
   use udmap_core_error, only: error_type
-  use udmap_blade_type, only: blade_type
-  use udmap_damper_type, only: damper_type, new_table_damper
-  use udmap_mapping_model, only: model_type, analysis_type, point_type, curve_type, new_model, &
-    & backbone, backbone_curve, response, response_curves, BRANCH_TURNING
-  use fixtures, only: one_dof_blade
+  use udmap_damper_type, only: new_table_damper
+  use udmap_mapping_model, only: point_type, curve_type, backbone, backbone_curve, response, &
+    & response_curves, BRANCH_TURNING
+  use fixtures, only: scene_type, one_dof_blade, oscillator_model
   use testing, only: test_suite, check_close, check_true, check_no_error, unittest_type, &
     & new_unittest
   implicit none
@@ -29,10 +28,7 @@ contains
   !> Three backbone roots and a detached response curve of the one-DOF oscillator.
   subroutine run_mapping_isola(suite)
     type(test_suite), intent(inout) :: suite
-    type(blade_type), target :: blade
-    type(damper_type), target :: damper
-    type(model_type) :: model
-    type(analysis_type) :: analysis
+    type(scene_type), target :: osc
     type(error_type), allocatable :: error
     type(point_type), allocatable :: points(:), resp(:)
     type(curve_type), allocatable :: curves(:)
@@ -41,20 +37,17 @@ contains
     integer :: i, n, first, last
     real(wp), parameter :: F = 0.1_wp
 
-    call one_dof_blade(blade, 0.01_wp, error)
+    call one_dof_blade(osc%blade, 0.01_wp, error)
     n = 161
     g = [1e-4_wp, (1e-3_wp*10.0_wp**(5*real(i, wp)/(n - 2)), i = 0, n - 2)]
     kre = spread(0.25_wp, 1, n)
     kim = damping(g)
-    call new_table_damper(damper, g, kre, kim, error)
+    call new_table_damper(osc%damper, g, kre, kim, error)
     call check_no_error(suite, "table damper", error)
-    analysis%f_min = 0.7_wp/(2*pi)
-    analysis%f_max = 1.4_wp/(2*pi)
-    call new_model(model, blade, damper, analysis, error)
-    call check_no_error(suite, "model", error)
+    call oscillator_model(suite, osc, 0.7_wp, 1.4_wp, error)
     if (allocated(error)) return
 
-    call backbone(model, [F], points, error)
+    call backbone(osc%model, [F], points, error)
     call check_no_error(suite, "backbone", error)
     call check_true(suite, "three roots", size(points(1)%roots) == 3)
     if (size(points(1)%roots) /= 3) return
@@ -63,7 +56,7 @@ contains
         & residual(points(1)%roots(i), peak_omega(points(1)%roots(i))), 0.0_wp, 0.0_wp, 1e-9_wp)
     end do
 
-    call response_curves(model, [F], 60, curves, error)
+    call response_curves(osc%model, [F], 60, curves, error)
     call check_no_error(suite, "curves", error)
     associate(cv => curves(1))
       n = size(cv%f)
@@ -90,7 +83,7 @@ contains
       ! the response at a frequency through the middle of the isola: the main curve and both
       ! isola branches
       fmid = 0.5_wp*(minval(cv%f(first:last)) + maxval(cv%f(first:last)))
-      call response(model, fmid, [F], resp, error)
+      call response(osc%model, fmid, [F], resp, error)
       call check_no_error(suite, "response", error)
       call check_true(suite, "response roots: main curve and both isola branches", &
         & size(resp(1)%roots) == 3)
@@ -122,14 +115,14 @@ contains
       real(wp), intent(in) :: a, w
       complex(wp) :: H
       H = 1/cmplx(1 - w**2, 0.01_wp*w, wp)
-      res = (a*abs(1 + damper%stiffness(a)*H) - F*abs(H))/(F*abs(H))
+      res = (a*abs(1 + osc%damper%stiffness(a)*H) - F*abs(H))/(F*abs(H))
     end function residual
 
     !> The peak frequency of the layer a [rad/s] (by the model).
     real(wp) function peak_omega(a) result(w)
       real(wp), intent(in) :: a
       real(wp) :: Fb(1), fr(1)
-      call backbone_curve(model, [a], Fb, fr, error)
+      call backbone_curve(osc%model, [a], Fb, fr, error)
       w = 2*pi*fr(1)
     end function peak_omega
   end subroutine run_mapping_isola

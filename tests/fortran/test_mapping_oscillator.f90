@@ -7,12 +7,9 @@
 module test_mapping_oscillator
   use udmap_core_kinds, only: wp, pi
   use udmap_core_error, only: error_type, UDMAP_EINPUT
-  use udmap_blade_type, only: blade_type
-  use udmap_damper_type, only: damper_type, new_jenkins_damper
-  use udmap_mapping_model, only: model_type, analysis_type, point_type, curve_type, new_model, &
-    & limit_force, backbone, backbone_curve, response, response_curves, REGIME_FULL_SLIP, &
-    & REGIME_LIMIT, REGIME_STUCK, BRANCH_TURNING
-  use fixtures, only: one_dof_blade
+  use udmap_mapping_model, only: point_type, curve_type, limit_force, backbone, backbone_curve, &
+    & response, response_curves, REGIME_FULL_SLIP, REGIME_LIMIT, REGIME_STUCK, BRANCH_TURNING
+  use fixtures, only: scene_type, jenkins_oscillator, oscillator_model
   use testing, only: test_suite, check_close, check_true, check_no_error, check_error, &
     & unittest_type, new_unittest
   implicit none
@@ -30,10 +27,7 @@ contains
   !> The Jenkins oscillator through imported matrices: peaks, responses and curves.
   subroutine run_mapping_oscillator(suite)
     type(test_suite), intent(inout) :: suite
-    type(blade_type), target :: blade
-    type(damper_type), target :: damper
-    type(model_type) :: model
-    type(analysis_type) :: analysis
+    type(scene_type), target :: osc
     type(error_type), allocatable :: error
     type(point_type), allocatable :: points(:)
     type(curve_type), allocatable :: curves(:)
@@ -44,22 +38,16 @@ contains
       & 0.1_wp, 1.214018_wp, 1.083677_wp, 0.3_wp, 7.279801_wp, 1.007341_wp], [3, 3])
     integer :: i, j
 
-    call one_dof_blade(blade, c_visc, error)
-    call check_no_error(suite, "blade", error)
-    call new_jenkins_damper(damper, kt, slip, error)
-    call check_no_error(suite, "damper", error)
-    analysis%f_min = 0.8_wp/(2*pi)
-    analysis%f_max = 1.4_wp/(2*pi)
-    call new_model(model, blade, damper, analysis, error)
-    call check_no_error(suite, "model", error)
+    call jenkins_oscillator(suite, osc, c_visc, kt, slip, error)
+    call oscillator_model(suite, osc, 0.8_wp, 1.4_wp, error)
     if (allocated(error)) return
 
     ! F_lim = 2 Delta_M/(pi |phi_E/phi_g|) = 2 (2 slip)/pi with phi_E = phi_g
-    call limit_force(model, F_lim, error)
+    call limit_force(osc%model, F_lim, error)
     call check_close(suite, "F_lim", F_lim, 4*slip/pi, 1e-14_wp)
 
     ! the three published peaks, amplitude and frequency to 1e-6
-    call backbone(model, published(1, :), points, error)
+    call backbone(osc%model, published(1, :), points, error)
     call check_no_error(suite, "backbone", error)
     do i = 1, 3
       call check_close(suite, "peak amplitude", points(i)%gamma_P, published(2, i), 1e-6_wp)
@@ -78,7 +66,7 @@ contains
     call check_true(suite, "hcf below", points(1)%hcf_ok)
 
     ! backbone frequency: stuck sqrt(1.25), free 1 (each within the viscous peak shift c^2)
-    call backbone_curve(model, [1e-3_wp, 1e3_wp], F_bb, f_res, error)
+    call backbone_curve(osc%model, [1e-3_wp, 1e3_wp], F_bb, f_res, error)
     call check_no_error(suite, "backbone_curve", error)
     call check_close(suite, "stuck backbone frequency", 2*pi*f_res(1), sqrt(1.25_wp), 1e-4_wp)
     call check_close(suite, "free backbone frequency", 2*pi*f_res(2), 1.0_wp, 1e-4_wp)
@@ -86,11 +74,11 @@ contains
     omega = sqrt(1.25_wp - c_visc**2/2)
     call check_close(suite, "stuck F_bb", F_bb(1), &
       & 1e-3_wp*abs(cmplx(1.25_wp - omega**2, c_visc*omega, wp)), 1e-12_wp)
-    call backbone(model, [1e-4_wp], points, error)
+    call backbone(osc%model, [1e-4_wp], points, error)
     call check_true(suite, "stuck regime", points(1)%regime == REGIME_STUCK)
 
     ! response at a frequency: every root satisfies the scalar equation
-    call response(model, 1.05_wp/(2*pi), [0.05_wp, 0.1_wp, 0.3_wp], points, error)
+    call response(osc%model, 1.05_wp/(2*pi), [0.05_wp, 0.1_wp, 0.3_wp], points, error)
     call check_no_error(suite, "response", error)
     worst = 0
     do i = 1, size(points)
@@ -103,7 +91,7 @@ contains
 
     ! outside the band [0.8, 1.4] rad/s but within 3 f_max: answered, on the scalar equation
     ! with the oscillator's exact receptances
-    call response(model, 2.5_wp/(2*pi), [0.05_wp, 0.3_wp], points, error)
+    call response(osc%model, 2.5_wp/(2*pi), [0.05_wp, 0.3_wp], points, error)
     call check_no_error(suite, "response outside the band", error)
     if (.not.allocated(error)) then
       do i = 1, size(points)
@@ -112,13 +100,13 @@ contains
       end do
     end if
     ! f_exc beyond 3 f_max, bad forces
-    call response(model, 1.0_wp, [0.1_wp], points, error)
+    call response(osc%model, 1.0_wp, [0.1_wp], points, error)
     call check_error(suite, "f_exc beyond 3 f_max", error, UDMAP_EINPUT, "f_exc")
-    call backbone(model, [0.1_wp, -1.0_wp], points, error)
+    call backbone(osc%model, [0.1_wp, -1.0_wp], points, error)
     call check_error(suite, "negative force", error, UDMAP_EINPUT, "F_E(2)")
 
     ! mapped curves: every point on the scalar equation, a turning point at each peak
-    call response_curves(model, [0.05_wp, 0.1_wp, 0.3_wp], 30, curves, error)
+    call response_curves(osc%model, [0.05_wp, 0.1_wp, 0.3_wp], 30, curves, error)
     call check_no_error(suite, "curves", error)
     worst = 0
     do i = 1, size(curves)
@@ -128,9 +116,10 @@ contains
       call check_true(suite, "curve has many points", size(curves(i)%f) > 60)
       call check_true(suite, "curve has its peak", count(curves(i)%branch == BRANCH_TURNING) == 1)
       call check_close(suite, "curve max = peak", maxval(curves(i)%gamma_P), published(2, i), 1e-6_wp)
-      call check_close(suite, "curve starts at f_min", curves(i)%f(1), analysis%f_min, 1e-14_wp)
+      call check_close(suite, "curve starts at f_min", curves(i)%f(1), osc%analysis%f_min, &
+        & 1e-14_wp)
       call check_close(suite, "curve ends at f_max", curves(i)%f(size(curves(i)%f)), &
-        & analysis%f_max, 1e-14_wp)
+        & osc%analysis%f_max, 1e-14_wp)
     end do
     call check_close(suite, "curve points on the equation", worst, 0.0_wp, 0.0_wp, 1e-9_wp)
 

@@ -14,7 +14,7 @@ module test_plausibility
   use udmap_mapping_plausibility, only: warning_type, plausibility_warnings, model_warnings, &
     & WARNING_PLATFORM_MASS, WARNING_PLATFORM_INERTIA, WARNING_GAMMA_B_LARGE, &
     & WARNING_STUCK_SHIFT, WARNING_BAND_MISSES_MODE
-  use fixtures, only: blade_a_beam_params, blade_a_with_damper, blade_a_model
+  use fixtures, only: scene_type, blade_a_beam_params, blade_a_with_damper, blade_a_model
   use testing, only: test_suite, check_true, check_no_error, unittest_type, new_unittest
   implicit none
   private
@@ -65,19 +65,16 @@ contains
   !> Blade A, its damper and band: no warning, with or without the model.
   subroutine run_blade_a_none(suite)
     type(test_suite), intent(inout) :: suite
-    type(blade_type), target :: blade
-    type(damper_type), target :: damper
-    type(analysis_type) :: analysis
-    type(model_type) :: model
+    type(scene_type), target :: scene
     type(error_type), allocatable :: error
     type(warning_type), allocatable :: w(:)
-    call blade_a_with_damper(suite, blade, damper, error)
+    call blade_a_with_damper(suite, scene%blade, scene%damper, error)
     if (allocated(error)) return
-    call plausibility_warnings(blade, 150.0_wp, 230.0_wp, w, damper)
+    call plausibility_warnings(scene%blade, 150.0_wp, 230.0_wp, w, scene%damper)
     call check_true(suite, "blade A: no warning without the model", size(w) == 0)
-    call blade_a_model(suite, blade, damper, analysis, model, error)
+    call blade_a_model(suite, scene%blade, scene%damper, scene%analysis, scene%model, error)
     if (allocated(error)) return
-    call model_warnings(model, w)
+    call model_warnings(scene%model, w)
     call check_true(suite, "blade A: no warning with the model", size(w) == 0)
   end subroutine run_blade_a_none
 

@@ -13,7 +13,7 @@ module test_traveling
   use udmap_mapping_model, only: model_type, analysis_type, point_type, new_model, &
     & limit_force, backbone, REGIME_STUCK
   use udmap_baseline_wave, only: wave_hbm_type, wave_hbm_point_type, new_wave_hbm, wave_hbm_peak
-  use fixtures, only: blade_a_beam_params, blade_a_band, zgesv
+  use fixtures, only: scene_type, scene_model, blade_a_beam_params, blade_a_band, zgesv
   use testing, only: test_suite, check_close, check_true, check_no_error, check_error, &
     & unittest_type, new_unittest
   implicit none
@@ -203,10 +203,7 @@ contains
   !> blade with K(phi) on its platform (dense complex solves) is the layered f_res to 1e-8.
   subroutine run_stuck_hermitian(suite)
     type(test_suite), intent(inout) :: suite
-    type(blade_type), target :: blade
-    type(damper_type), target :: damper
-    type(model_type) :: model
-    type(analysis_type) :: analysis
+    type(scene_type), target :: scene
     type(asymmetric_params_type) :: prm
     type(error_type), allocatable :: error
     type(point_type), allocatable :: points(:)
@@ -214,28 +211,28 @@ contains
     complex(wp) :: Kphi(3, 3)
     integer :: i
     real(wp), parameter :: ibpa(3) = [90.0_wp, 165.0_wp, -45.0_wp]
-    call new_beam_blade(blade, blade_a_beam_params(), error)
+    call new_beam_blade(scene%blade, blade_a_beam_params(), error)
     call check_no_error(suite, "blade", error)
     prm = blade_a_damper_params()
     prm%mu = 1.5_wp
-    call new_asymmetric_damper(damper, prm, error)
+    call new_asymmetric_damper(scene%damper, prm, error)
     call check_no_error(suite, "damper", error)
     if (allocated(error)) return
     Kd = stuck_stiffness(prm)
     do i = 1, size(ibpa)
-      analysis = analysis_type()
-      call blade_a_band(analysis)
-      analysis%ibpa_deg = ibpa(i)
-      call new_model(model, blade, damper, analysis, error)
+      scene%analysis = analysis_type()
+      call blade_a_band(scene%analysis)
+      scene%analysis%ibpa_deg = ibpa(i)
+      call scene_model(scene, error)
       call check_no_error(suite, "model", error)
       if (allocated(error)) return
-      call backbone(model, [0.02_wp], points, error)
+      call backbone(scene%model, [0.02_wp], points, error)
       call check_no_error(suite, "backbone, stuck", error)
       if (allocated(error)) return
       call check_true(suite, "stuck regime", points(1)%regime == REGIME_STUCK)
       Kphi = Kd(1:3, 1:3) + Kd(4:6, 4:6) + exp(cmplx(0.0_wp, ibpa(i)*pi/180, wp))*Kd(1:3, 4:6) &
         & + exp(cmplx(0.0_wp, -ibpa(i)*pi/180, wp))*Kd(4:6, 1:3)
-      f_direct = linear_peak(blade, Kphi)
+      f_direct = linear_peak(scene%blade, Kphi)
       call check_close(suite, "stuck f_res against the Hermitian linear problem", &
         & points(1)%f_res, f_direct, rtol=1e-8_wp)
     end do
@@ -244,26 +241,25 @@ contains
   !> phi -> 0 gives the in-phase answer (to the sampling of the wave AFT), and 360 deg is phi = 0.
   subroutine run_phi_to_zero(suite)
     type(test_suite), intent(inout) :: suite
-    type(blade_type), target :: blade
-    type(damper_type), target :: damper
-    type(model_type) :: model0, model_eps, model_360
-    type(analysis_type) :: analysis
+    ! the scene's model is the one in phase
+    type(scene_type), target :: scene
+    type(model_type) :: model_eps, model_360
     type(error_type), allocatable :: error
     type(point_type), allocatable :: p0(:), pe(:), p360(:)
     real(wp) :: F0, Fe
     integer :: i
     real(wp), parameter :: forces(3) = [1.0_wp, 5.0_wp, 10.0_wp]
-    call new_beam_blade(blade, blade_a_beam_params(), error)
-    call new_asymmetric_damper(damper, blade_a_damper_params(), error)
+    call new_beam_blade(scene%blade, blade_a_beam_params(), error)
+    call new_asymmetric_damper(scene%damper, blade_a_damper_params(), error)
     call check_no_error(suite, "damper", error)
-    call blade_a_band(analysis)
-    call new_model(model0, blade, damper, analysis, error)
-    analysis%ibpa_deg = 1e-6_wp
-    call new_model(model_eps, blade, damper, analysis, error)
-    analysis%ibpa_deg = 360
-    call new_model(model_360, blade, damper, analysis, error)
+    call blade_a_band(scene%analysis)
+    call scene_model(scene, error)
+    scene%analysis%ibpa_deg = 1e-6_wp
+    call new_model(model_eps, scene%blade, scene%damper, scene%analysis, error)
+    scene%analysis%ibpa_deg = 360
+    call new_model(model_360, scene%blade, scene%damper, scene%analysis, error)
     call check_no_error(suite, "models", error)
-    call backbone(model0, forces, p0, error)
+    call backbone(scene%model, forces, p0, error)
     call backbone(model_eps, forces, pe, error)
     call check_no_error(suite, "backbone near phi = 0", error)
     call backbone(model_360, forces, p360, error)
@@ -275,7 +271,7 @@ contains
       call check_true(suite, "360 deg is in phase, bit for bit", &
         & p360(i)%gamma_P == p0(i)%gamma_P .and. p360(i)%f_res == p0(i)%f_res)
     end do
-    call limit_force(model0, F0, error)
+    call limit_force(scene%model, F0, error)
     call limit_force(model_eps, Fe, error)
     call check_no_error(suite, "limit forces", error)
     call check_close(suite, "F_lim(phi -> 0) = 2 Delta_M/(pi |phi_E/phi_g|)", Fe, F0, rtol=1e-3_wp)
@@ -284,21 +280,20 @@ contains
   !> A blade without platform translations cannot carry a traveling wave.
   subroutine run_inputs(suite)
     type(test_suite), intent(inout) :: suite
-    type(blade_type), target :: beam, mat
-    type(damper_type), target :: damper
-    type(model_type) :: model
-    type(analysis_type) :: analysis
+    type(blade_type) :: beam
+    type(scene_type), target :: scene
     type(error_type), allocatable :: error
     type(point_type), allocatable :: points(:)
     call new_beam_blade(beam, blade_a_beam_params(), error)
-    call new_matrices_blade(mat, beam%M, beam%K, beam%gamma_dof, beam%exc_dof, 0.002_wp, error)
+    call new_matrices_blade(scene%blade, beam%M, beam%K, beam%gamma_dof, beam%exc_dof, 0.002_wp, &
+      & error)
     call check_no_error(suite, "matrices blade", error)
-    call new_asymmetric_damper(damper, blade_a_damper_params(), error)
-    call blade_a_band(analysis)
-    analysis%ibpa_deg = 90
-    call new_model(model, mat, damper, analysis, error)
+    call new_asymmetric_damper(scene%damper, blade_a_damper_params(), error)
+    call blade_a_band(scene%analysis)
+    scene%analysis%ibpa_deg = 90
+    call scene_model(scene, error)
     call check_no_error(suite, "model", error)
-    call backbone(model, [2.0_wp], points, error)
+    call backbone(scene%model, [2.0_wp], points, error)
     call check_error(suite, "phi /= 0 without u_P", error, UDMAP_EINPUT, "u_dof")
   end subroutine run_inputs
 
@@ -306,10 +301,7 @@ contains
   !> Newton on every harmonic, continuation and the maximum over frequency) agree to 1e-6.
   subroutine run_standard_method(suite)
     type(test_suite), intent(inout) :: suite
-    type(blade_type), target :: blade
-    type(damper_type), target :: damper
-    type(model_type) :: model
-    type(analysis_type) :: analysis
+    type(scene_type), target :: scene
     type(error_type), allocatable :: error
     type(point_type), allocatable :: points(:)
     type(wave_hbm_type) :: hbm
@@ -317,21 +309,21 @@ contains
     integer :: i, j, k
     real(wp), parameter :: ibpa(2) = [90.0_wp, 270.0_wp], forces(2) = [2.0_wp, 10.0_wp]
     integer, parameter :: harmonics(2) = [1, 3]
-    call new_beam_blade(blade, blade_a_beam_params(), error)
-    call new_asymmetric_damper(damper, blade_a_damper_params(), error)
+    call new_beam_blade(scene%blade, blade_a_beam_params(), error)
+    call new_asymmetric_damper(scene%damper, blade_a_damper_params(), error)
     call check_no_error(suite, "damper", error)
     do k = 1, size(harmonics)
       do i = 1, size(ibpa)
-        analysis = analysis_type()
-        call blade_a_band(analysis)
-        analysis%ibpa_deg = ibpa(i)
-        analysis%harmonics = harmonics(k)
-        call new_model(model, blade, damper, analysis, error)
-        call backbone(model, forces, points, error)
+        scene%analysis = analysis_type()
+        call blade_a_band(scene%analysis)
+        scene%analysis%ibpa_deg = ibpa(i)
+        scene%analysis%harmonics = harmonics(k)
+        call scene_model(scene, error)
+        call backbone(scene%model, forces, points, error)
         call check_no_error(suite, "layered backbone", error)
         if (allocated(error)) return
-        call new_wave_hbm(hbm, blade, damper%geometry, damper%params%CF, ibpa(i)*pi/180, &
-          & harmonics(k), error)
+        call new_wave_hbm(hbm, scene%blade, scene%damper%geometry, scene%damper%params%CF, &
+          & ibpa(i)*pi/180, harmonics(k), error)
         call check_no_error(suite, "standard method", error)
         do j = 1, size(forces)
           call wave_hbm_peak(hbm, forces(j), 2*pi*points(j)%f_res*1.01_wp, 2*pi*150, pt, error)
