@@ -453,16 +453,23 @@ contains
     integer, intent(in) :: deg
     real(wp), intent(in) :: f(0:DEG_MAX)
     real(wp), intent(out) :: c(0:DEG_MAX)
-    real(wp) :: cosines(0:2*DEG_MAX-1), w
-    integer :: j, m
+    real(wp) :: cosines(0:2*DEG_MAX-1), wf(0:DEG_MAX)
+    integer :: j, m, jm
     do m = 0, 2*deg - 1
       cosines(m) = cos(pi*m/deg)
     end do
+    ! the end points weigh half
+    wf(0) = 0.5_wp*f(0)
+    wf(1:deg-1) = f(1:deg-1)
+    wf(deg) = 0.5_wp*f(deg)
     c = 0
     do j = 0, deg
+      ! jm = j m modulo 2 deg, stepped
+      jm = 0
       do m = 0, deg
-        w = merge(0.5_wp, 1.0_wp, m == 0 .or. m == deg)
-        c(j) = c(j) + w*f(m)*cosines(modulo(j*m, 2*deg))
+        c(j) = c(j) + wf(m)*cosines(jm)
+        jm = jm + j
+        if (jm >= 2*deg) jm = jm - 2*deg
       end do
       c(j) = 2*c(j)/deg
     end do
