@@ -141,11 +141,13 @@ contains
   !> to +p, then gamma = p cos(tau) cycle after cycle until the contact forces at tau = 0
   !> repeat; the last cycle is the loop. `val` (if present, val%p0 = p) returns the exact
   !> range of amplitudes with the same event topology. `work` serves one geometry geo.
+  !> Without `loop` (a probe of the topology interval: val) the branches are not recorded;
+  !> recording does not change the path.
   subroutine steady_loop(geo, ramp, p, loop, work, error, val)
     type(damper_geometry_type), intent(in) :: geo
     type(ramp_type), intent(in) :: ramp
     real(wp), intent(in) :: p
-    type(loop_type), intent(inout) :: loop
+    type(loop_type), intent(inout), optional :: loop
     type(loop_workspace_type), intent(inout) :: work
     type(error_type), allocatable, intent(out) :: error
     type(validity_type), intent(inout), optional :: val
@@ -164,16 +166,22 @@ contains
     if (allocated(error)) return
     n_geo = 0
     dx_prev = 0
-    loop%extrapolated = .false.
+    if (present(loop)) loop%extrapolated = .false.
     do c = 1, MAX_CYCLES
       start = st
-      call reset_record(work%desc)
-      call record_start(geo, st, work%desc)
-      call trace_gamma(geo, st, -p, -1.0_wp, error, work%desc, val, work%eqc)
-      if (allocated(error)) return
-      call reset_record(work%asc)
-      call record_start(geo, st, work%asc)
-      call trace_gamma(geo, st, p, 1.0_wp, error, work%asc, val, work%eqc)
+      if (present(loop)) then
+        call reset_record(work%desc)
+        call record_start(geo, st, work%desc)
+        call trace_gamma(geo, st, -p, -1.0_wp, error, work%desc, val, work%eqc)
+        if (allocated(error)) return
+        call reset_record(work%asc)
+        call record_start(geo, st, work%asc)
+        call trace_gamma(geo, st, p, 1.0_wp, error, work%asc, val, work%eqc)
+      else
+        call trace_gamma(geo, st, -p, -1.0_wp, error, val=val, cache=work%eqc)
+        if (allocated(error)) return
+        call trace_gamma(geo, st, p, 1.0_wp, error, val=val, cache=work%eqc)
+      end if
       if (allocated(error)) return
       if (same_forces(geo, start, st, ramp%CF)) exit
       ! Shakedown: with the event sequence of the cycle fixed, one cycle is an affine map of
@@ -210,7 +218,7 @@ contains
             lambda = 0
           end if
           if (lambda > 0) then
-            loop%extrapolated = .true.
+            if (present(loop)) loop%extrapolated = .true.
             x = x + lambda*dx
             st%q = x(1:3)
             st%w = x(4:6)
@@ -234,6 +242,7 @@ contains
         & UDMAP_EPHYSICS)
       return
     end if
+    if (.not. present(loop)) return
     loop%p0 = p
     loop%cycles = min(c, MAX_CYCLES)
     call to_half(work%desc, p, -1, loop%desc)

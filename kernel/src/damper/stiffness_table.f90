@@ -219,9 +219,8 @@ contains
     subroutine probe(pp, plo, phi)
       real(wp), intent(in) :: pp
       real(wp), intent(out) :: plo, phi
-      type(loop_type) :: scratch
       val = validity_type(p0=pp, lo=0.0_wp)
-      call steady_loop(geo, ramp, pp, scratch, work, error, val)
+      call steady_loop(geo, ramp, pp, work=work, error=error, val=val)
       plo = val%lo
       phi = val%hi
     end subroutine probe
