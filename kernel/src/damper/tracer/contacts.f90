@@ -6,8 +6,8 @@ module udmap_damper_tracer_contacts
   use udmap_core_kinds, only: wp
   implicit none
   private
-  public :: contact_forces, compute_rates, mode_stiffness, solve3, cofactors3, mode_code, &
-    & code_modes
+  public :: contact_forces, contact_force, compute_rates, mode_stiffness, solve3, cofactors3, &
+    & mode_code, code_modes
 
   !> Contact states.
   integer, parameter, public :: CONTACT_OPEN = 0, CONTACT_STICK = 1, CONTACT_SLIP_POS = 2, &
@@ -126,22 +126,42 @@ contains
         g(i) = g(i) + off(1,i)
         s(i) = s(i) - off(2,i)
       end if
+      ! (contact_force's cases, written out: this loop is the tracer's hottest)
       select case (mode(i))
       case (CONTACT_STICK)
         N(i) = geo%kn(i)*g(i)
         T(i) = -geo%kt(i)*(s(i) - w(i))
-      case (CONTACT_SLIP_POS)
+      case (CONTACT_SLIP_POS, CONTACT_SLIP_NEG)
         N(i) = geo%kn(i)*g(i)
-        T(i) = geo%mu*N(i)
-      case (CONTACT_SLIP_NEG)
-        N(i) = geo%kn(i)*g(i)
-        T(i) = -geo%mu*N(i)
+        T(i) = merge(geo%mu, -geo%mu, mode(i) == CONTACT_SLIP_POS)*N(i)
       case default
         N(i) = 0
         T(i) = 0
       end select
     end do
   end subroutine contact_forces
+
+  !> The forces N, T of contact i in the state mode_i from its gap g, travel s and slider w.
+  pure subroutine contact_force(geo, i, mode_i, g, s, w, N, T)
+    type(damper_geometry_type), intent(in) :: geo
+    integer, intent(in) :: i, mode_i
+    real(wp), intent(in) :: g, s, w
+    real(wp), intent(out) :: N, T
+    select case (mode_i)
+    case (CONTACT_STICK)
+      N = geo%kn(i)*g
+      T = -geo%kt(i)*(s - w)
+    case (CONTACT_SLIP_POS)
+      N = geo%kn(i)*g
+      T = geo%mu*N
+    case (CONTACT_SLIP_NEG)
+      N = geo%kn(i)*g
+      T = -geo%mu*N
+    case default
+      N = 0
+      T = 0
+    end select
+  end subroutine contact_force
 
   !> Rates of q, gaps, forces, sliders and moment per unit travel for the contact states
   !> `mode` under load rates (dgam, dcf); ok is false for a singular equilibrium.

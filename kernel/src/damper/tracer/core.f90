@@ -8,8 +8,8 @@ module udmap_damper_tracer_core
   use udmap_core_error, only: error_type, fatal_error, UDMAP_EPHYSICS, UDMAP_ENUMERIC
   use udmap_damper_tracer_contacts, only: damper_geometry_type, damper_state_type, &
     & validity_type, branch_record_type, mode_log_type, rates_type, equilibrium_cache_type, &
-    & contact_forces, compute_rates, mode_stiffness, solve3, cofactors3, mode_code, &
-    & code_modes, CONTACT_OPEN, CONTACT_STICK, CONTACT_SLIP_POS, CONTACT_SLIP_NEG
+    & contact_forces, contact_force, compute_rates, mode_stiffness, solve3, cofactors3, &
+    & mode_code, code_modes, CONTACT_OPEN, CONTACT_STICK, CONTACT_SLIP_POS, CONTACT_SLIP_NEG
   implicit none
   private
   public :: trace_core, append_vertex
@@ -87,9 +87,10 @@ contains
         call contact_forces(geo, st%mode, st%q, st%gamma, st%w, g, s, N, T, st%off)
         if (with_p) call contact_forces(geo, st%mode, st%q_p, st%gamma_p, st%w_p, gp, sp, Np, Tp)
       end if
-      known = .false.
       call snap_sliders(geo, st, with_p, s, T, sp, Tp)
-      call resolve_mode(geo, st, dgam, dcf, pred, rt, error, cache, g, s, N, T, gp, sp, Np, Tp)
+      call resolve_mode(geo, st, dgam, dcf, pred, rt, error, cache, g, s, N, T, gp, sp, Np, Tp, &
+        & known .or. with_p)
+      known = .false.
       if (allocated(error)) return
       if (.not. with_p) then
         gp = 0
@@ -273,9 +274,10 @@ contains
   !> Chooses the contact states for moving on with load rates (dgam, dcf): contacts inside
   !> their stick cone or clearly open keep their state; contacts on the cone (stick or slip)
   !> or at zero gap (open, stick, slip+-) take the combination whose rates are consistent.
-  !> `pred` is tried first. g, s, N, T (gp, sp, Np, Tp: their p-derivatives) are the
-  !> state's on entry and on return.
-  subroutine resolve_mode(geo, st, dgam, dcf, pred, rt, error, cache, g, s, N, T, gp, sp, Np, Tp)
+  !> `pred` is tried first. g, s, N, T (gp, sp, Np, Tp: their p-derivatives, given when
+  !> p_known) are the state's on entry and on return.
+  subroutine resolve_mode(geo, st, dgam, dcf, pred, rt, error, cache, g, s, N, T, gp, sp, Np, &
+      & Tp, p_known)
     type(damper_geometry_type), intent(in) :: geo
     type(damper_state_type), intent(inout) :: st
     real(wp), intent(in) :: dgam, dcf
@@ -284,6 +286,7 @@ contains
     type(error_type), allocatable, intent(out) :: error
     type(equilibrium_cache_type), intent(inout), optional :: cache
     real(wp), intent(inout) :: g(3), s(3), N(3), T(3), gp(3), sp(3), Np(3), Tp(3)
+    logical, intent(in) :: p_known
     real(wp) :: tolF, tolR
     integer :: ncand(3), cand(4,3), cls(3), sig0(3), i, i1, i2, i3, trial(3), old(3)
     logical :: ok, any_regular
@@ -373,22 +376,21 @@ contains
     end function consistent
 
     !> A contact that opens or closes starts with its spring unloaded: w = s. The forces of
-    !> the new states: where a contact closes to stick, T = -kt (s - w) with the new w.
+    !> the contacts that change state (gaps and travels stay: the same q, gamma).
     subroutine snap_new_states(old)
       integer, intent(in) :: old(3)
       integer :: j
       if (all(old == st%mode)) return
-      call contact_forces(geo, st%mode, st%q, st%gamma, st%w, g, s, N, T, st%off)
-      call contact_forces(geo, st%mode, st%q_p, st%gamma_p, st%w_p, gp, sp, Np, Tp)
+      if (.not. p_known) &
+        & call contact_forces(geo, old, st%q_p, st%gamma_p, st%w_p, gp, sp, Np, Tp)
       do j = 1, 3
+        if (st%mode(j) == old(j)) cycle
         if ((old(j) == CONTACT_OPEN) .neqv. (st%mode(j) == CONTACT_OPEN)) then
           st%w(j) = s(j)
           st%w_p(j) = sp(j)
-          if (st%mode(j) == CONTACT_STICK) then
-            T(j) = -geo%kt(j)*(s(j) - st%w(j))
-            Tp(j) = -geo%kt(j)*(sp(j) - st%w_p(j))
-          end if
         end if
+        call contact_force(geo, j, st%mode(j), g(j), s(j), st%w(j), N(j), T(j))
+        call contact_force(geo, j, st%mode(j), gp(j), sp(j), st%w_p(j), Np(j), Tp(j))
       end do
     end subroutine snap_new_states
   end subroutine resolve_mode
