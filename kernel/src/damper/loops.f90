@@ -14,8 +14,8 @@ module udmap_damper_loops
   use udmap_core_kinds, only: wp, pi
   use udmap_core_error, only: error_type, fatal_error, UDMAP_EPHYSICS
   use udmap_damper_tracer_core, only: damper_geometry_type, damper_state_type, &
-    & branch_record_type, validity_type, equilibrium_cache_type, contact_forces, CONTACT_OPEN, &
-    & CONTACT_STICK
+    & branch_record_type, validity_type, equilibrium_cache_type, rates_cache_type, &
+    & contact_forces, CONTACT_OPEN, CONTACT_STICK
   use udmap_damper_tracer, only: virgin_state, ramp_CF, trace_gamma, trace_to_plateau, &
     & record_start, reset_record, same_forces
   implicit none
@@ -72,6 +72,8 @@ module udmap_damper_loops
     !> The equilibrium matrices met by the loops of one damper geometry (the same arithmetic
     !> whichever loop meets a contact state first; kept across the loops of a table).
     type(equilibrium_cache_type) :: eqc
+    !> The rates of the contact states met by those loops (the same arithmetic, kept).
+    type(rates_cache_type) :: rates
   end type loop_workspace_type
 
   !> The base cycle (PHYSICS.md 2.3): the branches from a reversal on one plateau until the
@@ -162,7 +164,7 @@ contains
       j = j - 1
     end do
     st = ramp%states(j)
-    call trace_gamma(geo, st, p, 1.0_wp, error, val=val, cache=work%eqc)
+    call trace_gamma(geo, st, p, 1.0_wp, error, val=val, cache=work%eqc, rates=work%rates)
     if (allocated(error)) return
     n_geo = 0
     dx_prev = 0
@@ -172,15 +174,15 @@ contains
       if (present(loop)) then
         call reset_record(work%desc)
         call record_start(geo, st, work%desc)
-        call trace_gamma(geo, st, -p, -1.0_wp, error, work%desc, val, work%eqc)
+        call trace_gamma(geo, st, -p, -1.0_wp, error, work%desc, val, work%eqc, work%rates)
         if (allocated(error)) return
         call reset_record(work%asc)
         call record_start(geo, st, work%asc)
-        call trace_gamma(geo, st, p, 1.0_wp, error, work%asc, val, work%eqc)
+        call trace_gamma(geo, st, p, 1.0_wp, error, work%asc, val, work%eqc, work%rates)
       else
-        call trace_gamma(geo, st, -p, -1.0_wp, error, val=val, cache=work%eqc)
+        call trace_gamma(geo, st, -p, -1.0_wp, error, val=val, cache=work%eqc, rates=work%rates)
         if (allocated(error)) return
-        call trace_gamma(geo, st, p, 1.0_wp, error, val=val, cache=work%eqc)
+        call trace_gamma(geo, st, p, 1.0_wp, error, val=val, cache=work%eqc, rates=work%rates)
       end if
       if (allocated(error)) return
       if (same_forces(geo, start, st, ramp%CF)) exit

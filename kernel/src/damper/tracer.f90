@@ -16,7 +16,7 @@ module udmap_damper_tracer
   use udmap_core_error, only: error_type, fatal_error, UDMAP_EPHYSICS
   use udmap_damper_params, only: asymmetric_params_type, check_asymmetric_params
   use udmap_damper_tracer_core, only: damper_geometry_type, damper_state_type, validity_type, &
-    & equilibrium_cache_type, &
+    & equilibrium_cache_type, rates_cache_type, &
     & branch_record_type, mode_log_type, mode_code, &
     & contact_forces, trace_core, solve3, append_vertex
   implicit none
@@ -274,7 +274,7 @@ contains
 
   !> Traces gamma to `target` (p-derivative `target_p`), appending the vertices to `rec` and
   !> narrowing `val` to the range of p over which the event sequence holds.
-  subroutine trace_gamma(geo, state, target, target_p, error, rec, val, cache)
+  subroutine trace_gamma(geo, state, target, target_p, error, rec, val, cache, rates)
     type(damper_geometry_type), intent(in) :: geo
     type(damper_state_type), intent(inout) :: state
     real(wp), intent(in) :: target, target_p
@@ -283,10 +283,12 @@ contains
     type(validity_type), intent(inout), optional :: val
     !> The equilibrium matrices of geo's damper met so far (trace_core).
     type(equilibrium_cache_type), intent(inout), optional :: cache
+    !> The rates of the contact states met so far (trace_core; one geometry).
+    type(rates_cache_type), intent(inout), optional :: rates
     real(wp) :: travel, dM
     if (target == state%gamma) return
     call trace_core(geo, state, 1, merge(1, -1, target > state%gamma), target, target_p, &
-      & .true., travel, dM, error, rec, val, cache=cache)
+      & .true., travel, dM, error, rec, val, cache=cache, rates=rates)
   end subroutine trace_gamma
 
   !> Traces gamma in `direction` (+1, -1) until no contact changes state any more (a plateau);

@@ -106,6 +106,14 @@ module udmap_damper_tracer_contacts
     real(wp) :: C(3, 3, 0:63) = 0, det(0:63) = 0
   end type equilibrium_cache_type
 
+  !> The rates (compute_rates) of the contact states met so far in gamma (dgam = -1, +1; dcf =
+  !> 0), for one damper geometry (they depend on the lever arms too): the loops of one table.
+  type, public :: rates_cache_type
+    logical :: known(0:63, 2) = .false.
+    logical :: ok(0:63, 2)
+    type(rates_type) :: rt(0:63, 2)
+  end type rates_cache_type
+
 contains
 
   !> Normal approach g, tangential displacement s and forces N, T of the three contacts for

@@ -8,14 +8,15 @@ module udmap_damper_tracer_core
   use udmap_core_error, only: error_type, fatal_error, UDMAP_EPHYSICS, UDMAP_ENUMERIC
   use udmap_damper_tracer_contacts, only: damper_geometry_type, damper_state_type, &
     & validity_type, branch_record_type, mode_log_type, rates_type, equilibrium_cache_type, &
-    & contact_forces, contact_force, compute_rates, mode_stiffness, solve3, cofactors3, &
-    & mode_code, code_modes, CONTACT_OPEN, CONTACT_STICK, CONTACT_SLIP_POS, CONTACT_SLIP_NEG
+    & rates_cache_type, contact_forces, contact_force, compute_rates, mode_stiffness, solve3, &
+    & cofactors3, mode_code, code_modes, CONTACT_OPEN, CONTACT_STICK, CONTACT_SLIP_POS, &
+    & CONTACT_SLIP_NEG
   implicit none
   private
   public :: trace_core, append_vertex
   public :: damper_geometry_type, damper_state_type, validity_type, branch_record_type, &
-    & mode_log_type, rates_type, equilibrium_cache_type, contact_forces, cofactors3, &
-    & compute_rates, mode_stiffness, solve3, mode_code, code_modes, CONTACT_OPEN, &
+    & mode_log_type, rates_type, equilibrium_cache_type, rates_cache_type, contact_forces, &
+    & cofactors3, compute_rates, mode_stiffness, solve3, mode_code, code_modes, CONTACT_OPEN, &
     & CONTACT_STICK, CONTACT_SLIP_POS, CONTACT_SLIP_NEG
 
   !> Classes of a contact at a point, which decide its candidate states.
@@ -35,7 +36,7 @@ contains
   !> at `target`, otherwise after the last event (travel = distance to it, dM = moment rate of
   !> the final states per unit travel).
   subroutine trace_core(geo, st, var, dir, target, target_p, has_target, travel, dM, error, &
-      & rec, val, frozen, max_travel, modes, cache)
+      & rec, val, frozen, max_travel, modes, cache, rates)
     type(damper_geometry_type), intent(in) :: geo
     type(damper_state_type), intent(inout) :: st
     integer, intent(in) :: var, dir
@@ -50,6 +51,8 @@ contains
     type(mode_log_type), intent(inout), optional :: modes
     !> The equilibrium matrices of geo's damper met so far (see compute_rates).
     type(equilibrium_cache_type), intent(inout), optional :: cache
+    !> The rates of the contact states met so far (one geometry, gamma traces: see its type).
+    type(rates_cache_type), intent(inout), optional :: rates
     type(rates_type) :: rt
     integer :: pred(3), nev, i, nc, ic, best, ev_contact(10), ev_state(10)
     real(wp) :: dgam, dcf, tc(10), tcp(10), rate_of(10), g(3), s(3), N(3), T(3), gp(3), sp(3), Np(3), Tp(3)
@@ -89,7 +92,7 @@ contains
       end if
       call snap_sliders(geo, st, with_p, s, T, sp, Tp)
       call resolve_mode(geo, st, dgam, dcf, pred, rt, error, cache, g, s, N, T, gp, sp, Np, Tp, &
-        & known .or. with_p)
+        & known .or. with_p, rates)
       known = .false.
       if (allocated(error)) return
       if (.not. with_p) then
@@ -277,7 +280,7 @@ contains
   !> `pred` is tried first. g, s, N, T (gp, sp, Np, Tp: their p-derivatives, given when
   !> p_known) are the state's on entry and on return.
   subroutine resolve_mode(geo, st, dgam, dcf, pred, rt, error, cache, g, s, N, T, gp, sp, Np, &
-      & Tp, p_known)
+      & Tp, p_known, rates)
     type(damper_geometry_type), intent(in) :: geo
     type(damper_state_type), intent(inout) :: st
     real(wp), intent(in) :: dgam, dcf
@@ -287,6 +290,7 @@ contains
     type(equilibrium_cache_type), intent(inout), optional :: cache
     real(wp), intent(inout) :: g(3), s(3), N(3), T(3), gp(3), sp(3), Np(3), Tp(3)
     logical, intent(in) :: p_known
+    type(rates_cache_type), intent(inout), optional :: rates
     real(wp) :: tolF, tolR
     integer :: ncand(3), cand(4,3), cls(3), sig0(3), i, i1, i2, i3, trial(3), old(3)
     logical :: ok, any_regular
@@ -325,7 +329,7 @@ contains
       do i2 = 1, ncand(2)
         do i3 = 1, ncand(3)
           trial = [cand(i1,1), cand(i2,2), cand(i3,3)]
-          call compute_rates(geo, trial, dgam, dcf, rt, ok, cache)
+          call trial_rates()
           if (.not. ok) cycle
           any_regular = .true.
           if (consistent()) then
@@ -348,6 +352,23 @@ contains
     end if
 
   contains
+
+    !> rt and ok of the trial states: from the rates cache where it serves (a gamma trace).
+    subroutine trial_rates()
+      integer :: code, k
+      if (present(rates) .and. dcf == 0 .and. abs(dgam) == 1) then
+        code = mode_code(trial)
+        k = merge(2, 1, dgam > 0)
+        if (.not. rates%known(code, k)) then
+          call compute_rates(geo, trial, dgam, dcf, rates%rt(code, k), rates%ok(code, k), cache)
+          rates%known(code, k) = .true.
+        end if
+        rt = rates%rt(code, k)
+        ok = rates%ok(code, k)
+      else
+        call compute_rates(geo, trial, dgam, dcf, rt, ok, cache)
+      end if
+    end subroutine trial_rates
 
     logical function consistent()
       integer :: j, sg
