@@ -9,7 +9,7 @@ module udmap_contact_element_asymmetric
   use udmap_core_error, only: error_type
   use udmap_damper_params, only: asymmetric_params_type
   use udmap_damper_tracer_core, only: damper_geometry_type, damper_state_type, &
-    & branch_record_type, equilibrium_cache_type, contact_forces, CONTACT_OPEN
+    & branch_record_type, equilibrium_cache_type, rates_cache_type, contact_forces, CONTACT_OPEN
   use udmap_damper_tracer, only: new_damper_geometry, virgin_state, ramp_CF, trace_gamma, &
     & restoring_moment, reset_record, record_start
   use udmap_contact_element, only: hysteretic_element_type, event_list_type
@@ -32,6 +32,8 @@ module udmap_contact_element_asymmetric
     !> The equilibrium matrices of the damper's contact states met so far (its geometry is
     !> fixed: the same arithmetic, kept).
     type(equilibrium_cache_type) :: eqc
+    !> The rates of those contact states in gamma (the same arithmetic, kept).
+    type(rates_cache_type) :: rates
   contains
     procedure :: load => contact_load
     procedure :: advance => contact_advance
@@ -93,7 +95,8 @@ contains
     end if
     call reset_record(self%rec)
     call record_start(self%geo, self%state, self%rec)
-    call trace_gamma(self%geo, self%state, gamma_target, 0.0_wp, error, self%rec, cache=self%eqc)
+    call trace_gamma(self%geo, self%state, gamma_target, 0.0_wp, error, self%rec, cache=self%eqc, &
+      & rates=self%rates)
     if (allocated(error)) then
       M_r = 0.0_wp
       return
