@@ -17,6 +17,8 @@
  *   mapping  LABEL repeats layers sweep_points
  *   standard LABEL repeats variant tol tol_path peak_tol ds_max max_angle aft_samples
  *            warm_start full_band
+ *   harmonics LABEL repeats H                 the backbone at H harmonics (0: auto), default
+ *                                            tolerances
  * and prints one JSON object per job: {"name", "kind", "samples": [...], "seconds_median",
  * "seconds_min", "seconds_max", "repeats", "gamma_P": [...], "f_res": [...], "sigma_a": [...]}
  * (standard:
@@ -25,6 +27,9 @@
  * What is timed, for the 10 forces, from the damper parameters on (the blade and its
  * bare-blade data exist; they do not depend on the damper):
  *   backbone  udmap_new_damper_asymmetric (tracing, stiffness table) + set_damper + backbone;
+ *   harmonics the same at H harmonics, cold: each repeat's damper has CF changed by a relative
+ *             1e-12 r, so the model rebuilds what depends on the damper (with equal parameters
+ *             it would keep the multi-harmonic roots of the last repeat as warm starts);
  *   mapping   the same with udmap_model_curves (`layers`) and the peaks read off the mapped
  *             points (the highest point of a curve that is not a turning point);
  *   standard  udmap_new_contact_asymmetric + udmap_hbm_peaks (harmonic balance with H = 1,
@@ -197,14 +202,18 @@ int main(void) {
       }
       report(tag, label, t, n, g, f, s);
       printf("}\n");
-    } else if (!strcmp(tag, "backbone") || !strcmp(tag, "mapping")) {
+    } else if (!strcmp(tag, "backbone") || !strcmp(tag, "mapping") ||
+               !strcmp(tag, "harmonics")) {
       udmap_analysis an = an0;
       udmap_model model = NULL;
       udmap_damper fresh = NULL;
+      udmap_asymmetric_params dr = dp;
       udmap_point pts[NF];
-      int layers = 0, mapping = !strcmp(tag, "mapping");
+      int layers = 0, mapping = !strcmp(tag, "mapping"), cold = !strcmp(tag, "harmonics");
       if (mapping) {
         if (scanf("%d %d", &layers, &an.sweep_points) != 2) return 2;
+      } else if (cold) {
+        if (scanf("%d", &an.harmonics) != 1) return 2;
       } else {
         if (scanf("%lf %d", &an.rtol, &an.grid_per_decade) != 2) return 2;
       }
@@ -218,8 +227,10 @@ int main(void) {
         fail(err, "backbone");
       }
       for (r = 0; r < n; r++) {
-        double t0 = now();
-        if (udmap_new_damper_asymmetric(err, &dp, &fresh)) fail(err, "damper");
+        double t0;
+        if (cold) dr.CF = dp.CF * (1 + 1e-12 * (r + 1));
+        t0 = now();
+        if (udmap_new_damper_asymmetric(err, &dr, &fresh)) fail(err, "damper");
         if (udmap_model_set_damper(err, model, fresh)) fail(err, "set damper");
         if (mapping) {
           if (udmap_model_curves(err, model, NF, F, layers)) fail(err, "curves");
