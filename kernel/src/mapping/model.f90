@@ -28,14 +28,10 @@ module udmap_mapping_model
     & check_model_damper, set_damper, limit_force_backbone, EIGEN_AUTO, &
     & EIGEN_DIRECT, EIGEN_MODAL, REGIME_STUCK, REGIME_PARTIAL_SLIP, REGIME_FULL_SLIP, &
     & REGIME_LIMIT, BRANCH_LOWER, BRANCH_UPPER, BRANCH_TURNING
-  use udmap_mapping_harmonic_mapping, only: inphase_response => response, &
-    & inphase_response_curves => response_curves, &
-    & harmonics_near_modes, set_harmonics, check_harmonics
+  use udmap_mapping_harmonic_mapping, only: harmonics_near_modes, set_harmonics, check_harmonics
   use udmap_mapping_admissible, only: admissible_force
   use udmap_mapping_traveling_dispatch, only: is_traveling, limit_force, backbone, &
-    & backbone_curve, cover_forces
-  use udmap_mapping_traveling_backbone, only: wave_response
-  use udmap_mapping_traveling_curves, only: wave_curves
+    & backbone_curve, cover_forces, response, response_curves
   implicit none
   private
   public :: analysis_type, point_type, curve_type, model_type
@@ -156,33 +152,5 @@ contains
     if (allocated(error)) return
     model%analysis%ibpa_deg = ibpa_deg
   end subroutine set_ibpa
-
-  !> The response at the excitation frequency f_exc [Hz] for the forces F_E [N].
-  subroutine response(model, f_exc, F_E, points, error)
-    type(model_type), intent(inout) :: model
-    real(wp), intent(in) :: f_exc
-    real(wp), intent(in) :: F_E(:)
-    type(point_type), allocatable, intent(out) :: points(:)
-    type(error_type), allocatable, intent(out) :: error
-    if (is_traveling(model)) then
-      call wave_response(model, f_exc, F_E, points, error)
-    else
-      call inphase_response(model, f_exc, F_E, points, error)
-    end if
-  end subroutine response
-
-  !> The non-linear response curves for the forces F_E [N] (PHYSICS.md 3).
-  subroutine response_curves(model, F_E, layers, curves, error)
-    type(model_type), intent(inout) :: model
-    real(wp), intent(in) :: F_E(:)
-    integer, intent(in) :: layers
-    type(curve_type), allocatable, intent(out) :: curves(:)
-    type(error_type), allocatable, intent(out) :: error
-    if (is_traveling(model)) then
-      call wave_curves(model, F_E, layers, curves, error)
-    else
-      call inphase_response_curves(model, F_E, layers, curves, error)
-    end if
-  end subroutine response_curves
 
 end module udmap_mapping_model

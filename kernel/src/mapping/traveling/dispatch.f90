@@ -1,22 +1,25 @@
-!> In phase or traveling (PHYSICS.md 2.6): the backbone and the limit force of a model, taken by
-!> the traveling-wave layers when the analysis has an interblade phase other than 0 and the
-!> damper is the asymmetric one (the other kinds act on gamma_P alone: phi does not change
-!> them), by the in-phase mapping otherwise. Below the model's face and the admissible force,
-!> which both answer at the model's phase through it.
+!> In phase or traveling (PHYSICS.md 2.6): the backbone, the limit force, the response and the
+!> response curves of a model, taken by the traveling-wave layers when the analysis has an
+!> interblade phase other than 0 and the damper is the asymmetric one (the other kinds act on
+!> gamma_P alone: phi does not change them), by the in-phase mapping otherwise. Below the
+!> model's face and the admissible force, which both answer at the model's phase through it.
 module udmap_mapping_traveling_dispatch
   use udmap_core_kinds, only: wp
   use udmap_core_error, only: error_type
   use udmap_damper_type, only: DAMPER_ASYMMETRIC
-  use udmap_mapping_model_data, only: model_type, point_type, &
+  use udmap_mapping_model_data, only: model_type, point_type, curve_type, &
     & inphase_limit_force => limit_force
   use udmap_mapping_harmonic_mapping, only: inphase_backbone => backbone, &
-    & inphase_cover_forces => cover_forces
+    & inphase_cover_forces => cover_forces, inphase_response => response, &
+    & inphase_response_curves => response_curves
   use udmap_mapping_traveling_backbone, only: wave_backbone, wave_limit_force, &
-    & wave_backbone_curve, wave_cover_forces
+    & wave_backbone_curve, wave_cover_forces, wave_response
+  use udmap_mapping_traveling_curves, only: wave_curves
   use udmap_mapping_backbone, only: inphase_backbone_curve => backbone_curve
   implicit none
   private
-  public :: is_traveling, limit_force, backbone, backbone_curve, cover_forces
+  public :: is_traveling, limit_force, backbone, backbone_curve, cover_forces, response, &
+    & response_curves
 
 contains
 
@@ -80,4 +83,31 @@ contains
       call inphase_backbone_curve(model, gamma, F_bb, f_res, error)
     end if
   end subroutine backbone_curve
+  !> The response at the excitation frequency f_exc [Hz] for the forces F_E [N].
+  subroutine response(model, f_exc, F_E, points, error)
+    type(model_type), intent(inout) :: model
+    real(wp), intent(in) :: f_exc
+    real(wp), intent(in) :: F_E(:)
+    type(point_type), allocatable, intent(out) :: points(:)
+    type(error_type), allocatable, intent(out) :: error
+    if (is_traveling(model)) then
+      call wave_response(model, f_exc, F_E, points, error)
+    else
+      call inphase_response(model, f_exc, F_E, points, error)
+    end if
+  end subroutine response
+
+  !> The non-linear response curves for the forces F_E [N] (PHYSICS.md 3).
+  subroutine response_curves(model, F_E, layers, curves, error)
+    type(model_type), intent(inout) :: model
+    real(wp), intent(in) :: F_E(:)
+    integer, intent(in) :: layers
+    type(curve_type), allocatable, intent(out) :: curves(:)
+    type(error_type), allocatable, intent(out) :: error
+    if (is_traveling(model)) then
+      call wave_curves(model, F_E, layers, curves, error)
+    else
+      call inphase_response_curves(model, F_E, layers, curves, error)
+    end if
+  end subroutine response_curves
 end module udmap_mapping_traveling_dispatch
