@@ -56,7 +56,7 @@ contains
     type(rates_type) :: rt
     integer :: pred(3), nev, i, nc, ic, best, ev_contact(10), ev_state(10)
     real(wp) :: dgam, dcf, tc(10), tcp(10), rate_of(10), g(3), s(3), N(3), T(3), gp(3), sp(3), Np(3), Tp(3)
-    real(wp) :: f(3), df(3), fp(3), remaining, step, step_p, cur, scale
+    real(wp) :: remaining, step, step_p, cur, scale, tie, tolR
     character(len=60) :: buf
     logical :: with_p, known
 
@@ -102,24 +102,20 @@ contains
         Tp = 0
       end if
       ! Candidate events: travel to each boundary the states move towards.
+      tolR = TOL_RATE*(geo%rate_scale*abs(dgam) + abs(dcf))
       nc = 0
       do i = 1, 3
         select case (st%mode(i))
         case (CONTACT_STICK)
-          f = [geo%mu*N(i) - T(i), geo%mu*N(i) + T(i), N(i)]
-          df = [geo%mu*rt%dN(i) - rt%dT(i), geo%mu*rt%dN(i) + rt%dT(i), rt%dN(i)]
-          fp = [geo%mu*Np(i) - Tp(i), geo%mu*Np(i) + Tp(i), Np(i)]
-          call add_candidates(3, [CONTACT_SLIP_POS, CONTACT_SLIP_NEG, CONTACT_OPEN])
+          call candidate(geo%mu*N(i) - T(i), geo%mu*rt%dN(i) - rt%dT(i), &
+            & geo%mu*Np(i) - Tp(i), CONTACT_SLIP_POS)
+          call candidate(geo%mu*N(i) + T(i), geo%mu*rt%dN(i) + rt%dT(i), &
+            & geo%mu*Np(i) + Tp(i), CONTACT_SLIP_NEG)
+          call candidate(N(i), rt%dN(i), Np(i), CONTACT_OPEN)
         case (CONTACT_SLIP_POS, CONTACT_SLIP_NEG)
-          f(1) = N(i)
-          df(1) = rt%dN(i)
-          fp(1) = Np(i)
-          call add_candidates(1, [CONTACT_OPEN, 0, 0])
+          call candidate(N(i), rt%dN(i), Np(i), CONTACT_OPEN)
         case default
-          f(1) = -geo%kn(i)*g(i)
-          df(1) = -geo%kn(i)*rt%dg(i)
-          fp(1) = -geo%kn(i)*gp(i)
-          call add_candidates(1, [CONTACT_STICK, 0, 0])
+          call candidate(-geo%kn(i)*g(i), -geo%kn(i)*rt%dg(i), -geo%kn(i)*gp(i), CONTACT_STICK)
         end select
       end do
       if (has_target) then
@@ -160,6 +156,7 @@ contains
       step = tc(best)
       step_p = tcp(best)
       if (present(val)) then
+        tie = 1e-10_wp*max(abs(val%p0), abs(travel), abs(cur))
         call restrict(val, step, step_p)
         do ic = 1, nc
           if (ic /= best) call restrict(val, tc(ic) - step, tcp(ic) - step_p)
@@ -222,30 +219,28 @@ contains
 
   contains
 
-    subroutine add_candidates(m, states)
-      integer, intent(in) :: m, states(3)
-      real(wp) :: tolR
-      integer :: k
-      tolR = TOL_RATE*(geo%rate_scale*abs(dgam) + abs(dcf))
-      do k = 1, m
-        if (df(k) < -tolR) then
-          nc = nc + 1
-          tc(nc) = max(f(k), 0.0_wp)/(-df(k))
-          tcp(nc) = fp(k)/(-df(k))
-          rate_of(nc) = -df(k)
-          ev_contact(nc) = i
-          ev_state(nc) = states(k)
-        end if
-      end do
-    end subroutine add_candidates
+    !> Contact i reaches the boundary of the value f (rate df, p-derivative fp) into `state`
+    !> after the travel f/(-df) when it moves towards it.
+    subroutine candidate(f, df, fp, state)
+      real(wp), intent(in) :: f, df, fp
+      integer, intent(in) :: state
+      if (df < -tolR) then
+        nc = nc + 1
+        tc(nc) = max(f, 0.0_wp)/(-df)
+        tcp(nc) = fp/(-df)
+        rate_of(nc) = -df
+        ev_contact(nc) = i
+        ev_state(nc) = state
+      end if
+    end subroutine candidate
 
-    !> Requires d + d_p (p - p0) >= 0. Gaps below the tie tolerance are ties at p0 (mostly
+    !> Requires d + d_p (p - p0) >= 0. Gaps below the tie tolerance (tie) are ties at p0 (mostly
     !> structural ones that hold for every p, e.g. a contact back on its cone at a reversal):
     !> their p-derivatives are rounding noise and bound nothing.
     subroutine restrict(v, d, d_p)
       type(validity_type), intent(inout) :: v
       real(wp), intent(in) :: d, d_p
-      if (abs(d) <= 1e-10_wp*max(abs(v%p0), abs(travel), abs(cur))) return
+      if (abs(d) <= tie) return
       if (d_p < 0) then
         v%hi = min(v%hi, v%p0 + d/(-d_p))
       else if (d_p > 0) then
@@ -293,7 +288,7 @@ contains
     type(rates_cache_type), intent(inout), optional :: rates
     real(wp) :: tolF, tolR
     integer :: ncand(3), cand(4,3), cls(3), sig0(3), i, i1, i2, i3, trial(3), old(3)
-    logical :: ok, any_regular
+    logical :: ok, any_regular, cached
     character(len=120) :: buf
 
     ! forces within this of a boundary count as on it: the resolution of the force sums
@@ -325,6 +320,8 @@ contains
     end do
 
     any_regular = .false.
+    cached = .false.
+    if (present(rates)) cached = dcf == 0 .and. abs(dgam) == 1
     do i1 = 1, ncand(1)
       do i2 = 1, ncand(2)
         do i3 = 1, ncand(3)
@@ -356,7 +353,7 @@ contains
     !> rt and ok of the trial states: from the rates cache where it serves (a gamma trace).
     subroutine trial_rates()
       integer :: code, k
-      if (present(rates) .and. dcf == 0 .and. abs(dgam) == 1) then
+      if (cached) then
         code = mode_code(trial)
         k = merge(2, 1, dgam > 0)
         if (.not. rates%known(code, k)) then
