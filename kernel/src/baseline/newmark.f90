@@ -27,7 +27,7 @@ module udmap_baseline_newmark
   private
   public :: dti_settings_type, dti_point_type, dti_response, dti_peak
   ! shared with the whole-wheel integration (udmap_baseline_wheel)
-  public :: dti_runner_type, dti_peak_search, peak_centre, check_inputs, keff_solve
+  public :: dti_runner_type, check_inputs, keff_solve
   public :: newmark_type, newmark_setup, newmark_load, newmark_commit
   public :: ss_tracker_type, ss_track, ss_relative, step_trace_type
 
@@ -57,11 +57,23 @@ module udmap_baseline_newmark
     real(wp) :: seconds = 0.0_wp    !< wall time [s]
   end type dti_point_type
 
-  !> One time integration at a frequency, for the peak search: run(f, gamma_1) integrates at
-  !> f [Hz] and keeps its point (the search returns the index of the best run, 1-based).
+  !> The time integrations of one response or peak search, the single blade's or the whole
+  !> wheel's: the inputs they share, and run(f, gamma_1), which integrates at f [Hz] and keeps
+  !> its point, a failed run's too (the response returns it). The driver (drive) checks the
+  !> inputs, counts and times the runs and names the one whose point is the answer.
   type, abstract :: dti_runner_type
+    type(structure_type), pointer :: st => null()
+    class(hysteretic_element_type), pointer :: element => null()
+    real(wp) :: F_E = 0.0_wp
+    type(dti_settings_type) :: settings
+    integer :: best = 0             !< the run whose point is the answer (1-based; 0: none)
+    integer :: runs = 0             !< time integrations done
+    real(wp) :: seconds = 0.0_wp    !< wall time [s]
   contains
     procedure(dti_run), deferred :: run
+    procedure(dti_check), deferred :: check
+    procedure :: drive => runner_drive
+    procedure :: stamp => runner_stamp
   end type dti_runner_type
 
   abstract interface
@@ -72,6 +84,13 @@ module udmap_baseline_newmark
       real(wp), intent(out) :: gamma_1
       type(error_type), allocatable, intent(out) :: error
     end subroutine dti_run
+
+    !> The runner's input checks.
+    subroutine dti_check(self, error)
+      import :: dti_runner_type, error_type
+      class(dti_runner_type), intent(in) :: self
+      type(error_type), allocatable, intent(out) :: error
+    end subroutine dti_check
   end interface
 
   !> The steady-state test of one first harmonic: successive period differences and their
@@ -99,38 +118,25 @@ module udmap_baseline_newmark
     real(wp), allocatable :: sK(:), sM(:)  !< stress rows (zero without stress)
   end type newmark_type
 
-  !> The single blade's runs of the peak search, each run's point kept.
+  !> The single blade's runs, each run's point kept.
   type, extends(dti_runner_type) :: blade_runner_type
-    type(structure_type), pointer :: st => null()
-    class(hysteretic_element_type), pointer :: element => null()
-    real(wp) :: F_E = 0.0_wp
-    type(dti_settings_type) :: settings
     type(dti_point_type), allocatable :: points(:)
   contains
     procedure :: run => blade_run
+    procedure :: check => blade_check
   end type blade_runner_type
 
 contains
 
   !> Steady-state response at f [Hz] to F_E sin(2 pi f t) at E, from rest.
   subroutine dti_response(st, element, f, F_E, settings, point, error)
-    type(structure_type), intent(in) :: st
-    class(hysteretic_element_type), intent(in) :: element
+    type(structure_type), intent(in), target :: st
+    class(hysteretic_element_type), intent(in), target :: element
     real(wp), intent(in) :: f, F_E
     type(dti_settings_type), intent(in) :: settings
     type(dti_point_type), intent(out) :: point
     type(error_type), allocatable, intent(out) :: error
-    integer(8) :: c0, rate
-    call system_clock(c0, rate)
-    call check_inputs(st, F_E, settings, error)
-    if (allocated(error)) return
-    if (.not.(f > 0.0_wp) .or. f > huge(1.0_wp)) then
-      call fatal_error(error, "dti: the frequency f must be positive and finite", UDMAP_EINPUT)
-      return
-    end if
-    call integrate(st, element, 2.0_wp*pi*f, F_E, settings, point, error)
-    point%runs = 1
-    point%seconds = seconds_since(c0, rate)
+    call blade_dti(st, element, F_E, settings, point, error, f=f)
   end subroutine dti_response
 
   !> The frequency of the largest gamma_1 near the single-harmonic peak: the H = 1 standard
@@ -143,26 +149,67 @@ contains
     type(dti_point_type), intent(out) :: point
     type(error_type), allocatable, intent(out) :: error
     real(wp), intent(in), optional :: f_center
+    call blade_dti(st, element, F_E, settings, point, error, f_min=f_min, f_max=f_max, &
+      & f_center=f_center)
+  end subroutine dti_peak
+
+  !> The single blade's response (f) or peak (f_min, f_max, f_center) by its runner.
+  subroutine blade_dti(st, element, F_E, settings, point, error, f, f_min, f_max, f_center)
+    type(structure_type), intent(in), target :: st
+    class(hysteretic_element_type), intent(in), target :: element
+    real(wp), intent(in) :: F_E
+    type(dti_settings_type), intent(in) :: settings
+    type(dti_point_type), intent(out) :: point
+    type(error_type), allocatable, intent(out) :: error
+    real(wp), intent(in), optional :: f, f_min, f_max, f_center
     type(blade_runner_type) :: runner
-    real(wp) :: fc
+    runner = blade_runner_type(st=st, element=element, F_E=F_E, settings=settings, &
+      & points=[dti_point_type::])
+    call runner%drive(error, f, f_min, f_max, f_center)
+    if (runner%best > 0) point = runner%points(runner%best)
+    call runner%stamp(point)
+  end subroutine blade_dti
+
+  !> With f: the response at f [Hz], one run; else the peak search in [f_min, f_max] around
+  !> f_center (peak_centre, dti_peak_search). The inputs checked first, the runs timed.
+  subroutine runner_drive(self, error, f, f_min, f_max, f_center)
+    class(dti_runner_type), intent(inout) :: self
+    type(error_type), allocatable, intent(out) :: error
+    real(wp), intent(in), optional :: f, f_min, f_max, f_center
+    real(wp) :: fc, gamma_1
     integer :: best, runs
     integer(8) :: c0, rate
     call system_clock(c0, rate)
-    call check_inputs(st, F_E, settings, error)
+    call self%check(error)
     if (allocated(error)) return
-    call peak_centre(st, element, f_min, f_max, F_E, fc, error, f_center)
-    if (allocated(error)) return
-    runner%st => st
-    runner%element => element
-    runner%F_E = F_E
-    runner%settings = settings
-    allocate(runner%points(0))
-    call dti_peak_search(runner, fc, settings, best, runs, error)
-    if (allocated(error)) return
-    point = runner%points(best)
-    point%runs = runs
-    point%seconds = seconds_since(c0, rate)
-  end subroutine dti_peak
+    if (present(f)) then
+      if (.not.(f > 0.0_wp) .or. f > huge(1.0_wp)) then
+        call fatal_error(error, "dti: the frequency f must be positive and finite", UDMAP_EINPUT)
+        return
+      end if
+      ! a failed run's point and time are the answer too
+      call self%run(f, gamma_1, error)
+      self%best = 1
+      self%runs = 1
+    else
+      call peak_centre(self%st, self%element, f_min, f_max, self%F_E, fc, error, f_center)
+      if (allocated(error)) return
+      call dti_peak_search(self, fc, best, runs, error)
+      if (allocated(error)) return
+      self%best = best
+      self%runs = runs
+    end if
+    self%seconds = seconds_since(c0, rate)
+  end subroutine runner_drive
+
+  !> The runs and the time into the answer, the best run's point (none: left as it is).
+  subroutine runner_stamp(self, point)
+    class(dti_runner_type), intent(in) :: self
+    class(dti_point_type), intent(inout) :: point
+    if (self%best < 1) return
+    point%runs = self%runs
+    point%seconds = self%seconds
+  end subroutine runner_stamp
 
   !> The centre of the peak search: f_center if given, else the H = 1 standard method's peak.
   subroutine peak_centre(st, element, f_min, f_max, F_E, fc, error, f_center)
@@ -184,7 +231,7 @@ contains
     end if
   end subroutine peak_centre
 
-  !> One run of the single blade's peak search.
+  !> One run of the single blade.
   subroutine blade_run(self, f, gamma_1, error)
     class(blade_runner_type), intent(inout) :: self
     real(wp), intent(in) :: f
@@ -193,16 +240,21 @@ contains
     type(dti_point_type) :: p
     call integrate(self%st, self%element, 2.0_wp*pi*f, self%F_E, self%settings, p, error)
     gamma_1 = p%gamma_1
-    if (.not. allocated(error)) self%points = [self%points, p]
+    self%points = [self%points, p]
   end subroutine blade_run
+
+  subroutine blade_check(self, error)
+    class(blade_runner_type), intent(in) :: self
+    type(error_type), allocatable, intent(out) :: error
+    call check_inputs(self%st, self%F_E, self%settings, error)
+  end subroutine blade_check
 
   !> The peak search around the centre fc: a bracket (the centre above both ends; widened
   !> towards the higher side if not), then Brent's parabolic/golden maximisation of gamma_1
   !> (Numerical Recipes). `best` is the index of the best run (runs numbered from 1).
-  subroutine dti_peak_search(runner, fc, settings, best, runs, error)
+  subroutine dti_peak_search(runner, fc, best, runs, error)
     class(dti_runner_type), intent(inout) :: runner
     real(wp), intent(in) :: fc
-    type(dti_settings_type), intent(in) :: settings
     integer, intent(out) :: best, runs
     type(error_type), allocatable, intent(out) :: error
     real(wp), parameter :: cgold = 0.3819660112501051_wp
@@ -215,7 +267,7 @@ contains
       call fatal_error(error, "dti: the centre frequency must be positive", UDMAP_EINPUT)
       return
     end if
-    w = settings%peak_window
+    w = runner%settings%peak_window
     a = fc*(1.0_wp - w); b = fc; c = fc*(1.0_wp + w)
     call run(a, ga, ia); if (allocated(error)) return
     call run(b, gb, ib); if (allocated(error)) return
@@ -246,7 +298,7 @@ contains
     d = 0.0_wp; e = 0.0_wp
     do it = 1, 60
       xm = 0.5_wp*(lo + hi)
-      tol1 = settings%peak_rtol*abs(x)
+      tol1 = runner%settings%peak_rtol*abs(x)
       tol2 = 2.0_wp*tol1
       if (abs(x - xm) <= tol2 - 0.5_wp*(hi - lo)) exit
       if (abs(e) > tol1) then

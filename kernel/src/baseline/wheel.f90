@@ -22,10 +22,9 @@ module udmap_baseline_wheel
   use udmap_core_strings, only: itoa
   use udmap_blade_platform, only: platform_rows, platform_translations_known
   use udmap_baseline_linear_structure, only: structure_type
-  use udmap_baseline_types, only: seconds_since
   use udmap_baseline_newmark, only: dti_settings_type, dti_point_type, dti_runner_type, &
-    & dti_peak_search, peak_centre, check_inputs, keff_solve, newmark_type, newmark_setup, &
-    & newmark_load, newmark_commit, ss_tracker_type, ss_track, ss_relative, step_trace_type
+    & check_inputs, keff_solve, newmark_type, newmark_setup, newmark_load, newmark_commit, &
+    & ss_tracker_type, ss_track, ss_relative, step_trace_type
   use udmap_contact_element, only: hysteretic_element_type
   use udmap_contact_element_asymmetric, only: contact_element_type
   use udmap_damper_tracer_core, only: damper_geometry_type, damper_state_type, solve3, &
@@ -53,16 +52,13 @@ module udmap_baseline_wheel
     complex(wp), allocatable :: gamma_b(:), sigma_b(:)
   end type wheel_point_type
 
-  !> The wheel's runs of the peak search.
+  !> The wheel's runs, each run's point kept.
   type, extends(dti_runner_type) :: wheel_runner_type
-    type(structure_type), pointer :: st => null()
-    type(contact_element_type), pointer :: element => null()
-    real(wp) :: F_E = 0.0_wp
     integer :: blades = 0, engine_order = 0
-    type(dti_settings_type) :: settings
     type(wheel_point_type), allocatable :: points(:)
   contains
     procedure :: run => wheel_run
+    procedure :: check => check_wheel
   end type wheel_runner_type
 
 contains
@@ -70,28 +66,14 @@ contains
   !> Steady state of the wheel at f [Hz], blade 0 under F_E sin(2 pi f t), blade j advanced by
   !> j phi, phi = 2 pi EO/N.
   subroutine wheel_response(st, element, f, F_E, blades, engine_order, settings, point, error)
-    type(structure_type), intent(in) :: st
-    class(hysteretic_element_type), intent(in) :: element
+    type(structure_type), intent(in), target :: st
+    class(hysteretic_element_type), intent(in), target :: element
     real(wp), intent(in) :: f, F_E
     integer, intent(in) :: blades, engine_order
     type(dti_settings_type), intent(in) :: settings
     type(wheel_point_type), intent(out) :: point
     type(error_type), allocatable, intent(out) :: error
-    integer(8) :: c0, rate
-    call system_clock(c0, rate)
-    call check_wheel(st, element, F_E, blades, engine_order, settings, error)
-    if (allocated(error)) return
-    if (.not.(f > 0.0_wp) .or. f > huge(1.0_wp)) then
-      call fatal_error(error, "dti: the frequency f must be positive and finite", UDMAP_EINPUT)
-      return
-    end if
-    select type (element)
-    type is (contact_element_type)
-      call integrate_wheel(st, element, 2.0_wp*pi*f, F_E, blades, engine_order, settings, &
-        & point, error)
-    end select
-    point%runs = 1
-    point%seconds = seconds_since(c0, rate)
+    call wheel_dti(st, element, F_E, blades, engine_order, settings, point, error, f=f)
   end subroutine wheel_response
 
   !> The frequency of the largest first harmonic of blade 0's gamma_P, searched around
@@ -106,65 +88,62 @@ contains
     type(wheel_point_type), intent(out) :: point
     type(error_type), allocatable, intent(out) :: error
     real(wp), intent(in), optional :: f_center
-    type(wheel_runner_type) :: runner
-    real(wp) :: fc
-    integer :: best, runs
-    integer(8) :: c0, rate
-    call system_clock(c0, rate)
-    call check_wheel(st, element, F_E, blades, engine_order, settings, error)
-    if (allocated(error)) return
-    call peak_centre(st, element, f_min, f_max, F_E, fc, error, f_center)
-    if (allocated(error)) return
-    select type (element)
-    type is (contact_element_type)
-      runner%element => element
-    end select
-    runner%st => st
-    runner%F_E = F_E
-    runner%blades = blades
-    runner%engine_order = engine_order
-    runner%settings = settings
-    allocate(runner%points(0))
-    call dti_peak_search(runner, fc, settings, best, runs, error)
-    if (allocated(error)) return
-    point = runner%points(best)
-    point%runs = runs
-    point%seconds = seconds_since(c0, rate)
+    call wheel_dti(st, element, F_E, blades, engine_order, settings, point, error, &
+      & f_min=f_min, f_max=f_max, f_center=f_center)
   end subroutine wheel_peak
 
-  !> One run of the wheel's peak search.
+  !> The wheel's response (f) or peak (f_min, f_max, f_center) by its runner.
+  subroutine wheel_dti(st, element, F_E, blades, engine_order, settings, point, error, f, &
+      & f_min, f_max, f_center)
+    type(structure_type), intent(in), target :: st
+    class(hysteretic_element_type), intent(in), target :: element
+    real(wp), intent(in) :: F_E
+    integer, intent(in) :: blades, engine_order
+    type(dti_settings_type), intent(in) :: settings
+    type(wheel_point_type), intent(out) :: point
+    type(error_type), allocatable, intent(out) :: error
+    real(wp), intent(in), optional :: f, f_min, f_max, f_center
+    type(wheel_runner_type) :: runner
+    runner = wheel_runner_type(st=st, element=element, F_E=F_E, settings=settings, &
+      & blades=blades, engine_order=engine_order, points=[wheel_point_type::])
+    call runner%drive(error, f, f_min, f_max, f_center)
+    if (runner%best > 0) point = runner%points(runner%best)
+    call runner%stamp(point)
+  end subroutine wheel_dti
+
+  !> One run of the wheel (check_wheel has made sure of the asymmetric damper).
   subroutine wheel_run(self, f, gamma_1, error)
     class(wheel_runner_type), intent(inout) :: self
     real(wp), intent(in) :: f
     real(wp), intent(out) :: gamma_1
     type(error_type), allocatable, intent(out) :: error
     type(wheel_point_type) :: p
-    call integrate_wheel(self%st, self%element, 2.0_wp*pi*f, self%F_E, self%blades, &
-      & self%engine_order, self%settings, p, error)
+    select type (element => self%element)
+    type is (contact_element_type)
+      call integrate_wheel(self%st, element, 2.0_wp*pi*f, self%F_E, self%blades, &
+        & self%engine_order, self%settings, p, error)
+    end select
     gamma_1 = p%gamma_1
-    if (.not. allocated(error)) self%points = [self%points, p]
+    self%points = [self%points, p]
   end subroutine wheel_run
 
-  subroutine check_wheel(st, element, F_E, blades, engine_order, settings, error)
-    type(structure_type), intent(in) :: st
-    class(hysteretic_element_type), intent(in) :: element
-    real(wp), intent(in) :: F_E
-    integer, intent(in) :: blades, engine_order
-    type(dti_settings_type), intent(in) :: settings
+  !> The single blade's input checks, then the wheel's own.
+  subroutine check_wheel(self, error)
+    class(wheel_runner_type), intent(in) :: self
     type(error_type), allocatable, intent(out) :: error
-    call check_inputs(st, F_E, settings, error)
+    call check_inputs(self%st, self%F_E, self%settings, error)
     if (allocated(error)) return
-    if (blades < 2 .or. blades > MAX_BLADES) then
+    if (self%blades < 2 .or. self%blades > MAX_BLADES) then
       call fatal_error(error, "dti: blades must be in 2.."//itoa(MAX_BLADES)//" for the "// &
-        & "whole wheel in time, got "//itoa(blades), UDMAP_EINPUT)
+        & "whole wheel in time, got "//itoa(self%blades), UDMAP_EINPUT)
       return
     end if
-    if (engine_order < 0) then
-      call fatal_error(error, "dti: engine_order must be >= 0, got "//itoa(engine_order), &
+    if (self%engine_order < 0) then
+      call fatal_error(error, "dti: engine_order must be >= 0, got "//itoa(self%engine_order), &
         & UDMAP_EINPUT)
       return
     end if
-    select type (element)
+    select type (element => self%element)
     type is (contact_element_type)
     class default
       call fatal_error(error, "dti: the whole wheel needs the asymmetric damper (the jenkins "// &
@@ -172,11 +151,11 @@ contains
         & UDMAP_EINPUT)
       return
     end select
-    if (mod(engine_order, blades) /= 0) then
-      if (.not. allocated(st%blade)) then
+    if (mod(self%engine_order, self%blades) /= 0) then
+      if (.not. allocated(self%st%blade)) then
         call fatal_error(error, "dti: a traveling wave needs the blade's platform rows", &
           & UDMAP_EINPUT)
-      else if (.not. platform_translations_known(st%blade)) then
+      else if (.not. platform_translations_known(self%st%blade)) then
         call fatal_error(error, "blade: the platform translations are unknown (traveling "// &
           & "waves need u_P: blade.u_dof on a matrices blade, platform.tangent on an fe "// &
           & "blade)", UDMAP_EINPUT)
