@@ -23,6 +23,8 @@ module udmap_baseline_newmark
   use udmap_baseline_types, only: seconds_since
   use udmap_contact_element, only: hysteretic_element_type
   use udmap_baseline_hbm, only: hbm_settings_type, hbm_point_type, hbm_peak
+  use udmap_baseline_minimise, only: brent_min_type, brent_min_start, brent_min_next, &
+    & brent_min_update
   implicit none
   private
   public :: dti_settings_type, dti_point_type, dti_response, dti_peak
@@ -257,10 +259,10 @@ contains
     real(wp), intent(in) :: fc
     integer, intent(out) :: best, runs
     type(error_type), allocatable, intent(out) :: error
-    real(wp), parameter :: cgold = 0.3819660112501051_wp
-    real(wp) :: a, b, c, w, ga, gb, gc
-    real(wp) :: lo, hi, x, v, ww, fx, fv, fw, u, fu, d, e, xm, tol1, tol2, r, q, pp, etemp
-    integer :: k, ia, ib, ic, iu, it
+    real(wp) :: a, b, c, w, ga, gb, gc, u, fu
+    integer :: k, ia, ib, ic, iu
+    type(brent_min_type) :: brent
+    logical :: more
     best = 0
     runs = 0
     if (.not.(fc > 0.0_wp) .or. fc > huge(1.0_wp)) then
@@ -290,69 +292,16 @@ contains
         & UDMAP_EPHYSICS)
       return
     end if
-    ! Brent on [a, c] around b
-    lo = min(a, c); hi = max(a, c)
-    x = b; v = b; ww = b
-    fx = -gb; fv = fx; fw = fx
+    ! Brent on [a, c] around b, minimising -gamma_1
+    call brent_min_start(brent, min(a, c), max(a, c), b, -gb, runner%settings%peak_rtol, 60)
     best = ib
-    d = 0.0_wp; e = 0.0_wp
-    do it = 1, 60
-      xm = 0.5_wp*(lo + hi)
-      tol1 = runner%settings%peak_rtol*abs(x)
-      tol2 = 2.0_wp*tol1
-      if (abs(x - xm) <= tol2 - 0.5_wp*(hi - lo)) exit
-      if (abs(e) > tol1) then
-        r = (x - ww)*(fx - fv)
-        q = (x - v)*(fx - fw)
-        pp = (x - v)*q - (x - ww)*r
-        q = 2.0_wp*(q - r)
-        if (q > 0.0_wp) pp = -pp
-        q = abs(q)
-        etemp = e
-        e = d
-        if (abs(pp) >= abs(0.5_wp*q*etemp) .or. pp <= q*(lo - x) .or. pp >= q*(hi - x)) then
-          e = merge(lo - x, hi - x, x >= xm)
-          d = cgold*e
-        else
-          d = pp/q
-          u = x + d
-          if (u - lo < tol2 .or. hi - u < tol2) d = sign(tol1, xm - x)
-        end if
-      else
-        e = merge(lo - x, hi - x, x >= xm)
-        d = cgold*e
-      end if
-      if (abs(d) >= tol1) then
-        u = x + d
-      else
-        u = x + sign(tol1, d)
-      end if
+    do
+      call brent_min_next(brent, u, more)
+      if (.not. more) exit
       call run(u, fu, iu)
       if (allocated(error)) return
-      fu = -fu
-      if (fu <= fx) then
-        if (u >= x) then
-          lo = x
-        else
-          hi = x
-        end if
-        v = ww; fv = fw
-        ww = x; fw = fx
-        x = u; fx = fu
-        best = iu
-      else
-        if (u < x) then
-          lo = u
-        else
-          hi = u
-        end if
-        if (fu <= fw .or. ww == x) then
-          v = ww; fv = fw
-          ww = u; fw = fu
-        else if (fu <= fv .or. v == x .or. v == ww) then
-          v = u; fv = fu
-        end if
-      end if
+      call brent_min_update(brent, -fu)
+      if (brent%better) best = iu
     end do
   contains
     subroutine run(f, g1, idx)

@@ -21,6 +21,8 @@ module udmap_baseline_wave
   use udmap_damper_tracer_core, only: damper_geometry_type
   use udmap_contact_element_wave, only: wave_aft, wave_settings_type, wave_static_action, &
     & wave_samples
+  use udmap_baseline_minimise, only: brent_min_type, brent_min_start, brent_min_next, &
+    & brent_min_update, golden_section
   implicit none
   private
   public :: wave_hbm_type, wave_hbm_point_type, new_wave_hbm, wave_hbm_peak
@@ -134,78 +136,21 @@ contains
     subroutine refine(lo, hi, q)
       real(wp), intent(in) :: lo, hi
       type(wave_hbm_point_type), intent(inout) :: q
-      real(wp), parameter :: cg = 0.3819660112501051_wp
-      real(wp) :: a, b, v, ww, x, fv, fw, fx, e, d, u, fu, xm, tol1, tol2, pp, qq, rr
-      integer :: it
-      a = lo
-      b = hi
-      x = a + cg*(b - a)
+      type(brent_min_type) :: brent
+      real(wp) :: x, fx, u, fu
+      logical :: more
+      x = lo + golden_section*(hi - lo)
       fx = f(x)
       if (allocated(error)) return
-      ww = x
-      v = x
-      fw = fx
-      fv = fx
-      e = 0
-      d = 0
-      do it = 1, 200
-        xm = 0.5_wp*(a + b)
-        tol1 = 1e-12_wp*abs(x)
-        tol2 = 2*tol1
-        if (abs(x - xm) <= tol2 - 0.5_wp*(b - a)) exit
-        if (abs(e) > tol1) then
-          rr = (x - ww)*(fx - fv)
-          qq = (x - v)*(fx - fw)
-          pp = (x - v)*qq - (x - ww)*rr
-          qq = 2*(qq - rr)
-          if (qq > 0) pp = -pp
-          qq = abs(qq)
-          if (abs(pp) >= abs(0.5_wp*qq*e) .or. pp <= qq*(a - x) .or. pp >= qq*(b - x)) then
-            e = merge(a - x, b - x, x >= xm)
-            d = cg*e
-          else
-            e = d
-            d = pp/qq
-            u = x + d
-            if (u - a < tol2 .or. b - u < tol2) d = sign(tol1, xm - x)
-          end if
-        else
-          e = merge(a - x, b - x, x >= xm)
-          d = cg*e
-        end if
-        u = x + merge(d, sign(tol1, d), abs(d) >= tol1)
+      call brent_min_start(brent, lo, hi, x, fx, 1e-12_wp, 200)
+      do
+        call brent_min_next(brent, u, more)
+        if (.not. more) exit
         fu = f(u)
         if (allocated(error)) return
-        if (fu <= fx) then
-          if (u >= x) then
-            a = x
-          else
-            b = x
-          end if
-          v = ww
-          fv = fw
-          ww = x
-          fw = fx
-          x = u
-          fx = fu
-        else
-          if (u < x) then
-            a = u
-          else
-            b = u
-          end if
-          if (fu <= fw .or. ww == x) then
-            v = ww
-            fv = fw
-            ww = u
-            fw = fu
-          else if (fu <= fv .or. v == x .or. v == ww) then
-            v = u
-            fv = fu
-          end if
-        end if
+        call brent_min_update(brent, fu)
       end do
-      fx = f(x)
+      fx = f(brent%x)
     end subroutine refine
 
     real(wp) function f(om)
