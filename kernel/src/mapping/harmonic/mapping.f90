@@ -37,8 +37,8 @@ module udmap_mapping_harmonic_mapping
   use udmap_mapping_harmonic_table_points, only: table_usable, table_backbone_point, cover_table
   implicit none
   private
-  public :: backbone, response, response_curves, harmonics_near_modes, set_harmonics, &
-    & check_harmonics, cover_forces, force_table_count
+  public :: layered, response_curves, harmonics_near_modes, set_harmonics, check_harmonics, &
+    & cover_forces, force_table_count
 
   !> The ladder of H tried by the automatic choice.
   integer, parameter :: ladder(10) = [3, 5, 7, 9, 13, 17, 25, 33, 49, 64]
@@ -75,28 +75,10 @@ contains
       & "analysis.harmonic_tol must lie in [1e-10, 0.1]", error)
   end subroutine check_harmonics
 
-  !> The peaks of the non-linear response for the forces F_E [N] (PHYSICS.md 4 and 4.1).
-  subroutine backbone(model, F_E, points, error)
-    type(model_type), intent(inout) :: model
-    real(wp), intent(in) :: F_E(:)
-    type(point_type), allocatable, intent(out) :: points(:)
-    type(error_type), allocatable, intent(out) :: error
-    call layered(model, .true., 0.0_wp, F_E, points, error)
-  end subroutine backbone
-
-  !> The response at the excitation frequency f_exc [Hz] for the forces F_E [N].
-  subroutine response(model, f_exc, F_E, points, error)
-    type(model_type), intent(inout) :: model
-    real(wp), intent(in) :: f_exc
-    real(wp), intent(in) :: F_E(:)
-    type(point_type), allocatable, intent(out) :: points(:)
-    type(error_type), allocatable, intent(out) :: error
-    call layered(model, .false., f_exc, F_E, points, error)
-  end subroutine response
-
-  !> The single-harmonic points for the forces F_E (at_peak: the backbone, else the response
-  !> at f_exc [Hz]), each solved again as a multi-harmonic point when H /= 1: a backbone point
-  !> from the force table where it is on, an unbounded one kept as it is.
+  !> The in-phase points for the forces F_E [N] (at_peak: the peaks of the backbone, PHYSICS.md 4
+  !> and 4.1, else the response at f_exc [Hz]): the single-harmonic points, each solved again as
+  !> a multi-harmonic point when H /= 1: a backbone point from the force table where it is on,
+  !> an unbounded one kept as it is.
   subroutine layered(model, at_peak, f_exc, F_E, points, error)
     type(model_type), intent(inout) :: model
     logical, intent(in) :: at_peak
@@ -248,7 +230,7 @@ contains
     integer :: i, j, H
     call curves_single(model, F_E, layers, curves, error)
     if (model%analysis%harmonics == 1 .or. allocated(error)) return
-    call backbone(model, F_E, peaks, error)
+    call layered(model, .true., 0.0_wp, F_E, peaks, error)
     if (allocated(error)) return
     do i = 1, size(curves)
       if (peaks(i)%unbounded) cycle

@@ -25,7 +25,7 @@ module udmap_mapping_traveling_backbone
   use udmap_contact_element_wave, only: wave_aft, wave_settings_type
   use udmap_mapping_model_data, only: model_type, point_type, REGIME_STUCK, &
     & REGIME_PARTIAL_SLIP, REGIME_FULL_SLIP, REGIME_LIMIT, check_response_frequency
-  use udmap_mapping_harmonic_mapping, only: inphase_backbone => backbone
+  use udmap_mapping_backbone, only: inphase_backbone => backbone
   use udmap_mapping_harmonic_layer, only: largest_excursion
   use udmap_mapping_harmonic_table_points, only: table_usable, table_backbone_point, &
     & cover_table, reset_table
@@ -195,7 +195,6 @@ contains
     type(point_type), allocatable :: guess(:)
     real(wp) :: F_lim, omega_g, F_cur, w, change, ratio, shift
     integer :: i, H_saved, ih, nH
-    real(wp) :: ibpa_saved
     integer, parameter :: auto_H(7) = [1, 3, 5, 9, 17, 33, 64]
     !> The last two points (predict, remember): ln F_E, ln ratio, ln shift, L's harmonics
     !> to gamma.
@@ -207,15 +206,11 @@ contains
 
     call wave_limit_force(model, F_lim, error)
     if (allocated(error)) return
-    ! the in-phase single-harmonic peaks start the search
-    H_saved = model%analysis%harmonics
-    ibpa_saved = model%analysis%ibpa_deg
-    model%analysis%harmonics = 1
-    model%analysis%ibpa_deg = 0
+    ! the in-phase single-harmonic peaks start the search (that method reads neither the
+    ! harmonics nor the phase)
     call inphase_backbone(model, F_E, guess, error)
-    model%analysis%harmonics = H_saved
-    model%analysis%ibpa_deg = ibpa_saved
     if (allocated(error)) return
+    H_saved = model%analysis%harmonics
     nH = merge(size(auto_H), 1, H_saved == 0)
     do ih = 1, nH
       call new_model_traveling(model, tw, error, merge(auto_H(ih), H_saved, H_saved == 0))

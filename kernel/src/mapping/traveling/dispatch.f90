@@ -9,9 +9,8 @@ module udmap_mapping_traveling_dispatch
   use udmap_damper_type, only: DAMPER_ASYMMETRIC
   use udmap_mapping_model_data, only: model_type, point_type, curve_type, &
     & inphase_limit_force => limit_force
-  use udmap_mapping_harmonic_mapping, only: inphase_backbone => backbone, &
-    & inphase_cover_forces => cover_forces, inphase_response => response, &
-    & inphase_response_curves => response_curves
+  use udmap_mapping_harmonic_mapping, only: inphase_points => layered, &
+    & inphase_cover_forces => cover_forces, inphase_response_curves => response_curves
   use udmap_mapping_traveling_backbone, only: wave_backbone, wave_limit_force, &
     & wave_backbone_curve, wave_cover_forces, wave_response
   use udmap_mapping_traveling_curves, only: wave_curves
@@ -54,7 +53,7 @@ contains
     if (is_traveling(model)) then
       call wave_backbone(model, F_E, points, error)
     else
-      call inphase_backbone(model, F_E, points, error)
+      call inphase_points(model, .true., 0.0_wp, F_E, points, error)
     end if
   end subroutine backbone
 
@@ -93,7 +92,7 @@ contains
     if (is_traveling(model)) then
       call wave_response(model, f_exc, F_E, points, error)
     else
-      call inphase_response(model, f_exc, F_E, points, error)
+      call inphase_points(model, .false., f_exc, F_E, points, error)
     end if
   end subroutine response
 

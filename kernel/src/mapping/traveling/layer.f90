@@ -21,7 +21,7 @@ module udmap_mapping_traveling_layer
   use udmap_blade_type, only: blade_type
   use udmap_blade_platform, only: platform_receptances_type, platform_receptances, &
     & platform_modal_type, platform_modal, &
-    & platform_unknowns_type, platform_active, platform_count, platform_scales, platform_pack, &
+    & platform_unknowns_type, platform_count, platform_scales, platform_pack, &
     & platform_unpack, platform_balance
   use udmap_damper_tracer_core, only: damper_geometry_type
   use udmap_contact_element_wave, only: wave_aft, wave_settings_type, wave_result_type, &
@@ -369,28 +369,16 @@ contains
     complex(wp), intent(in) :: A(:, :)
     real(wp), intent(out) :: Rw(:)
     complex(wp), intent(out) :: Fw
-    complex(wp) :: z, dHA(3), Fv
-    integer :: i, hh, c
+    complex(wp) :: dR(3, H), Fv
+    integer :: hh
     Fv = (gamma + sum(rr(1)%pp(3, :)*A(:, 1)))/rr(1)%pE(3)
     Fw = (sum(rr(1)%dpp(3, :)*A(:, 1)) - Fv*rr(1)%dpE(3))/rr(1)%pE(3)
-    dHA = 0
-    i = 0
-    do hh = merge(1, 0, H == 1), H
-      if (hh > 0) dHA = hh*matmul(rr(hh)%dpp, A(:, hh))
-      do c = 1, 3
-        if (.not. platform_active(u, hh, c)) cycle
-        i = i + 1
-        if (hh == 0) then
-          Rw(i) = 0
-        else
-          z = dHA(c)
-          if (hh == 1) z = z - rr(1)%dpE(c)*Fv - rr(1)%pE(c)*Fw
-          Rw(i) = real(z, wp)
-          i = i + 1
-          Rw(i) = aimag(z)
-        end if
-      end do
+    do hh = 1, H
+      dR(:, hh) = hh*matmul(rr(hh)%dpp, A(:, hh))
     end do
+    dR(:, 1) = dR(:, 1) - rr(1)%dpE*Fv - rr(1)%pE*Fw
+    ! the active rows as the balance packs them (platform_pack); R_0 does not depend on omega
+    call platform_pack(u, 0.0_wp, dR, Rw)
   end subroutine wave_balance_omega
 
   !> The peak of the layer gamma: the minimum of |F(omega)| over the band, the root of
