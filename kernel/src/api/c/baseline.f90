@@ -304,8 +304,8 @@ contains
     real(c_double), intent(in) :: F_E(*)
     type(c_dti_point), intent(out) :: points(*)
     integer(c_int) :: stat
-    stat = dti_points(ehandle, blade, contact, settings, f_exc, f_exc, n, F_E, points, &
-      & at_peak=.false.)
+    stat = dti_points(ehandle, blade, contact, settings, f_exc, f_exc, 0.0_c_double, n, F_E, &
+      & at_peak=.false., points=points)
   end function udmap_dti_response
 
   !> Time integration at the frequency of the largest gamma_1 near the H = 1 peak.
@@ -318,44 +318,9 @@ contains
     real(c_double), intent(in) :: F_E(*)
     type(c_dti_point), intent(out) :: points(*)
     integer(c_int) :: stat
-    stat = dti_points(ehandle, blade, contact, settings, f_min, f_max, n, F_E, points, &
-      & at_peak=.true.)
+    stat = dti_points(ehandle, blade, contact, settings, f_min, f_max, 0.0_c_double, n, F_E, &
+      & at_peak=.true., points=points)
   end function udmap_dti_peak
-
-  !> Time integration for n forces at f_a (f_b unused) or, at_peak, at the peak in
-  !> [f_a, f_b]; the status.
-  function dti_points(ehandle, blade, contact, settings, f_a, f_b, n, F_E, points, at_peak) &
-      & result(stat)
-    type(c_ptr), intent(in) :: ehandle, blade, contact
-    type(c_dti_settings), intent(in) :: settings
-    real(c_double), intent(in) :: f_a, f_b
-    integer(c_int), intent(in) :: n
-    real(c_double), intent(in) :: F_E(*)
-    type(c_dti_point), intent(out) :: points(*)
-    logical, intent(in) :: at_peak
-    integer(c_int) :: stat
-    type(error_type), allocatable :: error
-    type(structure_type) :: st
-    type(c_contact_type), pointer :: c
-    type(dti_point_type) :: pt
-    integer :: i
-    call clear_error(ehandle)
-    call prepare(blade, contact, n, st, c, error)
-    if (.not.allocated(error)) then
-      do i = 1, n
-        if (at_peak) then
-          call dti_peak(st, c%element, real(f_a, wp), real(f_b, wp), real(F_E(i), wp), &
-            & dti_from_c(settings), pt, error)
-        else
-          call dti_response(st, c%element, real(f_a, wp), real(F_E(i), wp), &
-            & dti_from_c(settings), pt, error)
-        end if
-        if (allocated(error)) exit
-        points(i) = dti_point_to_c(pt)
-      end do
-    end if
-    stat = set_error(ehandle, error)
-  end function dti_points
 
   !> The whole wheel (N blades, N dampers) at f_exc for n forces.
   function udmap_dti_wheel_response(ehandle, blade, contact, settings, f_exc, blades, &
@@ -367,8 +332,8 @@ contains
     real(c_double), intent(in) :: F_E(*)
     type(c_dti_wheel_point), intent(out) :: points(*)
     integer(c_int) :: stat
-    stat = wheel_points(ehandle, blade, contact, settings, f_exc, f_exc, 0.0_c_double, blades, &
-      & engine_order, n, F_E, points, at_peak=.false.)
+    stat = dti_points(ehandle, blade, contact, settings, f_exc, f_exc, 0.0_c_double, n, F_E, &
+      & at_peak=.false., blades=blades, engine_order=engine_order, wheel=points)
   end function udmap_dti_wheel_response
 
   !> The whole wheel at the frequency of blade 0's largest gamma_1, searched around f_center
@@ -382,30 +347,45 @@ contains
     real(c_double), intent(in) :: F_E(*)
     type(c_dti_wheel_point), intent(out) :: points(*)
     integer(c_int) :: stat
-    stat = wheel_points(ehandle, blade, contact, settings, f_min, f_max, f_center, blades, &
-      & engine_order, n, F_E, points, at_peak=.true.)
+    stat = dti_points(ehandle, blade, contact, settings, f_min, f_max, f_center, n, F_E, &
+      & at_peak=.true., blades=blades, engine_order=engine_order, wheel=points)
   end function udmap_dti_wheel_peak
 
-  function wheel_points(ehandle, blade, contact, settings, f_a, f_b, f_center, blades, &
-      & engine_order, n, F_E, points, at_peak) result(stat)
+  !> Time integration for n forces at f_a (f_b unused) or, at_peak, at the peak in [f_a, f_b]
+  !> (the wheel's searched around f_center > 0): of one blade into points or, given wheel, of
+  !> the whole wheel of `blades` blades at `engine_order`. The points before a failure are
+  !> returned; the status.
+  function dti_points(ehandle, blade, contact, settings, f_a, f_b, f_center, n, F_E, at_peak, &
+      & points, blades, engine_order, wheel) result(stat)
     type(c_ptr), intent(in) :: ehandle, blade, contact
     type(c_dti_settings), intent(in) :: settings
     real(c_double), intent(in) :: f_a, f_b, f_center
-    integer(c_int), intent(in) :: blades, engine_order, n
+    integer(c_int), intent(in) :: n
     real(c_double), intent(in) :: F_E(*)
-    type(c_dti_wheel_point), intent(out) :: points(*)
     logical, intent(in) :: at_peak
+    type(c_dti_point), intent(out), optional :: points(*)
+    integer(c_int), intent(in), optional :: blades, engine_order
+    type(c_dti_wheel_point), intent(out), optional :: wheel(*)
     integer(c_int) :: stat
     type(error_type), allocatable :: error
     type(structure_type) :: st
     type(c_contact_type), pointer :: c
+    ! one blade's point is the wheel point's blade 0 part
     type(wheel_point_type) :: pt
     integer :: i
     call clear_error(ehandle)
     call prepare(blade, contact, n, st, c, error)
     if (.not.allocated(error)) then
       do i = 1, n
-        if (at_peak .and. f_center > 0) then
+        if (.not.present(wheel)) then
+          if (at_peak) then
+            call dti_peak(st, c%element, real(f_a, wp), real(f_b, wp), real(F_E(i), wp), &
+              & dti_from_c(settings), pt%dti_point_type, error)
+          else
+            call dti_response(st, c%element, real(f_a, wp), real(F_E(i), wp), &
+              & dti_from_c(settings), pt%dti_point_type, error)
+          end if
+        else if (at_peak .and. f_center > 0) then
           call wheel_peak(st, c%element, real(f_a, wp), real(f_b, wp), real(F_E(i), wp), &
             & blades, engine_order, dti_from_c(settings), pt, error, real(f_center, wp))
         else if (at_peak) then
@@ -416,14 +396,18 @@ contains
             & engine_order, dti_from_c(settings), pt, error)
         end if
         if (allocated(error)) exit
-        points(i) = c_dti_wheel_point(blade0=dti_point_to_c(pt%dti_point_type), &
-          & blades=pt%blades, engine_order=pt%engine_order, phi=pt%phi, &
-          & gamma_spread=pt%gamma_spread, sigma_spread=pt%sigma_spread, &
-          & phase_spread=pt%phase_spread)
+        if (present(wheel)) then
+          wheel(i) = c_dti_wheel_point(blade0=dti_point_to_c(pt%dti_point_type), &
+            & blades=pt%blades, engine_order=pt%engine_order, phi=pt%phi, &
+            & gamma_spread=pt%gamma_spread, sigma_spread=pt%sigma_spread, &
+            & phase_spread=pt%phase_spread)
+        else
+          points(i) = dti_point_to_c(pt%dti_point_type)
+        end if
       end do
     end if
     stat = set_error(ehandle, error)
-  end function wheel_points
+  end function dti_points
 
   ! ------------------------------------------------------------------ helpers
 
