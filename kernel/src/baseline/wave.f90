@@ -126,16 +126,15 @@ contains
       g_cur = abs(p_cur%P(3, 1))
     end do
     ! the maximum lies in [w, w_prev2]
-    call refine(w, w_prev2, p_prev)
+    call refine(w, w_prev2)
     if (allocated(error)) return
     pt = p_prev
 
   contains
 
-    !> Brent's minimiser of -|Gamma_1(omega)| on [lo, hi]; q ends as the solution there.
-    subroutine refine(lo, hi, q)
+    !> Brent's minimiser of -|Gamma_1(omega)| on [lo, hi]; p_prev ends as the solution there.
+    subroutine refine(lo, hi)
       real(wp), intent(in) :: lo, hi
-      type(wave_hbm_point_type), intent(inout) :: q
       type(brent_min_type) :: brent
       real(wp) :: x, fx, u, fu
       logical :: more

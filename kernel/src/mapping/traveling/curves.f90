@@ -67,9 +67,9 @@ contains
         ! outward as the layers go down), the first ones from the peak
         g(k) = exp(log(g_lo) + (log(peak(i)%gamma_P) - log(g_lo))*(k - 1)/real(n - 1, wp)* &
           & (1 - 1e-9_wp))
-        wl(k) = crossing(g(k), merge(w_peak, wl(min(k + 1, n)), k == n), -1, F_E(i))
+        wl(k) = crossing(g(k), merge(w_peak, wl(min(k + 1, n)), k == n), -1)
         if (allocated(error)) return
-        wu(k) = crossing(g(k), merge(w_peak, wu(min(k + 1, n)), k == n), 1, F_E(i))
+        wu(k) = crossing(g(k), merge(w_peak, wu(min(k + 1, n)), k == n), 1)
         if (allocated(error)) return
       end do
       m = 2*n + 1
@@ -100,9 +100,10 @@ contains
   contains
 
     !> The frequency on side `side` (-1 below, +1 above) of the layer's peak w0 where the
-    !> layer's force is F: bracketed outward in steps that double, refined by Brent's method.
-    real(wp) function crossing(gamma, w0, side, F) result(w)
-      real(wp), intent(in) :: gamma, w0, F
+    !> layer's force is F_E(i): bracketed outward in steps that double, refined by Brent's
+    !> method.
+    real(wp) function crossing(gamma, w0, side) result(w)
+      real(wp), intent(in) :: gamma, w0
       integer, intent(in) :: side
       type(brent_type) :: bs
       real(wp) :: a, b, fa, fb, d, x, fx, Fbb
