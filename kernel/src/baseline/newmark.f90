@@ -23,7 +23,7 @@ module udmap_baseline_newmark
   use udmap_baseline_types, only: seconds_since
   use udmap_contact_element, only: hysteretic_element_type
   use udmap_baseline_hbm, only: hbm_settings_type, hbm_point_type, hbm_peak
-  use udmap_baseline_minimise, only: brent_min_type, brent_min_start, brent_min_next, &
+  use udmap_core_minimise, only: brent_min_type, brent_min_start, brent_min_next, &
     & brent_min_update
   implicit none
   private

@@ -21,7 +21,7 @@ module udmap_baseline_wave
   use udmap_damper_tracer_core, only: damper_geometry_type
   use udmap_contact_element_wave, only: wave_aft, wave_settings_type, wave_static_action, &
     & wave_samples
-  use udmap_baseline_minimise, only: brent_min_type, brent_min_start, brent_min_next, &
+  use udmap_core_minimise, only: brent_min_type, brent_min_start, brent_min_next, &
     & brent_min_update, golden_section
   implicit none
   private

@@ -11,7 +11,7 @@
 !>     call brent_min_update(state, f(u))       ! state%better: u is the new state%x
 !>   end do
 !>   ! state%x: the minimum found, f(state%x) = state%fx
-module udmap_baseline_minimise
+module udmap_core_minimise
   use udmap_core_kinds, only: wp
   implicit none
   private
@@ -125,4 +125,4 @@ contains
       end if
     end associate
   end subroutine brent_min_update
-end module udmap_baseline_minimise
+end module udmap_core_minimise
