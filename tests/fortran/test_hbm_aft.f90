@@ -1,13 +1,14 @@
 !> Alternating frequency-time with the loading history: the exact event-driven AFT against the
 !> closed-form Jenkins describing function (PHYSICS.md 2.4, values given to 6 digits), the sampled AFT converging to it as
 !> 1/N^2, phase equivariance, multi-harmonic waveforms against a very fine sampled AFT, and the
-!> closed-form Jacobian (aft_moment_jacobian) against finite differences of the moments.
+!> closed-form Jacobian (aft_moment_jacobian) against finite differences of the moments; the
+!> extrema of random waveforms.
 module test_hbm_aft
   use udmap_core_kinds, only: wp, pi
   use udmap_core_error, only: error_type
   use udmap_contact_element_jenkins, only: jenkins_element_type, new_jenkins_element
   use udmap_contact_aft_moment, only: aft_workspace_type, aft_moment, aft_moment_jacobian
-  use udmap_contact_aft_waveform, only: waveform_extrema, waveform_value
+  use udmap_contact_aft_waveform, only: waveform_extrema, waveform_value, waveform_slope
   use udmap_contact_element, only: hysteretic_element_type
   use udmap_contact_element_asymmetric, only: contact_element_type, new_contact_element
   use udmap_damper_params, only: blade_a_damper_params
@@ -22,7 +23,8 @@ contains
   !> Alternating frequency-time with the loading history.
   subroutine collect_hbm_aft(testsuite)
     type(unittest_type), allocatable, intent(out) :: testsuite(:)
-    testsuite = [new_unittest("hbm_aft", run_hbm_aft)]
+    testsuite = [new_unittest("hbm_aft", run_hbm_aft), &
+      & new_unittest("waveform_extrema", run_extrema)]
   end subroutine collect_hbm_aft
 
   !> Exact and sampled AFT against the Jenkins describing function; the sampled error order.
@@ -161,4 +163,80 @@ contains
         & maxval(abs(JA - JF)) <= 1.0e-6_wp*scale)
     end subroutine check_jacobian
   end subroutine run_hbm_aft
+
+  !> The extrema of 400 random waveforms (2 to 64 harmonics, amplitudes falling like 1/h^2 to
+  !> 1/h^4 or e^{-h/3}, or only the first three; every seventh with a weak first harmonic): each
+  !> a root of gamma', maxima and minima alternating, and gamma monotone between two of them on
+  !> a grid 16 times finer than the search's, where a missed pair of extrema would show. (A
+  !> continuous gamma's harmonics fall at least like 1/h^2; the Gibbs wiggles of a 1/h waveform,
+  !> one with jumps, bring extrema closer than the search's grid resolves.)
+  subroutine run_extrema(suite)
+    type(test_suite), intent(inout) :: suite
+    complex(wp), allocatable :: G(:)
+    real(wp), allocatable :: tau(:)
+    real(wp) :: amp, B1, v0, v1, vp, v, tol, t
+    integer :: trial, H, k, n, i, m, steps, total, not_root, not_alternating, not_monotone
+    integer(8) :: state
+    state = 20261128_8
+    total = 0
+    not_root = 0
+    not_alternating = 0
+    not_monotone = 0
+    do trial = 1, 400
+      H = 2 + mod(37*trial, 63)
+      allocate(G(H))
+      do k = 1, H
+        select case (mod(trial, 5))
+        case (0)
+          amp = 1.0_wp/k**3
+        case (1)
+          amp = 1.0_wp/k**2
+        case (2)
+          amp = 1.0_wp/k**4
+        case (3)
+          amp = merge(1.0_wp, 0.0_wp, k <= 3)
+        case default
+          amp = exp(-k/3.0_wp)
+        end select
+        G(k) = amp*cmplx(uniform() - 0.5_wp, uniform() - 0.5_wp, wp)
+      end do
+      if (mod(trial, 7) == 0) G(1) = 1.0e-3_wp*G(1)
+      call waveform_extrema(G, tau, n)
+      total = total + n
+      B1 = sum([(k*abs(G(k)), k = 1, H)])
+      tol = 1.0e-12_wp*sum(abs(G))
+      do i = 1, n
+        if (abs(waveform_slope(G, tau(i), 1)) > 1.0e-10_wp*H*B1) not_root = not_root + 1
+        v0 = waveform_value(0.0_wp, G, tau(i))
+        v1 = waveform_value(0.0_wp, G, tau(i+1))
+        ! odd stretches fall from a maximum, even ones rise from a minimum
+        if ((v1 < v0) .neqv. (mod(i, 2) == 1)) not_alternating = not_alternating + 1
+        steps = ceiling((tau(i+1) - tau(i))/(2.0_wp*pi/(256*H)))
+        vp = v0
+        do m = 1, steps - 1
+          t = tau(i) + (tau(i+1) - tau(i))*m/steps
+          v = waveform_value(0.0_wp, G, t)
+          if (merge(v > vp + tol, v < vp - tol, mod(i, 2) == 1)) then
+            not_monotone = not_monotone + 1
+            exit
+          end if
+          vp = v
+        end do
+      end do
+      deallocate(G)
+    end do
+    call check_true(suite, "random waveforms: extrema found", total > 2*400)
+    call check_true(suite, "random waveforms: each extremum a root of gamma'", not_root == 0)
+    call check_true(suite, "random waveforms: maxima and minima alternate", &
+      & not_alternating == 0)
+    call check_true(suite, "random waveforms: monotone between extrema", not_monotone == 0)
+
+  contains
+
+    !> A uniform number in [0, 1) (a fixed linear congruential sequence).
+    real(wp) function uniform()
+      state = iand(6364136223846793005_8*state + 1442695040888963407_8, huge(state))
+      uniform = real(ishft(state, -11), wp)/real(ishft(huge(state), -11), wp)
+    end function uniform
+  end subroutine run_extrema
 end module test_hbm_aft

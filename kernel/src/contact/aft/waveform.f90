@@ -60,11 +60,12 @@ contains
     complex(wp), intent(in) :: G(:)
     real(wp), allocatable, intent(out) :: tau(:)
     integer, intent(out) :: n
-    integer :: H, ns, j, k, imax, h1, nh
-    real(wp), allocatable :: ts(:), ds(:), roots(:), c1(:), s1(:), ch(:), sh(:), sa(:), cb(:)
-    real(wp) :: gr, gi, cn
+    integer :: H, ns, j, k, imax, h1, nh, i, nj, jj, nc, nn, m, w
+    real(wp), allocatable :: ts(:), ds(:), roots(:), c1(:), s1(:), sa(:), cb(:)
+    integer, allocatable :: js(:), cells(:), next(:)
+    logical, allocatable :: done(:)
     complex(wp) :: z, zs
-    real(wp) :: a, b, fa, fb, x, fx, best, v, scale, xn
+    real(wp) :: a, b, fa, fb, x, fx, best, v, scale, xn, B2, reach, err
     H = size(G)
     n = 0
     scale = sum(abs(G))
@@ -101,10 +102,10 @@ contains
     end do
     ! gamma'(tau_j) = -(sa_j + cb_j), sa_j = sum_h h Re G_h sin(h tau_j), cb_j = sum_h h Im G_h
     ! cos(h tau_j); at tau_{ns-j} = 2 pi - tau_j the sines change sign: sa_j - cb_j. So only
-    ! j = 0..ns/2, cos/sin(h tau_j) by the angle-addition recurrence (the grid the inner loop),
-    ! cos/sin(tau_j) exact every 8th point and rotated in between.
+    ! j = 0..ns/2, cos/sin(h tau_j) by the angle-addition recurrence (slopes), cos/sin(tau_j)
+    ! exact every 8th point and rotated in between.
     nh = ns/2
-    allocate(c1(0:nh), s1(0:nh), ch(0:nh), sh(0:nh), sa(0:nh), cb(0:nh))
+    allocate(c1(0:nh), s1(0:nh), sa(0:nh), cb(0:nh), js(nh + 1))
     zs = cmplx(cos(two_pi/ns), sin(two_pi/ns), wp)
     do j = 0, nh
       if (mod(j, 8) == 0) then
@@ -115,33 +116,62 @@ contains
       c1(j) = real(z, wp)
       s1(j) = aimag(z)
     end do
-    do j = 0, nh
-      ch(j) = c1(j)
-      sh(j) = s1(j)
-      sa(j) = real(G(1), wp)*s1(j)
-      cb(j) = aimag(G(1))*c1(j)
+    ! gamma' on the coarse grid (every 8th point) first, then in the middle of each cell where
+    ! it may vanish, halving the cells down to the fine grid. A cell of width w where gamma'
+    ! keeps away from zero (|gamma''| <= B2 = sum h^2 |G_h| cannot bring it there over w, with
+    ! a margin for the rounding of the sums) holds no sign change on the fine grid: its inner
+    ! points are not computed. The values computed, and so the roots, are those of the whole
+    ! fine grid (each point's recurrence is its own).
+    nj = nh/8 + 1
+    js(1:nj) = [(j, j = 0, nh, 8)]
+    call grid_slopes(G, c1, s1, js(1:nj), sa, cb)
+    do i = 0, ns - 1, 8
+      ds(i) = slope_at(i)
     end do
-    do k = 2, H
-      gr = k*real(G(k), wp)
-      gi = k*aimag(G(k))
-      do j = 0, nh
-        cn = ch(j)*c1(j) - sh(j)*s1(j)
-        sh(j) = sh(j)*c1(j) + ch(j)*s1(j)
-        ch(j) = cn
-        sa(j) = sa(j) + gr*sh(j)
-        cb(j) = cb(j) + gi*cn
+    ds(ns) = ds(0)
+    B2 = 0
+    do k = 1, H
+      B2 = B2 + real(k, wp)**2*abs(G(k))
+    end do
+    err = 100.0_wp*H*epsilon(1.0_wp)*B2
+    allocate(done(0:nh), cells(ns), next(ns))
+    done = .false.
+    done(0:nh:8) = .true.
+    nc = ns/8
+    cells(1:nc) = [(i, i = 0, ns - 8, 8)]
+    w = 8
+    do while (w > 1)
+      ! the cells [i, i + w] that may hold a zero, and their middles to compute
+      reach = B2*(w*two_pi/ns) + 4*err
+      nj = 0
+      nn = 0
+      do m = 1, nc
+        i = cells(m)
+        if (abs(ds(i)) + abs(ds(i+w)) > reach) cycle
+        nn = nn + 1
+        next(nn) = i
+        jj = i + w/2
+        if (jj > nh) jj = ns - jj
+        if (done(jj)) cycle
+        done(jj) = .true.
+        nj = nj + 1
+        js(nj) = jj
+      end do
+      call grid_slopes(G, c1, s1, js(1:nj), sa, cb)
+      w = w/2
+      nc = 0
+      do m = 1, nn
+        i = next(m)
+        ds(i+w) = slope_at(i+w)
+        cells(nc+1:nc+2) = [i, i + w]
+        nc = nc + 2
       end do
     end do
-    do j = 0, nh
-      ds(j) = -(sa(j) + cb(j))
-    end do
-    do j = 1, nh - 1
-      ds(ns-j) = sa(j) - cb(j)
-    end do
     ts(ns) = two_pi
-    ds(ns) = ds(0)
-    ! zero counts as positive, so a touching zero (inflection) is not an extremum
-    do j = 0, ns - 1
+    ! zero counts as positive, so a touching zero (inflection) is not an extremum; the fine
+    ! cells left, in order
+    do m = 1, nc
+      j = cells(m)
       if ((ds(j) >= 0.0_wp) .eqv. (ds(j+1) >= 0.0_wp)) cycle
       a = ts(j); b = ts(j+1); fa = ds(j); fb = ds(j+1)
       if (fa == 0.0_wp) then
@@ -195,6 +225,16 @@ contains
     end do
     tau(n+1) = tau(1) + two_pi
   contains
+    !> gamma'(tau_i), i = 0..ns-1, from the sums at i or at its mirror ns - i.
+    pure real(wp) function slope_at(i) result(d)
+      integer, intent(in) :: i
+      if (i <= nh) then
+        d = -(sa(i) + cb(i))
+      else
+        d = sa(ns-i) - cb(ns-i)
+      end if
+    end function slope_at
+
     pure function waveform_grid(G, t) result(v)
       complex(wp), intent(in) :: G(:)
       real(wp), intent(in) :: t(:)
@@ -205,6 +245,38 @@ contains
       end do
     end function waveform_grid
   end subroutine waveform_extrema
+
+  !> sa_j = sum_h h Re G_h sin(h tau_j) and cb_j = sum_h h Im G_h cos(h tau_j) at the grid
+  !> points js, cos/sin(h tau_j) by the angle-addition recurrence from c1, s1 = cos/sin(tau_j).
+  pure subroutine grid_slopes(G, c1, s1, js, sa, cb)
+    complex(wp), intent(in) :: G(:)
+    real(wp), intent(in) :: c1(0:), s1(0:)
+    integer, intent(in) :: js(:)
+    real(wp), intent(inout) :: sa(0:), cb(0:)
+    real(wp), dimension(size(js)) :: cc, ss, ch, sh, a, b
+    real(wp) :: gr, gi, cn
+    integer :: m, k
+    ! gathered, so that the inner loop runs over contiguous points
+    cc = c1(js)
+    ss = s1(js)
+    ch = cc
+    sh = ss
+    a = real(G(1), wp)*ss
+    b = aimag(G(1))*cc
+    do k = 2, size(G)
+      gr = k*real(G(k), wp)
+      gi = k*aimag(G(k))
+      do m = 1, size(js)
+        cn = ch(m)*cc(m) - sh(m)*ss(m)
+        sh(m) = sh(m)*cc(m) + ch(m)*ss(m)
+        ch(m) = cn
+        a(m) = a(m) + gr*sh(m)
+        b(m) = b(m) + gi*cn
+      end do
+    end do
+    sa(js) = a
+    cb(js) = b
+  end subroutine grid_slopes
 
   !> e^{i m t} for m = -2H..H.
   pure subroutine powers(t, H, P)
