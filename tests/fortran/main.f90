@@ -17,6 +17,7 @@ program tester
   use test_damper_tracer, only: collect_damper_tracer
   use test_damper_wedge, only: collect_damper_wedge
   use test_force_table, only: collect_force_table
+  use test_dense_lu, only: collect_dense_lu
   use test_hbm_aft, only: collect_hbm_aft
   use test_hbm_blade_a, only: collect_hbm_blade_a
   use test_hbm_chain, only: collect_hbm_chain
@@ -55,6 +56,7 @@ program tester
     & new_testsuite("damper_tracer", collect_damper_tracer), &
     & new_testsuite("damper_wedge", collect_damper_wedge), &
     & new_testsuite("force_table", collect_force_table), &
+    & new_testsuite("dense_lu", collect_dense_lu), &
     & new_testsuite("hbm_aft", collect_hbm_aft), &
     & new_testsuite("hbm_blade_a", collect_hbm_blade_a), &
     & new_testsuite("hbm_chain", collect_hbm_chain), &

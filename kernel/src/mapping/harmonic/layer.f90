@@ -24,7 +24,7 @@ module udmap_mapping_harmonic_layer
   use udmap_core_kinds, only: wp, pi
   use udmap_core_error, only: error_type, fatal_error, UDMAP_EINPUT, UDMAP_ENUMERIC
   use udmap_blade_type, only: blade_type, receptances_type
-  use udmap_core_lapack, only: dgetrf, dgetrs
+  use udmap_core_dense_lu, only: lu_factor, lu_solve
   use udmap_contact_element, only: hysteretic_element_type
   use udmap_contact_aft_moment, only: aft_workspace_type, aft_moment, aft_moment_jacobian
   use udmap_contact_aft_waveform, only: waveform_value, waveform_extrema
@@ -182,7 +182,7 @@ contains
       dRw(2*h1-1) = aimag(h1*s%r(h1)%dgg*s%M(h1))
     end do
     dx = -dRw
-    call dgetrs('N', n, 1, J, n, ipiv, dx, n, info)
+    call lu_solve(n, J, ipiv, dx)
     dM1 = cmplx(dot_product(s%JM(2, :), dx), dot_product(s%JM(3, :), dx), wp)
     dP = (s%r(1)%dgg*s%M(1) + s%r(1)%gg*dM1)/s%r(1)%gE - s%P*s%r(1)%dgE/s%r(1)%gE
     s%psi = 2*real(conjg(s%P)*dP, wp)
@@ -205,7 +205,7 @@ contains
         dxg(2*k-1) = aimag(z)
       end do
       dxg = -dxg
-      call dgetrs('N', n, 1, J, n, ipiv, dxg, n, info)
+      call lu_solve(n, J, ipiv, dxg)
       M1g = cmplx(s%JM1(2) + dot_product(s%JM(2, :), dxg), &
         & s%JM1(3) + dot_product(s%JM(3, :), dxg), wp)
       s%dx_dg = dxg
@@ -253,7 +253,7 @@ contains
           return
         end if
         dx = -R
-        call dgetrs('N', n, 1, J, n, ipiv, dx, n, info)
+        call lu_solve(n, J, ipiv, dx)
         ! backtracking on |R|; a stale Jacobian that fails to descend is renewed first
         t = 1
         accepted = .false.
@@ -415,7 +415,7 @@ contains
       factorize = .true.
       if (lu_ok) return
       call build_J(J)
-      call dgetrf(n, n, J, n, ipiv, info)
+      call lu_factor(n, J, ipiv, info)
       factorize = info == 0
       lu_ok = factorize
     end function factorize

@@ -1,0 +1,75 @@
+!> The dense LU of the harmonic balance (udmap_core_dense_lu) against the reference LAPACK it
+!> replaces: the same factors, pivots, info and solutions as dgetrf and dgetrs, bit for bit, on
+!> random matrices of 1 to 200 rows (past dgetrf's block of 64), a singular one and one whose
+!> pivots lie below the safe minimum.
+module test_dense_lu
+  use udmap_core_kinds, only: wp
+  use udmap_core_lapack, only: dgetrf, dgetrs
+  use udmap_core_dense_lu, only: lu_factor, lu_solve
+  use testing, only: test_suite, check_true, unittest_type, new_unittest
+  implicit none
+  private
+  public :: collect_dense_lu
+
+contains
+
+  subroutine collect_dense_lu(testsuite)
+    type(unittest_type), allocatable, intent(out) :: testsuite(:)
+    testsuite = [new_unittest("dense_lu", run_dense_lu)]
+  end subroutine collect_dense_lu
+
+  subroutine run_dense_lu(suite)
+    type(test_suite), intent(inout) :: suite
+    integer, parameter :: sizes(9) = [1, 2, 3, 17, 63, 64, 65, 127, 200]
+    real(wp), allocatable :: A(:, :), F(:, :), Fr(:, :), b(:), x(:), xr(:)
+    integer, allocatable :: ip(:), ipr(:)
+    integer :: c, n, info, infor, k, differ
+    integer(8) :: state
+    character(len=40) :: tag
+    state = 7_8
+    do c = 1, size(sizes) + 2
+      n = merge(sizes(min(c, size(sizes))), 40, c <= size(sizes))
+      if (c <= size(sizes)) then
+        write(tag, '(a, i0)') "n = ", n
+      else
+        tag = merge("singular          ", "pivot below tiny()", c == size(sizes) + 1)
+      end if
+      allocate(A(n, n), b(n), ip(n), ipr(n))
+      do k = 1, n
+        A(:, k) = [(uniform() - 0.5_wp, info = 1, n)]
+      end do
+      b = [(uniform() - 0.5_wp, info = 1, n)]
+      ! a zero column: U(7, 7) = 0 exactly
+      if (c == size(sizes) + 1) A(:, 7) = 0
+      ! subnormal entries (and a right-hand side to match: the solution stays finite)
+      if (c == size(sizes) + 2) then
+        A = 1.0e-309_wp*A
+        b = 1.0e-309_wp*b
+      end if
+      F = A
+      Fr = A
+      call lu_factor(n, F, ip, info)
+      call dgetrf(n, n, Fr, n, ipr, infor)
+      differ = count(F /= Fr) + count(ip /= ipr)
+      call check_true(suite, "factors and pivots of dgetrf, "//trim(tag), differ == 0 .and. &
+        & info == infor)
+      if (c == size(sizes) + 1) call check_true(suite, "singular: info > 0", info > 0)
+      if (info == 0) then
+        x = b
+        xr = b
+        call lu_solve(n, F, ip, x)
+        call dgetrs('N', n, 1, Fr, n, ipr, xr, n, infor)
+        call check_true(suite, "solution of dgetrs, "//trim(tag), all(x == xr))
+      end if
+      deallocate(A, b, ip, ipr)
+    end do
+
+  contains
+
+    !> A uniform number in [0, 1) (a fixed linear congruential sequence).
+    real(wp) function uniform()
+      state = iand(6364136223846793005_8*state + 1442695040888963407_8, huge(state))
+      uniform = real(ishft(state, -11), wp)/real(ishft(huge(state), -11), wp)
+    end function uniform
+  end subroutine run_dense_lu
+end module test_dense_lu
