@@ -39,8 +39,12 @@ contains
         A(:, k) = [(uniform() - 0.5_wp, info = 1, n)]
       end do
       b = [(uniform() - 0.5_wp, info = 1, n)]
-      ! a zero column: U(7, 7) = 0 exactly
-      if (c == size(sizes) + 1) A(:, 7) = 0
+      ! zero columns: U(7, 7) = U(12, 12) = 0 exactly (the first and the second of a pair of
+      ! columns that lu_factor eliminates together)
+      if (c == size(sizes) + 1) then
+        A(:, 7) = 0
+        A(:, 12) = 0
+      end if
       ! subnormal entries (and a right-hand side to match: the solution stays finite)
       if (c == size(sizes) + 2) then
         A = 1.0e-309_wp*A
