@@ -53,6 +53,45 @@ contains
     end if
   end function waveform_slope
 
+  !> gamma(tau) - Gamma_0 + G0 (val) and gamma'(tau) (d1) in one pass: the values of
+  !> waveform_value and waveform_slope, bit for bit, for the Newton steps that need both.
+  pure subroutine waveform_value_slope(G0, G, tau, val, d1)
+    real(wp), intent(in) :: G0, tau
+    complex(wp), intent(in) :: G(:)
+    real(wp), intent(out) :: val, d1
+    complex(wp) :: z, zh, gz
+    integer :: h
+    z = cmplx(cos(tau), sin(tau), wp)
+    zh = (1.0_wp, 0.0_wp)
+    val = G0
+    d1 = 0.0_wp
+    do h = 1, size(G)
+      zh = zh*z
+      gz = G(h)*zh
+      val = val + real(gz, wp)
+      d1 = d1 - h*aimag(gz)
+    end do
+  end subroutine waveform_value_slope
+
+  !> gamma'(tau) (d1) and gamma''(tau) (d2) in one pass, bit for bit waveform_slope's.
+  pure subroutine waveform_slopes(G, tau, d1, d2)
+    complex(wp), intent(in) :: G(:)
+    real(wp), intent(in) :: tau
+    real(wp), intent(out) :: d1, d2
+    complex(wp) :: z, zh, gz
+    integer :: h
+    z = cmplx(cos(tau), sin(tau), wp)
+    zh = (1.0_wp, 0.0_wp)
+    d1 = 0.0_wp
+    d2 = 0.0_wp
+    do h = 1, size(G)
+      zh = zh*z
+      gz = G(h)*zh
+      d1 = d1 - h*aimag(gz)
+      d2 = d2 - real(h, wp)**2*real(gz, wp)
+    end do
+  end subroutine waveform_slopes
+
   !> The extrema of gamma(tau) over one period, in order, starting at the global maximum:
   !> tau(1) is the maximum, tau(2), ... alternate minimum/maximum, tau(n+1) = tau(1) + 2 pi.
   !> n = 0 for a constant waveform.
@@ -65,7 +104,7 @@ contains
     integer, allocatable :: js(:), cells(:), next(:)
     logical, allocatable :: done(:)
     complex(wp) :: z, zs
-    real(wp) :: a, b, fa, fb, x, fx, best, v, scale, xn, B2, reach, err
+    real(wp) :: a, b, fa, fb, x, fx, d2, best, v, scale, xn, B2, reach, err
     H = size(G)
     n = 0
     scale = sum(abs(G))
@@ -182,9 +221,9 @@ contains
         ! safeguarded Newton on gamma' inside the bracket
         x = a - fa*(b - a)/(fb - fa)
         do k = 1, 100
-          fx = waveform_slope(G, x, 1)
+          call waveform_slopes(G, x, fx, d2)
           if (abs(fx) <= 8.0_wp*epsilon(1.0_wp)*scale*H) exit
-          call newton_step(x, fx, waveform_slope(G, x, 2), a, fa, b, fb, xn)
+          call newton_step(x, fx, d2, a, fa, b, fb, xn)
           if (xn == x .or. b - a <= 4.0_wp*epsilon(1.0_wp)*two_pi) exit
           x = xn
         end do
@@ -299,7 +338,7 @@ contains
   pure real(wp) function solve_time(G0, G, gt, ta, tb, gb) result(t)
     real(wp), intent(in) :: G0, gt, ta, tb, gb
     complex(wp), intent(in) :: G(:)
-    real(wp) :: a, b, fa, fb, ft, tn, tolf
+    real(wp) :: a, b, fa, fb, ft, tn, tolf, v, d1
     integer :: it
     a = ta; b = tb
     fa = G0 + waveform_value(0.0_wp, G, a) - gt
@@ -319,9 +358,10 @@ contains
     tolf = 4.0_wp*epsilon(1.0_wp)*(abs(G0) + sum(abs(G)) + abs(gt))
     t = a - fa*(b - a)/(fb - fa)
     do it = 1, 100
-      ft = G0 + waveform_value(0.0_wp, G, t) - gt
+      call waveform_value_slope(0.0_wp, G, t, v, d1)
+      ft = G0 + v - gt
       if (abs(ft) <= tolf) return
-      call newton_step(t, ft, waveform_slope(G, t, 1), a, fa, b, fb, tn)
+      call newton_step(t, ft, d1, a, fa, b, fb, tn)
       if (tn == t .or. b - a <= 2.0_wp*epsilon(1.0_wp)*max(abs(a), abs(b), 1.0_wp)) return
       t = tn
     end do
