@@ -409,11 +409,12 @@ contains
     !> sum over the pieces of slope int e^{i m tau}, m = -2H..H (the Jacobian's slope term)
     complex(wp), intent(out), optional :: Bout(-2*size(G):)
     integer :: H, i, k, seg, h1, mm
-    real(wp) :: ta, tb, ga, gb, Ma, Mb, slope, c0
+    real(wp) :: ta, tb, ga, gb, Ma, Mb, slope, c0, G_abs
     complex(wp) :: Pa(-2*size(G):size(G)), Pb(-2*size(G):size(G)), C(0:size(G))
     ! A(mm) = sum (c0 + slope G0) (P(tb) - P(ta)), B(m) = sum slope (P(tb) - P(ta)); mm = 0: times
     complex(wp) :: A(-size(G):0), B(-2*size(G):size(G)), acc
     H = size(G)
+    G_abs = sum(abs(G))
     A = (0.0_wp, 0.0_wp)
     B = (0.0_wp, 0.0_wp)
     ta = tau(1)
@@ -432,7 +433,7 @@ contains
       if (i == ws%bp%n .or. ws%bp_seg(min(i+1, ws%bp%n)) /= seg) then
         tb = tau(seg+1)   ! the extremum closing the segment
       else
-        tb = solve_time(G0, G, gb, ta, tau(seg+1), gam(seg+1))
+        tb = solve_time(G0, G, G_abs, gb, ta, tau(seg+1), gam(seg+1))
       end if
       ws%bp_tau(i) = tb
       call powers(tb, H, Pb)

@@ -334,9 +334,10 @@ contains
     end do
   end subroutine powers
 
-  !> The instant in [ta, tb] where the monotone waveform reaches gt (gb = gamma(tb)).
-  pure real(wp) function solve_time(G0, G, gt, ta, tb, gb) result(t)
-    real(wp), intent(in) :: G0, gt, ta, tb, gb
+  !> The instant in [ta, tb] where the monotone waveform reaches gt (gb = gamma(tb));
+  !> G_abs = sum |G_h| (the scale of the rounding, once a waveform).
+  pure real(wp) function solve_time(G0, G, G_abs, gt, ta, tb, gb) result(t)
+    real(wp), intent(in) :: G0, G_abs, gt, ta, tb, gb
     complex(wp), intent(in) :: G(:)
     real(wp) :: a, b, fa, fb, ft, tn, tolf, v, d1
     integer :: it
@@ -355,7 +356,7 @@ contains
       end if
       return
     end if
-    tolf = 4.0_wp*epsilon(1.0_wp)*(abs(G0) + sum(abs(G)) + abs(gt))
+    tolf = 4.0_wp*epsilon(1.0_wp)*(abs(G0) + G_abs + abs(gt))
     t = a - fa*(b - a)/(fb - fa)
     do it = 1, 100
       call waveform_value_slope(0.0_wp, G, t, v, d1)
