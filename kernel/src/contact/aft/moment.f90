@@ -235,7 +235,7 @@ contains
     integer, allocatable :: bseg(:)
     complex(wp), allocatable :: Qc(:,:), Bs(:,:)
     complex(wp) :: B(-2*size(G):size(G)), Pa(-2*size(G):size(G)), Pb(-2*size(G):size(G))
-    complex(wp) :: dC(0:size(G), 2*size(G)+1), Q(0:size(G)), acc
+    complex(wp) :: dC(0:size(G), 2*size(G)+1), Q(0:size(G)), acc_h(0:size(G))
     real(wp) :: d, Mr, kt, slp, cc
     integer :: H, n, nb, i, e, k, h1, mm, c
     logical :: lift, any_s
@@ -326,14 +326,19 @@ contains
       ! Q_e(h) = int (dc0/dg_e + dslope/dg_e gamma) e^{-i h tau}
       do h1 = 0, H
         Q(h1) = Qc(-h1, e)
-        if (any_s) then
-          acc = (0.0_wp, 0.0_wp)
-          do k = 1, H
-            acc = acc + G(k)*Bs(k - h1, e) + conjg(G(k))*Bs(-k - h1, e)
-          end do
-          Q(h1) = Q(h1) + G0*Bs(-h1, e) + 0.5_wp*acc
-        end if
       end do
+      if (any_s) then
+        ! the sums over k as integrate_period's, all h1 a step in k
+        acc_h = (0.0_wp, 0.0_wp)
+        do k = 1, H
+          do h1 = 0, H
+            acc_h(h1) = acc_h(h1) + G(k)*Bs(k - h1, e) + conjg(G(k))*Bs(-k - h1, e)
+          end do
+        end do
+        do h1 = 0, H
+          Q(h1) = Q(h1) + G0*Bs(-h1, e) + 0.5_wp*acc_h(h1)
+        end do
+      end if
       ! dg_e = dG0 + sum_k (cos(k tau_e) dRe G_k - sin(k tau_e) dIm G_k)
       dC(:, 1) = dC(:, 1) + Q
       do k = 1, H
@@ -412,7 +417,7 @@ contains
     real(wp) :: ta, tb, ga, gb, Ma, Mb, slope, c0, G_abs
     complex(wp) :: Pa(-2*size(G):size(G)), Pb(-2*size(G):size(G)), C(0:size(G))
     ! A(mm) = sum (c0 + slope G0) (P(tb) - P(ta)), B(m) = sum slope (P(tb) - P(ta)); mm = 0: times
-    complex(wp) :: A(-size(G):0), B(-2*size(G):size(G)), acc
+    complex(wp) :: A(-size(G):0), B(-2*size(G):size(G)), acc_h(0:size(G))
     H = size(G)
     G_abs = sum(abs(G))
     A = (0.0_wp, 0.0_wp)
@@ -460,12 +465,16 @@ contains
     do mm = -2*H, H
       if (mm /= 0) B(mm) = B(mm)/cmplx(0.0_wp, real(mm, wp), wp)
     end do
-    do h1 = 0, H
-      acc = (0.0_wp, 0.0_wp)
-      do k = 1, H
-        acc = acc + G(k)*B(k - h1) + conjg(G(k))*B(-k - h1)
+    ! C_h1 = A_-h1 + (sum_k G_k B_k-h1 + conj(G_k) B_-k-h1)/2, each sum in increasing k; all
+    ! h1 a step in k (the inner loop runs over independent sums)
+    acc_h = (0.0_wp, 0.0_wp)
+    do k = 1, H
+      do h1 = 0, H
+        acc_h(h1) = acc_h(h1) + G(k)*B(k - h1) + conjg(G(k))*B(-k - h1)
       end do
-      C(h1) = A(-h1) + 0.5_wp*acc
+    end do
+    do h1 = 0, H
+      C(h1) = A(-h1) + 0.5_wp*acc_h(h1)
     end do
     M0 = real(C(0), wp)/(2.0_wp*pi)
     M = C(1:H)/pi
