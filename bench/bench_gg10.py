@@ -34,7 +34,11 @@ Records (INTERFACES.md "Benchmark output"):
                                               asked, 0: auto) and on auto "ratio_to_H1" (median
                                               over median), errors against the tight backbone
                                               (H = 1), so auto's say the single-harmonic
-                                              model error, not a numerical one
+                                              model error, not a numerical one; the same with
+                                              a Jenkins damper (case <case>_jenkins: kt the
+                                              asymmetric damper's stuck stiffness, M_slip half
+                                              its plateau moments' span; errors against its
+                                              own H = 1 backbone)
 (backbone and mapping at their defaults, setting gg10, come from bench_mapping.py).
 Also writes out/bench/ratios.json.
 Usage: bench_gg10.py [--json FILE] [--quick]
@@ -138,6 +142,8 @@ def jobs_for(quick: bool) -> list[tuple[str, str, dict, str]]:
     for h, rep in COLD:
         jid = cold_setting(h)
         out.append((jid, "cold", {"harmonics": h}, f"harmonics {jid} {scale(rep)} {h}"))
+        out.append((f"{jid}_jenkins", "cold_jenkins", {"harmonics": h},
+                    f"harmonics_jenkins {jid}_jenkins {scale(rep)} {h}"))
     return out
 
 
@@ -181,9 +187,8 @@ def main() -> int:
     sweep, failed, cold = [], [], []
     for jid, method, knobs, _ in jobs:
         r = runs[jid]
-        if method == "cold":
-            cold.append(record(case.name, "backbone", jid, harness.timing(r),
-                               **harness.rel_errors(r, ref), harmonics=knobs["harmonics"]))
+        if method.startswith("cold"):
+            cold.append((method, knobs["harmonics"], r))
             continue
         if "failed" in r:
             failed.append({"method": method, "knobs": knobs, "message": r["failed"]})
@@ -205,13 +210,18 @@ def main() -> int:
         r = next(s for s in sweep if s["method"] == method and s["knobs"] == STANDARD[0][0])
         records.append(dict(r, setting="gg10"))
     records += sweep
-    h1 = next(r for r in cold if r["harmonics"] == 1)
-    for r in cold:
-        if r["harmonics"] == 0:
-            r["ratio_to_H1"] = r["seconds_median"] / h1["seconds_median"]
-            print(f"  cold backbone at auto: {r['seconds_median']*1e3:.2f} ms, "
-                  f"{r['ratio_to_H1']:.0f} times H = 1 ({h1['seconds_median']*1e3:.3f} ms)")
-    records += cold
+    for method, name in (("cold", case.name), ("cold_jenkins", f"{case.name}_jenkins")):
+        runs_h = {h: r for m, h, r in cold if m == method}
+        base = ref if method == "cold" else runs_h[1]
+        recs = [record(name, "backbone", cold_setting(h), harness.timing(r),
+                       **harness.rel_errors(r, base), harmonics=h) for h, r in runs_h.items()]
+        h1 = next(r for r in recs if r["harmonics"] == 1)
+        for r in recs:
+            if r["harmonics"] == 0:
+                r["ratio_to_H1"] = r["seconds_median"] / h1["seconds_median"]
+                print(f"  {name}: cold backbone at auto: {r['seconds_median']*1e3:.2f} ms, "
+                      f"{r['ratio_to_H1']:.0f} times H = 1 ({h1['seconds_median']*1e3:.3f} ms)")
+        records += recs
     bb = chosen.get("backbone")
     ratios = {"threshold": THRESHOLD, "case": case.name, "methods": {}, "failed": failed}
     for method, r in chosen.items():

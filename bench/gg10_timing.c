@@ -19,6 +19,9 @@
  *            warm_start full_band
  *   harmonics LABEL repeats H                 the backbone at H harmonics (0: auto), default
  *                                            tolerances
+ *   harmonics_jenkins LABEL repeats H         the same with a Jenkins damper (kt = the
+ *                                            asymmetric damper's stuck stiffness, M_slip half
+ *                                            its plateau moments' span)
  * and prints one JSON object per job: {"name", "kind", "samples": [...], "seconds_median",
  * "seconds_min", "seconds_max", "repeats", "gamma_P": [...], "f_res": [...], "sigma_a": [...]}
  * (standard:
@@ -30,6 +33,7 @@
  *   harmonics the same at H harmonics, cold: each repeat's damper has CF changed by a relative
  *             1e-12 r, so the model rebuilds what depends on the damper (with equal parameters
  *             it would keep the multi-harmonic roots of the last repeat as warm starts);
+ *             harmonics_jenkins: udmap_new_damper_jenkins, M_slip changed so;
  *   mapping   the same with udmap_model_curves (`layers`) and the peaks read off the mapped
  *             points (the highest point of a curve that is not a turning point);
  *   standard  udmap_new_contact_asymmetric + udmap_hbm_peaks (harmonic balance with H = 1,
@@ -131,7 +135,9 @@ int main(void) {
   udmap_analysis an0;
   udmap_error err = udmap_new_error();
   udmap_blade blade = NULL;
-  udmap_damper damper = NULL;
+  udmap_damper damper = NULL, jenkins = NULL;
+  udmap_damper_info info;
+  double kt, M_slip;
   double F[NF], g[NF], f[NF], s[NF], *t = NULL;
   double f_min, f_max, sigma_all;
   int i, r;
@@ -167,6 +173,10 @@ int main(void) {
                 &blade))
     fail(err, "blade");
   if (udmap_new_damper_asymmetric(err, &dp, &damper)) fail(err, "damper");
+  if (udmap_damper_get_info(err, damper, &info)) fail(err, "damper info");
+  kt = info.k_stuck;
+  M_slip = 0.5 * (info.M_max - info.M_min);
+  if (udmap_new_damper_jenkins(err, kt, M_slip, &jenkins)) fail(err, "jenkins damper");
 
   while (scanf("%31s %255s", tag, label) == 2) {
     int repeats, n;
@@ -203,13 +213,15 @@ int main(void) {
       report(tag, label, t, n, g, f, s);
       printf("}\n");
     } else if (!strcmp(tag, "backbone") || !strcmp(tag, "mapping") ||
-               !strcmp(tag, "harmonics")) {
+               !strcmp(tag, "harmonics") || !strcmp(tag, "harmonics_jenkins")) {
       udmap_analysis an = an0;
       udmap_model model = NULL;
       udmap_damper fresh = NULL;
       udmap_asymmetric_params dr = dp;
       udmap_point pts[NF];
-      int layers = 0, mapping = !strcmp(tag, "mapping"), cold = !strcmp(tag, "harmonics");
+      int layers = 0, mapping = !strcmp(tag, "mapping"), jen = !strcmp(tag, "harmonics_jenkins");
+      int cold = jen || !strcmp(tag, "harmonics");
+      udmap_damper base = jen ? jenkins : damper;
       if (mapping) {
         if (scanf("%d %d", &layers, &an.sweep_points) != 2) return 2;
       } else if (cold) {
@@ -217,7 +229,7 @@ int main(void) {
       } else {
         if (scanf("%lf %d", &an.rtol, &an.grid_per_decade) != 2) return 2;
       }
-      if (udmap_new_model(err, blade, damper, &an, &model)) fail(err, "model");
+      if (udmap_new_model(err, blade, base, &an, &model)) fail(err, "model");
       /* the bare-blade data (band sweep, eigen start) exist before the clock starts (a first
        * call with the same arguments, as bench_mapping.py does: the first call of the mapping
        * with many layers also pays for growing its storage) */
@@ -230,7 +242,12 @@ int main(void) {
         double t0;
         if (cold) dr.CF = dp.CF * (1 + 1e-12 * (r + 1));
         t0 = now();
-        if (udmap_new_damper_asymmetric(err, &dr, &fresh)) fail(err, "damper");
+        if (jen) {
+          if (udmap_new_damper_jenkins(err, kt, M_slip * (1 + 1e-12 * (r + 1)), &fresh))
+            fail(err, "damper");
+        } else if (udmap_new_damper_asymmetric(err, &dr, &fresh)) {
+          fail(err, "damper");
+        }
         if (udmap_model_set_damper(err, model, fresh)) fail(err, "set damper");
         if (mapping) {
           if (udmap_model_curves(err, model, NF, F, layers)) fail(err, "curves");
@@ -243,7 +260,7 @@ int main(void) {
             s[i] = pts[i].sigma_a;
           }
         }
-        if (udmap_model_set_damper(err, model, damper)) fail(err, "set damper");
+        if (udmap_model_set_damper(err, model, base)) fail(err, "set damper");
         udmap_delete_damper(&fresh);
         t[r] = now() - t0;
       }
@@ -297,6 +314,7 @@ int main(void) {
   }
 
   udmap_delete_damper(&damper);
+  udmap_delete_damper(&jenkins);
   udmap_delete_blade(&blade);
   udmap_delete_error(&err);
   free(t);
