@@ -22,6 +22,7 @@ module fixtures
   public :: one_dof_blade, blade_a_with_damper, blade_a_band, blade_a_model, refined_backbone_change
   public :: stress_run_type, stress_run, check_finite_or_error
   public :: ieee_nan, ieee_inf, temp_dir, qp, receptances_from_solution, zgesv
+  public :: uniform_sequence_type
 
   !> A blade, its damper, the analysis settings and the model of the three. Declare a scene
   !> `target`: the model keeps pointers to the blade and the damper, so a scene must not be
@@ -55,6 +56,14 @@ module fixtures
       integer, intent(out) :: ipiv(*), info
     end subroutine zgesv
   end interface
+
+  !> A fixed sequence of uniform numbers in [0, 1) (a linear congruential generator): random
+  !> test inputs that are the same on every run and every machine.
+  type :: uniform_sequence_type
+    integer(8) :: state = 1
+  contains
+    procedure :: next => uniform_next
+  end type uniform_sequence_type
 
 contains
 
@@ -369,4 +378,12 @@ contains
     dir = trim(base)//"/udmap_test_"//name//"_"//suffix
     call execute_command_line("mkdir -p "//dir)
   end function temp_dir
+
+  !> The next number of the sequence.
+  real(wp) function uniform_next(self) result(u)
+    class(uniform_sequence_type), intent(inout) :: self
+    self%state = iand(6364136223846793005_8*self%state + 1442695040888963407_8, &
+      & huge(self%state))
+    u = real(ishft(self%state, -11), wp)/real(ishft(huge(self%state), -11), wp)
+  end function uniform_next
 end module fixtures

@@ -6,6 +6,7 @@ module test_dense_lu
   use udmap_core_kinds, only: wp
   use udmap_core_lapack, only: dgetrf, dgetrs
   use udmap_core_dense_lu, only: lu_factor, lu_solve
+  use fixtures, only: uniform_sequence_type
   use testing, only: test_suite, check_true, unittest_type, new_unittest
   implicit none
   private
@@ -24,9 +25,9 @@ contains
     real(wp), allocatable :: A(:, :), F(:, :), Fr(:, :), b(:), x(:), xr(:)
     integer, allocatable :: ip(:), ipr(:)
     integer :: c, n, info, infor, k, differ
-    integer(8) :: state
+    type(uniform_sequence_type) :: rng
     character(len=40) :: tag
-    state = 7_8
+    rng%state = 7_8
     do c = 1, size(sizes) + 2
       n = merge(sizes(min(c, size(sizes))), 40, c <= size(sizes))
       if (c <= size(sizes)) then
@@ -36,9 +37,9 @@ contains
       end if
       allocate(A(n, n), b(n), ip(n), ipr(n))
       do k = 1, n
-        A(:, k) = [(uniform() - 0.5_wp, info = 1, n)]
+        A(:, k) = [(rng%next() - 0.5_wp, info = 1, n)]
       end do
-      b = [(uniform() - 0.5_wp, info = 1, n)]
+      b = [(rng%next() - 0.5_wp, info = 1, n)]
       ! zero columns: U(7, 7) = U(12, 12) = 0 exactly (the first and the second of a pair of
       ! columns that lu_factor eliminates together)
       if (c == size(sizes) + 1) then
@@ -67,13 +68,5 @@ contains
       end if
       deallocate(A, b, ip, ipr)
     end do
-
-  contains
-
-    !> A uniform number in [0, 1) (a fixed linear congruential sequence).
-    real(wp) function uniform()
-      state = iand(6364136223846793005_8*state + 1442695040888963407_8, huge(state))
-      uniform = real(ishft(state, -11), wp)/real(ishft(huge(state), -11), wp)
-    end function uniform
   end subroutine run_dense_lu
 end module test_dense_lu

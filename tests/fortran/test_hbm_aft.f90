@@ -12,6 +12,7 @@ module test_hbm_aft
   use udmap_contact_element, only: hysteretic_element_type
   use udmap_contact_element_asymmetric, only: contact_element_type, new_contact_element
   use udmap_damper_params, only: blade_a_damper_params
+  use fixtures, only: uniform_sequence_type
   use testing, only: test_suite, check_close, check_true, check_no_error, unittest_type, &
     & new_unittest
   implicit none
@@ -167,17 +168,18 @@ contains
   !> The extrema of 400 random waveforms (2 to 64 harmonics, amplitudes falling like 1/h^2 to
   !> 1/h^4 or e^{-h/3}, or only the first three; every seventh with a weak first harmonic): each
   !> a root of gamma', maxima and minima alternating, and gamma monotone between two of them on
-  !> a grid 16 times finer than the search's, where a missed pair of extrema would show. (A
+  !> a grid 16 times finer than the search's, where a missed pair of extrema wider than a cell of
+  !> the search's grid would show. (A
   !> continuous gamma's harmonics fall at least like 1/h^2; the Gibbs wiggles of a 1/h waveform,
   !> one with jumps, bring extrema closer than the search's grid resolves.)
   subroutine run_extrema(suite)
     type(test_suite), intent(inout) :: suite
     complex(wp), allocatable :: G(:)
     real(wp), allocatable :: tau(:)
-    real(wp) :: amp, B1, v0, v1, vp, v, tol, t
+    real(wp) :: amp, B1, B2, v0, v1, vp, v, tol, t, re, im
     integer :: trial, H, k, n, i, m, steps, total, not_root, not_alternating, not_monotone
-    integer(8) :: state
-    state = 20261128_8
+    type(uniform_sequence_type) :: rng
+    rng%state = 20261128_8
     total = 0
     not_root = 0
     not_alternating = 0
@@ -198,13 +200,18 @@ contains
         case default
           amp = exp(-k/3.0_wp)
         end select
-        G(k) = amp*cmplx(uniform() - 0.5_wp, uniform() - 0.5_wp, wp)
+        re = rng%next()
+        im = rng%next()
+        G(k) = amp*cmplx(re - 0.5_wp, im - 0.5_wp, wp)
       end do
       if (mod(trial, 7) == 0) G(1) = 1.0e-3_wp*G(1)
       call waveform_extrema(G, tau, n)
       total = total + n
       B1 = sum([(k*abs(G(k)), k = 1, H)])
-      tol = 1.0e-12_wp*sum(abs(G))
+      B2 = sum([(real(k, wp)**2*abs(G(k)), k = 1, H)])
+      ! a pair of extrema inside one cell of the search's grid (step 2 pi/max(64, 16 H)) is
+      ! below its resolution: the bump it makes is at most B2 step^2/2
+      tol = max(1.0e-12_wp*sum(abs(G)), 0.5_wp*B2*(2.0_wp*pi/max(64, 16*H))**2)
       do i = 1, n
         if (abs(waveform_slope(G, tau(i), 1)) > 1.0e-10_wp*H*B1) not_root = not_root + 1
         v0 = waveform_value(0.0_wp, G, tau(i))
@@ -230,13 +237,5 @@ contains
     call check_true(suite, "random waveforms: maxima and minima alternate", &
       & not_alternating == 0)
     call check_true(suite, "random waveforms: monotone between extrema", not_monotone == 0)
-
-  contains
-
-    !> A uniform number in [0, 1) (a fixed linear congruential sequence).
-    real(wp) function uniform()
-      state = iand(6364136223846793005_8*state + 1442695040888963407_8, huge(state))
-      uniform = real(ishft(state, -11), wp)/real(ishft(huge(state), -11), wp)
-    end function uniform
   end subroutine run_extrema
 end module test_hbm_aft
