@@ -141,7 +141,7 @@ contains
     end do
     ! gamma'(tau_j) = -(sa_j + cb_j), sa_j = sum_h h Re G_h sin(h tau_j), cb_j = sum_h h Im G_h
     ! cos(h tau_j); at tau_{ns-j} = 2 pi - tau_j the sines change sign: sa_j - cb_j. So only
-    ! j = 0..ns/2, cos/sin(h tau_j) by the angle-addition recurrence (slopes), cos/sin(tau_j)
+    ! j = 0..ns/2, cos/sin(h tau_j) by the angle-addition recurrence (grid_slopes), cos/sin(tau_j)
     ! exact every 8th point and rotated in between.
     nh = ns/2
     allocate(c1(0:nh), s1(0:nh), sa(0:nh), cb(0:nh), js(nh + 1))
