@@ -106,7 +106,7 @@ contains
     type(wave_result_type) :: res
     real(wp) :: A0(3), A0p(3), A0m(3), P0(3), dP0(3, 14), dA0(3, 14), y(14), scale, dy, err, big
     complex(wp) :: P(3, 3), Ap(3, 3), Am(3, 3), A(3, 3), dP(3, 3, 14), dA(3, 3, 14)
-    integer :: ic, H, k, ny
+    integer :: ic, H, k, j, ny
     real(wp), parameter :: phis(3) = [0.6_wp, pi/2, 0.05_wp]
     ! (mu, gamma_1 [rad]): stuck, slipping, lifting off (blade A's damper)
     real(wp), parameter :: cases(2, 3) = reshape([1.5_wp, 2e-4_wp, 0.3_wp, 1.5e-3_wp, &
@@ -130,12 +130,13 @@ contains
         call unpack(y, P0, P)
         dP0 = 0
         dP = 0
-        do k = 1, ny
-          dP0(3, k) = merge(1.0_wp, 0.0_wp, k == 1)
-          if (k > 1 .and. k < ny) then
-            dP(1 + mod((k - 2)/2, 2), (k - 2)/4 + 1, k) = merge((1.0_wp, 0.0_wp), &
-              & (0.0_wp, 1.0_wp), mod(k, 2) == 0)
-          end if
+        dP0(3, 1) = 1
+        ! y(4 h - 2 + c), c = 0..3: Re, Im of P(1, h), then of P(2, h)
+        do k = 1, H
+          do j = 0, 3
+            dP(merge(1, 2, j < 2), k, 4*k - 2 + j) = merge((1.0_wp, 0.0_wp), &
+              & (0.0_wp, 1.0_wp), mod(j, 2) == 0)
+          end do
         end do
         ! gamma_1, and the higher harmonics of gamma that unpack scales with it
         dP(3, 1:H, ny) = P(3, 1:H)/y(ny)
