@@ -23,12 +23,12 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT / "tests" / "python"))
 import fuzz_cases  # noqa: E402
+from doc_block import replace_block  # noqa: E402
 
-BEGIN, END = "<!-- fuzz:begin -->", "<!-- fuzz:end -->"
 
-
-def readme_block(results: list[dict]) -> str:
-    lines = [BEGIN, "", "Counts per exit status, measured by `make bench` (`bench/bench_fuzz.py`):",
+def readme_block(results: list[dict]) -> list[str]:
+    """The lines of the fuzz block of docs/case-files.md."""
+    lines = ["", "Counts per exit status, measured by `make bench` (`bench/bench_fuzz.py`):",
              "", "| case | mutations | seed | loader 0 / 2 | run through | backbone 0 / 2 / 3 / 4 "
              "| response 0 / 2 / 3 / 4 | table 0 / 2 / 3 / 4 | `python3 -m udmap` 0 / 2 / 3 / 4 "
              "| problems |", "| --- | ---: | ---: | --- | ---: | --- | --- | --- | --- | ---: |"]
@@ -40,15 +40,7 @@ def readme_block(results: list[dict]) -> str:
                      f"{sum(r['cli']['backbone'].values())} | {counts(r['cli']['backbone'])} | "
                      f"{counts(r['cli']['response'])} | {counts(r['cli']['table'])} | "
                      f"{counts(r['subprocess'])} | {len(r['problems'])} |")
-    return "\n".join(lines + ["", END])
-
-
-def write_readme(block: str) -> None:
-    path = ROOT / "docs" / "case-files.md"
-    text = path.read_text()
-    if BEGIN in text and END in text:
-        a, b = text.index(BEGIN), text.index(END) + len(END)
-        path.write_text(text[:a] + block + text[b:])
+    return lines + [""]
 
 
 def main() -> int:
@@ -84,7 +76,7 @@ def main() -> int:
     out.mkdir(parents=True, exist_ok=True)
     (out / "fuzz_cases.json").write_text(json.dumps(results, indent=1) + "\n")
     Path(args.json).write_text(json.dumps(records, indent=1, allow_nan=False) + "\n")
-    write_readme(readme_block(results))
+    replace_block(ROOT / "docs" / "case-files.md", "fuzz", readme_block(results))
     return 1 if any(r["problems"] for r in results) else 0
 
 

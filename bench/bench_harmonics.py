@@ -28,6 +28,7 @@ ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT / "wrappers" / "python"))
 sys.path.insert(0, str(ROOT / "bench"))
 
+from doc_block import replace_block  # noqa: E402
 from timing import record  # noqa: E402
 
 
@@ -138,13 +139,8 @@ def dti_table(records: list[dict]) -> str:
 
 
 def readme(records: list[dict]) -> None:
-    path = ROOT / "docs" / "multi-harmonic.md"
-    text = path.read_text()
-    begin, end = "<!-- harmonics:begin -->", "<!-- harmonics:end -->"
-    if begin not in text or end not in text:
-        return
     doe_rec = next((r for r in records if r["method"] == "doe"), None)
-    body = ["", "Measured by `bench/bench_harmonics.py` (part of `make bench`); blade A, 2 shared "
+    body = ["Measured by `bench/bench_harmonics.py` (part of `make bench`); blade A, 2 shared "
             "cores, times are medians of repeated cold runs (new model and the ten peaks), the "
             "runs of the layered backbone and of the standard method alternating.", "",
             "**gg10, blade A's asymmetric damper** (F_E = 1..10 N; errors: the largest over the "
@@ -155,13 +151,12 @@ def readme(records: list[dict]) -> None:
             gg10_table(records, "blade_a_jenkins"), "",
             "**Automatic H against the time integration** at its peak (PHYSICS.md 7, 512 steps "
             "per period; deviations of the layered result and of the single-harmonic backbone):",
-            "", dti_table(records), ""]
+            "", dti_table(records)]
     if doe_rec is not None:
-        body += [f"DOE at auto (`doe --harmonics auto`, 8 designs varying mu and CF, one force): "
-                 f"{doe_rec['designs_per_second']:.2g} designs per second on one worker.", ""]
-    head, rest = text.split(begin, 1)
-    _, tail = rest.split(end, 1)
-    path.write_text(head + begin + "\n".join(body) + end + tail)
+        body += ["",
+                 f"DOE at auto (`doe --harmonics auto`, 8 designs varying mu and CF, one force): "
+                 f"{doe_rec['designs_per_second']:.2g} designs per second on one worker."]
+    replace_block(ROOT / "docs" / "multi-harmonic.md", "harmonics", body)
 
 
 def main() -> int:
